@@ -1,0 +1,63 @@
+// A board for unit tests: time moves only when the test (or a task it wrote) says so, sensor
+// samples and received bytes are scripted, outputs are recorded.
+#pragma once
+
+#include <stdint.h>
+
+#include <deque>
+#include <vector>
+
+#include <qr/core/board.hpp>
+#include <qr/core/rate.hpp>
+
+namespace qr::fake {
+
+class FakeBoard {
+ public:
+  static constexpr uint32_t kCyclesPerUs = 16;  // a 16 MHz-class core
+
+  // Blocks until a new kick: here that means jumping the clock to the next period boundary.
+  uint32_t wait_kick(uint32_t seen) {
+    if (kicks() == seen) now_us_ = (seen + 1) * kPeriodUs;
+    kick_times_us.push_back(now_us_);
+    return kicks();
+  }
+  uint32_t kicks() const { return now_us_ / kPeriodUs; }
+  uint32_t now_us() const { return now_us_; }
+  uint32_t cycles() const { return now_us_ * kCyclesPerUs; }
+
+  SensorSample read_sensors() const { return sensors; }
+  void set_engines(EngineCommand e) { engines = e; }
+  bool serial_read(uint8_t& byte) {
+    if (rx.empty()) return false;
+    byte = rx.front();
+    rx.pop_front();
+    return true;
+  }
+  bool serial_write(uint8_t byte) {
+    if (tx.size() >= tx_capacity) return false;
+    tx.push_back(byte);
+    return true;
+  }
+  void set_leds(uint8_t l) { leds = l; }
+  LogArea log_area() { return {log_memory, sizeof log_memory}; }
+
+  // Simulated work: a task calls this to take time.
+  void spend_us(uint32_t us) { now_us_ += us; }
+
+  SensorSample sensors;
+  EngineCommand engines;
+  uint8_t leds = 0;
+  std::deque<uint8_t> rx;
+  std::vector<uint8_t> tx;
+  size_t tx_capacity = 1u << 20;
+  std::vector<uint32_t> kick_times_us;  // when each tick's kick was taken
+  uint8_t log_memory[4096] = {};
+
+ private:
+  uint32_t now_us_ = 0;
+};
+
+static_assert(Board<FakeBoard>);
+
+}  // namespace qr::fake

@@ -1,0 +1,61 @@
+// What the core needs from hardware, and the data that crosses that line.
+//
+// A board is any class with these members (checked by the `Board` concept below); the scheduler
+// is a template over it, so nothing hardware-shaped is reached through virtual calls:
+//
+//   uint32_t wait_kick(uint32_t seen)  blocks until the kick counter differs from `seen`,
+//                                      returns the counter (the timer kick, one per period)
+//   uint32_t kicks()                   kick counter now (to notice overruns)
+//   uint32_t now_us()                  monotonic time in µs (wraps after 71 minutes)
+//   uint32_t cycles()                  cycle or instruction counter, for task statistics
+//   SensorSample read_sensors()        the latest raw sample
+//   void set_engines(EngineCommand)    engine outputs, each 0..1000
+//   bool serial_read(uint8_t&)         one received byte if there is one
+//   bool serial_write(uint8_t)         queue one byte; false when the transmitter is full
+//   void set_leds(uint8_t)             one bit per LED
+//   LogArea log_area()                 memory the loggers may fill
+#pragma once
+
+#include <stddef.h>
+#include <stdint.h>
+
+namespace qr {
+
+// Raw MPU-6050-style sample: 16-bit gyro and accelerometer counts, body axes x (forward),
+// y (right), z (down). Battery in mV. The barometer is optional (0 when absent).
+struct SensorSample {
+  int16_t gyro[3] = {0, 0, 0};
+  int16_t accel[3] = {0, 0, 0};
+  uint16_t battery_mv = 0;
+  int32_t pressure_pa = 0;
+};
+
+inline constexpr uint16_t kEngineMax = 1000;
+
+// Engine order: 0 front, 1 right, 2 back, 3 left (the IN4073 "+" layout).
+struct EngineCommand {
+  uint16_t value[4] = {0, 0, 0, 0};
+
+  bool all_zero() const { return (value[0] | value[1] | value[2] | value[3]) == 0; }
+};
+
+struct LogArea {
+  uint8_t* data = nullptr;
+  size_t size = 0;
+};
+
+template <class B>
+concept Board = requires(B& b, uint8_t& byte, EngineCommand engines) {
+  { b.wait_kick(uint32_t{}) };
+  { b.kicks() };
+  { b.now_us() };
+  { b.cycles() };
+  { b.read_sensors() };
+  b.set_engines(engines);
+  { b.serial_read(byte) };
+  { b.serial_write(uint8_t{}) };
+  b.set_leds(uint8_t{});
+  { b.log_area() };
+};
+
+}  // namespace qr

@@ -1,0 +1,138 @@
+#include <qr/core/safety.hpp>
+
+namespace qr {
+namespace {
+
+struct ModeRule {
+  bool flying;             // engines follow the pilot; leaving goes through panic; watchdogs on
+  bool needs_calibration;  // uses calibrated sensors
+  bool needs_attitude;     // the tilt watchdog applies
+};
+
+constexpr ModeRule kModeRules[kModeCount] = {
+    /* safe        */ {false, false, false},
+    /* panic       */ {false, false, false},
+    /* manual      */ {true, false, false},
+    /* calibration */ {false, false, false},
+    /* yaw         */ {true, true, true},
+    /* full        */ {true, true, true},
+};
+
+constexpr const ModeRule& rule(Mode m) { return kModeRules[index(m)]; }
+
+// A request into a mode other than safe/panic must pass every guard, in this order.
+struct Guard {
+  Refusal reason;
+  bool (*blocks)(Mode from, Mode to, const Situation& s, const SafetyLimits& l);
+};
+
+constexpr Guard kGuards[] = {
+    {Refusal::not_from_this_mode, [](Mode from, Mode, const Situation&, const SafetyLimits&) { return from != Mode::safe; }},
+    {Refusal::controls_not_neutral, [](Mode, Mode, const Situation& s, const SafetyLimits&) { return !s.controls.neutral(); }},
+    {Refusal::engines_running, [](Mode, Mode, const Situation& s, const SafetyLimits&) { return !s.engines.all_zero(); }},
+    {Refusal::not_calibrated, [](Mode, Mode to, const Situation& s, const SafetyLimits&) { return rule(to).needs_calibration && !s.calibrated; }},
+    {Refusal::battery_low, [](Mode, Mode, const Situation& s, const SafetyLimits& l) { return s.battery_mv < l.battery_panic_mv; }},
+};
+
+// Watchdogs that end a flight: each is checked every tick in the modes it applies to.
+struct Watchdog {
+  PanicCause cause;
+  bool (*tripped)(const Situation& s, const SafetyLimits& l, Mode m, bool battery_low_long);
+};
+
+constexpr Watchdog kWatchdogs[] = {
+    {PanicCause::link_lost, [](const Situation& s, const SafetyLimits& l, Mode, bool) { return s.now_us - s.last_frame_us > l.link_timeout_us; }},
+    {PanicCause::battery_low, [](const Situation&, const SafetyLimits&, Mode, bool low_long) { return low_long; }},
+    {PanicCause::tilt, [](const Situation& s, const SafetyLimits& l, Mode m, bool) { return rule(m).needs_attitude && s.tilt_mrad > l.tilt_limit_mrad; }},
+};
+
+uint16_t scale(uint16_t v, uint32_t num, uint32_t den) {
+  return static_cast<uint16_t>(static_cast<uint32_t>(v) * num / den);
+}
+
+}  // namespace
+
+Refusal SafetyMachine::request(uint8_t wanted, const Situation& s) {
+  if (wanted >= kModeCount) return Refusal::unknown_mode;
+  const Mode to = static_cast<Mode>(wanted);
+  if (to == mode_) return Refusal::none;
+
+  if (to == Mode::safe || to == Mode::panic) {
+    if (rule(mode_).flying) {
+      enter_panic(PanicCause::requested, s);
+    } else if (mode_ != Mode::panic) {
+      mode_ = Mode::safe;  // engines are not turning: nothing to ramp down
+    }
+    return Refusal::none;
+  }
+
+  for (const Guard& g : kGuards) {
+    if (g.blocks(mode_, to, s, limits_)) return g.reason;
+  }
+  mode_ = to;
+  return Refusal::none;
+}
+
+void SafetyMachine::request_exit(const Situation& s) {
+  exit_pending_ = true;
+  request(index(Mode::safe), s);
+  supervise(s);
+}
+
+void SafetyMachine::calibration_finished() {
+  if (mode_ == Mode::calibration) mode_ = Mode::safe;
+}
+
+void SafetyMachine::supervise(const Situation& s) {
+  battery_warning_ = s.battery_mv < limits_.battery_warn_mv;
+  const bool below = s.battery_mv < limits_.battery_panic_mv;
+  if (below && !battery_low_) battery_low_since_us_ = s.now_us;
+  battery_low_ = below;
+  const bool battery_low_long = below && s.now_us - battery_low_since_us_ >= limits_.battery_trip_us;
+
+  if (rule(mode_).flying) {
+    for (const Watchdog& w : kWatchdogs) {
+      if (w.tripped(s, limits_, mode_, battery_low_long)) {
+        enter_panic(w.cause, s);
+        break;
+      }
+    }
+  }
+
+  if (mode_ == Mode::panic &&
+      s.now_us - panic_start_us_ >= limits_.panic_hold_us + limits_.panic_ramp_us) {
+    mode_ = Mode::safe;
+  }
+  if (exit_pending_ && mode_ == Mode::safe) stopped_ = true;
+}
+
+EngineCommand SafetyMachine::limit_engines(const EngineCommand& wanted, const Situation& s) const {
+  EngineCommand out;
+  if (mode_ == Mode::panic) {
+    const uint32_t t = s.now_us - panic_start_us_;
+    const uint32_t end = limits_.panic_hold_us + limits_.panic_ramp_us;
+    for (int i = 0; i < 4; ++i) {
+      const uint16_t from = panic_from_.value[i];
+      const uint16_t hold = from < limits_.panic_level ? from : limits_.panic_level;
+      out.value[i] = t < limits_.panic_hold_us ? hold
+                     : t < end                 ? scale(hold, end - t, limits_.panic_ramp_us)
+                                               : 0;
+    }
+    return out;
+  }
+  if (!rule(mode_).flying || s.controls.lift == 0) return out;
+  for (int i = 0; i < 4; ++i) {
+    const uint16_t v = wanted.value[i];
+    out.value[i] = v < limits_.idle ? limits_.idle : v > kEngineMax ? kEngineMax : v;
+  }
+  return out;
+}
+
+void SafetyMachine::enter_panic(PanicCause cause, const Situation& s) {
+  mode_ = Mode::panic;
+  panic_cause_ = cause;
+  panic_start_us_ = s.now_us;
+  panic_from_ = s.engines;
+}
+
+}  // namespace qr

@@ -1,0 +1,132 @@
+// The kick-driven cooperative scheduler, in three phases per control period:
+//   1. wait for the timer kick;
+//   2. run: take the latest sensor sample and a bounded number of received bytes, run the task
+//      set of the current mode, hand out engine values and a bounded number of bytes to send;
+//   3. finish: account timing, choose the next task set, and when the tick ran into the next
+//      kick count a deadline miss and skip that period instead of piling up.
+//
+// The context owns the flight data and the task table:
+//   static constexpr uint8_t kTaskCount;  static const Task<Context> kTasks[kTaskCount];
+//   TaskSet task_set() const;              the set for the current mode
+//   void begin_tick(uint32_t now_us, const SensorSample&);
+//   uint32_t rx_space() const;  void receive(uint8_t);      bytes from the serial line
+//   bool tx_peek(uint8_t&) const;  void tx_pop();            bytes for the serial line
+//   EngineCommand engines() const;  uint8_t leds() const;  bool running() const;
+#pragma once
+
+#include <stdint.h>
+
+#include <qr/core/board.hpp>
+#include <qr/core/cycle_stats.hpp>
+#include <qr/core/rate.hpp>
+#include <qr/core/task.hpp>
+
+namespace qr {
+
+struct SchedulerLimits {
+  // Per-tick I/O bounds. At 115200 baud the line moves 11.52 bytes per ms, so 32 in and 16 out
+  // per tick keep up at 1 kHz and 500 Hz while no tick ever sees a burst of link work.
+  uint16_t rx_bytes_per_tick = 32;
+  uint16_t tx_bytes_per_tick = 16;
+};
+
+template <uint8_t TaskCount>
+struct SchedulerStats {
+  CycleStats task[TaskCount];
+  CycleStats tick;                  // cycles from the kick to the end of the tick's work
+  uint32_t ticks = 0;               // executed ticks
+  uint32_t deadline_misses = 0;     // kicks that arrived while a tick was still running
+  uint16_t cpu_load_permille = 0;   // busy share of the last full second
+};
+
+template <Board B, class Context>
+class Scheduler {
+ public:
+  static constexpr uint8_t kTaskCount = Context::kTaskCount;
+  using Stats = SchedulerStats<kTaskCount>;
+
+  Scheduler(B& board, Context& context, SchedulerLimits limits = {})
+      : board_(board), context_(context), limits_(limits), seen_kick_(board.kicks()),
+        next_set_(context.task_set()), window_start_us_(board.now_us()) {}
+
+  // One control period. Returns false once the context has stopped.
+  bool tick() {
+    seen_kick_ = board_.wait_kick(seen_kick_);
+    const uint32_t kick = seen_kick_;
+    const uint32_t start_us = board_.now_us();
+    const uint32_t start_cycles = board_.cycles();
+    run(start_us);
+    finish(kick, start_us, start_cycles);
+    return context_.running();
+  }
+
+  void run_until_stopped() {
+    while (tick()) {
+    }
+  }
+
+  const Stats& stats() const { return stats_; }
+  void reset_stats() { stats_ = Stats{}; }
+
+ private:
+  void run(uint32_t now_us) {
+    context_.begin_tick(now_us, board_.read_sensors());
+    uint8_t byte = 0;
+    for (uint16_t n = 0; n < limits_.rx_bytes_per_tick && context_.rx_space() > 0; ++n) {
+      if (!board_.serial_read(byte)) break;
+      context_.receive(byte);
+    }
+
+    for (uint8_t i = 0; i < next_set_.count; ++i) {
+      const uint8_t id = next_set_.ids[i];
+      const Task<Context>& task = Context::kTasks[id];
+      if (stats_.ticks % task.divider != 0) continue;
+      const uint32_t before = board_.cycles();
+      task.run(context_);
+      stats_.task[id].add(board_.cycles() - before);
+    }
+
+    board_.set_engines(context_.engines());
+    board_.set_leds(context_.leds());
+    for (uint16_t n = 0; n < limits_.tx_bytes_per_tick && context_.tx_peek(byte); ++n) {
+      if (!board_.serial_write(byte)) break;
+      context_.tx_pop();
+    }
+  }
+
+  void finish(uint32_t kick, uint32_t start_us, uint32_t start_cycles) {
+    stats_.tick.add(board_.cycles() - start_cycles);
+    ++stats_.ticks;
+
+    // Kicks that came while we ran are periods we cannot have on time: count each one and skip
+    // them, so the next tick starts on the next fresh kick, in phase.
+    const uint32_t now_kick = board_.kicks();
+    if (now_kick != kick) {
+      stats_.deadline_misses += now_kick - kick;
+      seen_kick_ = now_kick;
+    }
+
+    const uint32_t end_us = board_.now_us();
+    window_busy_us_ += end_us - start_us;
+    const uint32_t window_us = end_us - window_start_us_;
+    if (window_us >= 1000000u) {
+      stats_.cpu_load_permille = static_cast<uint16_t>(
+          static_cast<uint64_t>(window_busy_us_) * 1000u / window_us);
+      window_busy_us_ = 0;
+      window_start_us_ = end_us;
+    }
+
+    next_set_ = context_.task_set();
+  }
+
+  B& board_;
+  Context& context_;
+  SchedulerLimits limits_;
+  uint32_t seen_kick_;
+  TaskSet next_set_;
+  Stats stats_{};
+  uint32_t window_start_us_;
+  uint32_t window_busy_us_ = 0;
+};
+
+}  // namespace qr

@@ -1,0 +1,279 @@
+// One test per safety rule of the QR (the numbered list in docs/safety.md).
+#include <gtest/gtest.h>
+
+#include <qr/core/safety.hpp>
+
+namespace qr {
+namespace {
+
+constexpr uint8_t m(Mode mode) { return index(mode); }
+constexpr Mode kAllModes[] = {Mode::safe, Mode::panic, Mode::manual, Mode::calibration, Mode::yaw, Mode::full};
+
+struct Safety : ::testing::Test {
+  SafetyLimits limits;
+  SafetyMachine machine{limits};
+  Situation s;
+
+  Safety() {
+    s.battery_mv = 12000;
+    s.calibrated = true;
+  }
+
+  void at(uint32_t us) {
+    s.now_us = us;
+    s.last_frame_us = us;  // link healthy unless a test says otherwise
+  }
+  // Enter `mode` the legal way: from safe with neutral controls (through calibration for the
+  // modes that need it), then fly with some lift.
+  void enter(Mode mode) {
+    if (mode == Mode::panic) {
+      enter(Mode::manual);
+      ASSERT_EQ(machine.request(m(Mode::panic), s), Refusal::none);
+      return;
+    }
+    ASSERT_EQ(machine.request(m(mode), s), Refusal::none);
+    ASSERT_EQ(machine.mode(), mode);
+  }
+  void fly(uint16_t engines) {
+    s.controls.lift = 400;
+    for (auto& e : s.engines.value) e = engines;
+  }
+  // Runs the watchdogs once a millisecond for `us`.
+  void run_for(uint32_t us, bool link_alive = true) {
+    for (uint32_t t = 0; t < us; t += 1000) {
+      s.now_us += 1000;
+      if (link_alive) s.last_frame_us = s.now_us;
+      machine.supervise(s);
+    }
+  }
+};
+
+// Rule 1
+TEST_F(Safety, StartsInSafeWithEnginesZero) {
+  EXPECT_EQ(machine.mode(), Mode::safe);
+  fly(600);
+  EXPECT_TRUE(machine.limit_engines(s.engines, s).all_zero());
+}
+
+// Rule 2
+TEST_F(Safety, SafeIsReachableFromEveryModeFlightModesThroughPanic) {
+  for (Mode mode : kAllModes) {
+    SafetyMachine fresh{limits};
+    machine = fresh;
+    s = Situation{};
+    s.battery_mv = 12000;
+    s.calibrated = true;
+    at(1000);
+    enter(mode);
+    if (mode != Mode::calibration && mode != Mode::safe) fly(500);
+    EXPECT_EQ(machine.request(m(Mode::safe), s), Refusal::none);
+    const bool flying = mode == Mode::manual || mode == Mode::yaw || mode == Mode::full || mode == Mode::panic;
+    EXPECT_EQ(machine.mode(), flying ? Mode::panic : Mode::safe) << "from mode " << int(m(mode));
+    run_for(limits.panic_hold_us + limits.panic_ramp_us + 1000);
+    EXPECT_EQ(machine.mode(), Mode::safe) << "from mode " << int(m(mode));
+  }
+}
+
+// Rule 3
+TEST_F(Safety, LeavingSafeNeedsNeutralControls) {
+  for (Mode to : {Mode::manual, Mode::calibration, Mode::yaw, Mode::full}) {
+    s.controls = ControlInput{};
+    s.controls.roll = 5;
+    EXPECT_EQ(machine.request(m(to), s), Refusal::controls_not_neutral);
+    s.controls = ControlInput{};
+    s.controls.lift = 1;
+    EXPECT_EQ(machine.request(m(to), s), Refusal::controls_not_neutral);
+    EXPECT_EQ(machine.mode(), Mode::safe);
+  }
+}
+
+TEST_F(Safety, LeavingSafeNeedsEnginesAtZero) {
+  s.engines.value[2] = 10;
+  EXPECT_EQ(machine.request(m(Mode::manual), s), Refusal::engines_running);
+  EXPECT_EQ(machine.mode(), Mode::safe);
+}
+
+// Rule 4
+TEST_F(Safety, CalibrationOnlyFromSafe) {
+  enter(Mode::manual);
+  EXPECT_EQ(machine.request(m(Mode::calibration), s), Refusal::not_from_this_mode);
+  EXPECT_EQ(machine.mode(), Mode::manual);
+}
+
+TEST_F(Safety, YawAndFullRefuseWithoutCalibration) {
+  s.calibrated = false;
+  EXPECT_EQ(machine.request(m(Mode::yaw), s), Refusal::not_calibrated);
+  EXPECT_EQ(machine.request(m(Mode::full), s), Refusal::not_calibrated);
+  EXPECT_EQ(machine.request(m(Mode::manual), s), Refusal::none);
+}
+
+TEST_F(Safety, CalibrationReturnsToSafeWhenFinished) {
+  enter(Mode::calibration);
+  machine.calibration_finished();
+  EXPECT_EQ(machine.mode(), Mode::safe);
+}
+
+TEST_F(Safety, UnknownModeIsRefused) {
+  EXPECT_EQ(machine.request(kModeCount, s), Refusal::unknown_mode);
+  EXPECT_EQ(machine.mode(), Mode::safe);
+}
+
+// Rule 5
+TEST_F(Safety, EmergencyStopIsObeyedFromEveryMode) {
+  for (Mode mode : kAllModes) {
+    SafetyMachine fresh{limits};
+    machine = fresh;
+    at(5000);
+    s.controls = ControlInput{};
+    s.engines = EngineCommand{};
+    enter(mode);
+    fly(mode == Mode::calibration || mode == Mode::safe ? 0 : 700);
+    s.controls.roll = 300;  // the pilot is mid-manoeuvre: panic does not care
+    EXPECT_EQ(machine.request(m(Mode::panic), s), Refusal::none);
+    EXPECT_TRUE(machine.mode() == Mode::panic || machine.mode() == Mode::safe);
+    const EngineCommand out = machine.limit_engines(s.engines, s);
+    for (uint16_t v : out.value) EXPECT_LE(v, limits.panic_level) << "from mode " << int(m(mode));
+  }
+}
+
+// Rule 6
+TEST_F(Safety, PanicHoldsThenRampsToZeroThenSafeIgnoringControls) {
+  at(1000);
+  enter(Mode::manual);
+  fly(800);
+  s.engines.value[3] = 200;  // an engine below the panic level stays where it was
+  ASSERT_EQ(machine.request(m(Mode::panic), s), Refusal::none);
+
+  s.controls.lift = 1000;  // ignored from here on
+  s.engines = machine.limit_engines(s.engines, s);
+  EXPECT_EQ(s.engines.value[0], limits.panic_level);
+  EXPECT_EQ(s.engines.value[3], 200);
+
+  run_for(limits.panic_hold_us - 1000);
+  EXPECT_EQ(machine.mode(), Mode::panic);
+  EXPECT_EQ(machine.limit_engines(s.engines, s).value[0], limits.panic_level);
+
+  run_for(limits.panic_ramp_us / 2);
+  const uint16_t mid = machine.limit_engines(s.engines, s).value[0];
+  EXPECT_GT(mid, 0);
+  EXPECT_LT(mid, limits.panic_level);
+  EXPECT_EQ(machine.request(m(Mode::manual), s), Refusal::not_from_this_mode);
+
+  run_for(limits.panic_ramp_us / 2 + 1000);
+  EXPECT_EQ(machine.mode(), Mode::safe);
+  EXPECT_TRUE(machine.limit_engines(s.engines, s).all_zero());
+}
+
+// Rule 7
+TEST_F(Safety, LinkLossPanics) {
+  at(1000);
+  enter(Mode::manual);
+  fly(500);
+  run_for(limits.link_timeout_us - 1000, false);
+  EXPECT_EQ(machine.mode(), Mode::manual);  // not yet
+  run_for(2000, false);
+  EXPECT_EQ(machine.mode(), Mode::panic);
+  EXPECT_EQ(machine.panic_cause(), PanicCause::link_lost);
+}
+
+TEST_F(Safety, LinkLossInSafeStaysSafe) {
+  at(1000);
+  run_for(10 * limits.link_timeout_us, false);
+  EXPECT_EQ(machine.mode(), Mode::safe);
+}
+
+// Rule 8
+TEST_F(Safety, BatteryLowPanicsAndWarnsBefore) {
+  at(1000);
+  enter(Mode::full);
+  fly(500);
+  s.battery_mv = limits.battery_warn_mv - 1;
+  run_for(1000);
+  EXPECT_TRUE(machine.battery_warning());
+  EXPECT_EQ(machine.mode(), Mode::full);
+
+  s.battery_mv = limits.battery_panic_mv - 1;
+  run_for(limits.battery_trip_us / 2);  // a short dip under load is not a panic
+  EXPECT_EQ(machine.mode(), Mode::full);
+  run_for(limits.battery_trip_us);
+  EXPECT_EQ(machine.mode(), Mode::panic);
+  EXPECT_EQ(machine.panic_cause(), PanicCause::battery_low);
+}
+
+TEST_F(Safety, LowBatteryRefusesToLeaveSafe) {
+  s.battery_mv = limits.battery_panic_mv - 1;
+  EXPECT_EQ(machine.request(m(Mode::manual), s), Refusal::battery_low);
+}
+
+// Rule 9
+TEST_F(Safety, TiltBeyondLimitPanicsInYawAndFull) {
+  for (Mode mode : {Mode::yaw, Mode::full}) {
+    SafetyMachine fresh{limits};
+    machine = fresh;
+    s.controls = ControlInput{};
+    s.engines = EngineCommand{};
+    s.tilt_mrad = 0;
+    at(1000);
+    enter(mode);
+    fly(500);
+    s.tilt_mrad = limits.tilt_limit_mrad;
+    run_for(1000);
+    EXPECT_EQ(machine.mode(), mode);
+    s.tilt_mrad = limits.tilt_limit_mrad + 1;
+    run_for(1000);
+    EXPECT_EQ(machine.mode(), Mode::panic);
+    EXPECT_EQ(machine.panic_cause(), PanicCause::tilt);
+  }
+}
+
+TEST_F(Safety, TiltDoesNotPanicManual) {
+  at(1000);
+  enter(Mode::manual);
+  fly(500);
+  s.tilt_mrad = 2 * limits.tilt_limit_mrad;
+  run_for(1000);
+  EXPECT_EQ(machine.mode(), Mode::manual);
+}
+
+// Rule 10
+TEST_F(Safety, NoEngineStallsWhileLiftIsAboveZero) {
+  for (Mode mode : {Mode::manual, Mode::yaw, Mode::full}) {
+    SafetyMachine fresh{limits};
+    machine = fresh;
+    s.controls = ControlInput{};
+    s.engines = EngineCommand{};
+    at(1000);
+    enter(mode);
+    s.controls.lift = 50;
+    const EngineCommand wanted{{0, 5, 900, 1200}};
+    const EngineCommand out = machine.limit_engines(wanted, s);
+    EXPECT_EQ(out.value[0], limits.idle);
+    EXPECT_EQ(out.value[1], limits.idle);
+    EXPECT_EQ(out.value[2], 900);
+    EXPECT_EQ(out.value[3], kEngineMax);
+    s.controls.lift = 0;
+    EXPECT_TRUE(machine.limit_engines(wanted, s).all_zero());
+  }
+}
+
+// Rule 11
+TEST_F(Safety, ExitGoesToSafeThenStops) {
+  machine.request_exit(s);
+  EXPECT_EQ(machine.mode(), Mode::safe);
+  EXPECT_TRUE(machine.stopped());
+}
+
+TEST_F(Safety, ExitWhileFlyingGoesThroughPanic) {
+  at(1000);
+  enter(Mode::full);
+  fly(600);
+  machine.request_exit(s);
+  EXPECT_EQ(machine.mode(), Mode::panic);
+  EXPECT_FALSE(machine.stopped());
+  run_for(limits.panic_hold_us + limits.panic_ramp_us + 1000);
+  EXPECT_EQ(machine.mode(), Mode::safe);
+  EXPECT_TRUE(machine.stopped());
+}
+
+}  // namespace
+}  // namespace qr

@@ -1,0 +1,157 @@
+// The scheduler on the fake board: phases, task sets, dividers, statistics, deadline misses and
+// per-tick I/O bounds.
+#include <gtest/gtest.h>
+
+#include <qr/boards/fake/fake_board.hpp>
+#include <qr/core/scheduler.hpp>
+
+namespace qr {
+namespace {
+
+using fake::FakeBoard;
+
+// A context whose tasks only record that they ran and take the time a test gives them.
+struct TestContext {
+  static constexpr uint8_t kTaskCount = 3;
+  static const Task<TestContext> kTasks[kTaskCount];
+  static constexpr uint8_t kSetA[] = {0, 2};
+  static constexpr uint8_t kSetB[] = {1};
+
+  FakeBoard* board = nullptr;
+  bool use_b = false;
+  uint32_t runs[kTaskCount] = {};
+  uint32_t work_us[kTaskCount] = {};
+  uint32_t overrun_on_run = 0;   // run number of task 0 that takes overrun_us more
+  uint32_t overrun_us = 0;
+  bool switch_to_b_in_task = false;  // a task changes the mode, as the link task would
+  std::deque<uint8_t> rx;
+  std::deque<uint8_t> tx;
+
+  TaskSet task_set() const { return use_b ? TaskSet{kSetB, 1} : TaskSet{kSetA, 2}; }
+  void begin_tick(uint32_t, const SensorSample&) {}
+  uint32_t rx_space() const { return 1000; }
+  void receive(uint8_t b) { rx.push_back(b); }
+  bool tx_peek(uint8_t& b) const {
+    if (tx.empty()) return false;
+    b = tx.front();
+    return true;
+  }
+  void tx_pop() { tx.pop_front(); }
+  EngineCommand engines() const { return {}; }
+  uint8_t leds() const { return 0; }
+  bool running() const { return true; }
+
+  void work(int id) {
+    ++runs[id];
+    board->spend_us(work_us[id]);
+    if (id == 0 && overrun_us != 0 && runs[0] == overrun_on_run) board->spend_us(overrun_us);
+    if (id == 0 && switch_to_b_in_task) use_b = true;
+  }
+};
+
+const Task<TestContext> TestContext::kTasks[kTaskCount] = {
+    {"fast", [](TestContext& c) { c.work(0); }, 1},
+    {"other", [](TestContext& c) { c.work(1); }, 1},
+    {"slow", [](TestContext& c) { c.work(2); }, 10},
+};
+
+struct SchedulerTest : ::testing::Test {
+  FakeBoard board;
+  TestContext context;
+  SchedulerTest() { context.board = &board; }
+};
+
+TEST_F(SchedulerTest, OverrunCountsOneMissAndNextPeriodStartsOnTime) {
+  context.work_us[0] = kPeriodUs / 10;
+  context.overrun_on_run = 6;              // the 6th tick runs ...
+  context.overrun_us = kPeriodUs;          // ... 1.1 periods: it runs into the next kick
+  Scheduler scheduler(board, context);
+  for (int i = 0; i < 10; ++i) scheduler.tick();
+
+  EXPECT_EQ(scheduler.stats().deadline_misses, 1u);
+  ASSERT_EQ(board.kick_times_us.size(), 10u);
+  // Ticks 1..6 start at kicks 1..6; kick 7 fell inside tick 6 and is skipped; tick 7 starts
+  // exactly on kick 8, and every later tick stays on the period grid.
+  for (uint32_t i = 0; i < 6; ++i) EXPECT_EQ(board.kick_times_us[i], (i + 1) * kPeriodUs);
+  for (uint32_t i = 6; i < 10; ++i) EXPECT_EQ(board.kick_times_us[i], (i + 2) * kPeriodUs);
+}
+
+TEST_F(SchedulerTest, OverrunOfSeveralPeriodsCountsEachSkippedKick) {
+  context.overrun_on_run = 2;
+  context.overrun_us = 3 * kPeriodUs + kPeriodUs / 2;  // runs into kicks 3, 4 and 5
+  Scheduler scheduler(board, context);
+  for (int i = 0; i < 5; ++i) scheduler.tick();
+  EXPECT_EQ(scheduler.stats().deadline_misses, 3u);
+  EXPECT_EQ(board.kick_times_us[2], 6 * kPeriodUs);
+}
+
+TEST_F(SchedulerTest, NoMissesWhenTasksFitThePeriod) {
+  context.work_us[0] = kPeriodUs - 1;
+  Scheduler scheduler(board, context);
+  for (int i = 0; i < 100; ++i) scheduler.tick();
+  EXPECT_EQ(scheduler.stats().deadline_misses, 0u);
+  EXPECT_EQ(scheduler.stats().ticks, 100u);
+}
+
+TEST_F(SchedulerTest, RunsTheTaskSetOfTheCurrentModeChosenAtFinish) {
+  context.switch_to_b_in_task = true;
+  Scheduler scheduler(board, context);
+  scheduler.tick();  // runs set A, whose task changes the mode: the finish phase picks set B
+  scheduler.tick();
+  scheduler.tick();
+  EXPECT_EQ(context.runs[0], 1u);
+  EXPECT_EQ(context.runs[1], 2u);
+}
+
+TEST_F(SchedulerTest, SlowTasksRunAtTheirDivider) {
+  Scheduler scheduler(board, context);
+  for (int i = 0; i < 100; ++i) scheduler.tick();
+  EXPECT_EQ(context.runs[0], 100u);
+  EXPECT_EQ(context.runs[2], 10u);
+}
+
+TEST_F(SchedulerTest, TaskStatisticsInCycles) {
+  Scheduler scheduler(board, context);
+  for (uint32_t us : {10u, 30u, 20u}) {
+    context.work_us[0] = us;
+    scheduler.tick();
+  }
+  const CycleStats& s = scheduler.stats().task[0];
+  EXPECT_EQ(s.count, 3u);
+  EXPECT_EQ(s.min, 10u * FakeBoard::kCyclesPerUs);
+  EXPECT_EQ(s.max, 30u * FakeBoard::kCyclesPerUs);
+  EXPECT_EQ(s.mean(), 20u * FakeBoard::kCyclesPerUs);
+  EXPECT_GE(scheduler.stats().tick.max, s.max);
+}
+
+TEST_F(SchedulerTest, CpuLoadIsTheBusyShareOfTheLastSecond) {
+  context.work_us[0] = kPeriodUs / 4;
+  Scheduler scheduler(board, context);
+  for (uint32_t i = 0; i < kControlHz + 1; ++i) scheduler.tick();
+  EXPECT_NEAR(scheduler.stats().cpu_load_permille, 250, 2);
+}
+
+TEST_F(SchedulerTest, ReceivedBytesPerTickAreBounded) {
+  for (int i = 0; i < 100; ++i) board.rx.push_back(static_cast<uint8_t>(i));
+  SchedulerLimits limits;
+  Scheduler scheduler(board, context, limits);
+  scheduler.tick();
+  EXPECT_EQ(context.rx.size(), limits.rx_bytes_per_tick);
+  EXPECT_EQ(board.rx.size(), 100u - limits.rx_bytes_per_tick);
+}
+
+TEST_F(SchedulerTest, SentBytesPerTickAreBoundedAndNothingIsLostWhenTheUartIsFull) {
+  for (int i = 0; i < 100; ++i) context.tx.push_back(static_cast<uint8_t>(i));
+  SchedulerLimits limits;
+  Scheduler scheduler(board, context, limits);
+  scheduler.tick();
+  EXPECT_EQ(board.tx.size(), limits.tx_bytes_per_tick);
+  board.tx_capacity = board.tx.size() + 3;  // the transmitter takes only 3 more
+  scheduler.tick();
+  EXPECT_EQ(board.tx.size(), limits.tx_bytes_per_tick + 3u);
+  EXPECT_EQ(context.tx.size(), 100u - limits.tx_bytes_per_tick - 3u);
+  EXPECT_EQ(context.tx.front(), limits.tx_bytes_per_tick + 3u);  // next byte in order
+}
+
+}  // namespace
+}  // namespace qr
