@@ -1,0 +1,51 @@
+#include <common/crc8.hpp>
+#include <common/frame_parser.hpp>
+
+namespace wire {
+
+// Looks at the kept bytes as the start of a frame. Returns true when they begin with a whole,
+// valid frame (copied to frame_ and removed); false when more bytes are needed.
+bool FrameParser::advance() {
+  while (length_ > 0) {
+    if (buffer_[0] != kStartByte) {
+      uint8_t next_start = 1;
+      while (next_start < length_ && buffer_[next_start] != kStartByte) ++next_start;
+      discard(next_start, true);
+      continue;
+    }
+    if (length_ < 2) return false;
+
+    const MessageSpec* spec = find_message(buffer_[1]);
+    if (spec == nullptr || !listens_to(listen_, spec->direction)) {
+      ++counters_.unknown_types;
+      discard(1, true);  // the 'M' was not a start; the type byte may be one
+      continue;
+    }
+
+    const uint8_t frame_length = static_cast<uint8_t>(spec->payload_length + kFrameOverhead);
+    if (length_ < frame_length) return false;
+
+    const uint8_t check_at = static_cast<uint8_t>(frame_length - 1);
+    if (crc8(&buffer_[1], check_at - 1u) != buffer_[check_at]) {
+      ++counters_.check_failures;
+      discard(1, true);  // a real frame may start anywhere after this false 'M'
+      continue;
+    }
+
+    frame_.type = spec->type;
+    frame_.length = spec->payload_length;
+    for (uint8_t i = 0; i < kMaxPayloadBytes; ++i) frame_.payload[i] = i < spec->payload_length ? buffer_[2 + i] : 0;
+    ++counters_.frames_ok;
+    discard(frame_length, false);
+    return true;
+  }
+  return false;
+}
+
+void FrameParser::discard(uint8_t count, bool skipped) {
+  if (skipped) counters_.bytes_skipped += count;
+  for (uint8_t i = count; i < length_; ++i) buffer_[i - count] = buffer_[i];
+  length_ = static_cast<uint8_t>(length_ - count);
+}
+
+}  // namespace wire

@@ -1,0 +1,47 @@
+// Why the QR refused a request: the third byte of a nack. The first six are the safety machine's
+// refusals, in its order; the rest are the protocol's own.
+#pragma once
+
+#include <stdint.h>
+
+namespace wire {
+
+enum class NackReason : uint8_t {
+  none = 0,  // never sent: "no refusal", i.e. the request gets an ack
+  not_from_this_mode = 1,
+  controls_not_neutral = 2,
+  engines_running = 3,
+  not_calibrated = 4,
+  battery_low = 5,
+  unknown_mode = 6,
+  bad_value = 7,          // a field out of its range (e.g. a parameter value outside the table's range)
+  unknown_parameter = 8,  // no parameter with that id
+  busy = 9,               // e.g. a log download while logging
+};
+
+struct NackReasonSpec {
+  NackReason reason;
+  const char* name;
+  const char* text;  // what the console shows
+};
+
+inline constexpr NackReasonSpec kNackReasons[] = {
+    {NackReason::not_from_this_mode, "not_from_this_mode", "not allowed from the current mode"},
+    {NackReason::controls_not_neutral, "controls_not_neutral", "sticks and lift not neutral"},
+    {NackReason::engines_running, "engines_running", "engines are running"},
+    {NackReason::not_calibrated, "not_calibrated", "sensors not calibrated"},
+    {NackReason::battery_low, "battery_low", "battery low"},
+    {NackReason::unknown_mode, "unknown_mode", "no such mode"},
+    {NackReason::bad_value, "bad_value", "value out of range"},
+    {NackReason::unknown_parameter, "unknown_parameter", "no such parameter"},
+    {NackReason::busy, "busy", "busy, try again later"},
+};
+
+constexpr const NackReasonSpec* find_nack_reason(NackReason reason) {
+  for (const NackReasonSpec& spec : kNackReasons) {
+    if (spec.reason == reason) return &spec;
+  }
+  return nullptr;
+}
+
+}  // namespace wire

@@ -1,0 +1,125 @@
+// QR -> PC telemetry, in small groups rather than one big record: every frame must stay within 9
+// payload bytes for the check byte to catch every 2-bit error (crc8.hpp), and small groups let the
+// QR send what changes fast (attitude, rates) more often than what changes slowly. docs/protocol.md
+// gives the recommended schedule and its share of the link.
+#pragma once
+
+#include <stdint.h>
+
+#include <common/message_table.hpp>
+#include <common/mode.hpp>
+#include <common/units.hpp>
+
+namespace wire {
+
+// TelemetryAttitude::flags bits
+inline constexpr uint8_t kFlagCalibrated = 0x01;
+inline constexpr uint8_t kFlagLogging = 0x02;
+inline constexpr uint8_t kFlagBatteryWarning = 0x04;
+inline constexpr uint8_t kFlagLogFull = 0x08;
+
+struct TelemetryAttitude {
+  static constexpr MessageType kType = MessageType::telemetry_attitude;
+  uint8_t tick = 0;  // +1 per attitude frame sent (wraps), so the PC can count lost telemetry
+  Mode mode = Mode::safe;
+  uint8_t flags = 0;  // kFlag* bits; other bits are 0 today and ignored by readers
+  int16_t phi = 0;    // roll angle, 1e-4 rad
+  int16_t theta = 0;  // pitch angle, 1e-4 rad
+  int16_t psi = 0;    // yaw angle, 1e-4 rad
+
+  constexpr bool operator==(const TelemetryAttitude&) const = default;
+
+  template <class Self, class Visit>
+  static constexpr void fields(Self& m, Visit& v) {
+    v(m.tick); v(m.mode); v(m.flags); v(m.phi); v(m.theta); v(m.psi);
+  }
+  constexpr bool valid() const { return valid_mode(mode); }
+};
+
+struct TelemetryRates {
+  static constexpr MessageType kType = MessageType::telemetry_rates;
+  int16_t p = 0;  // roll rate, 1e-3 rad/s, saturated
+  int16_t q = 0;  // pitch rate, 1e-3 rad/s, saturated
+  int16_t r = 0;  // yaw rate, 1e-3 rad/s, saturated
+
+  constexpr bool operator==(const TelemetryRates&) const = default;
+
+  template <class Self, class Visit>
+  static constexpr void fields(Self& m, Visit& v) {
+    v(m.p); v(m.q); v(m.r);
+  }
+  constexpr bool valid() const { return true; }
+};
+
+constexpr bool engines_ok(const uint16_t (&engine)[4]) {
+  for (uint16_t e : engine) {
+    if (e > kEngineMax) return false;
+  }
+  return true;
+}
+
+struct TelemetryEngines {
+  static constexpr MessageType kType = MessageType::telemetry_engines;
+  uint16_t engine[4] = {0, 0, 0, 0};  // 0..1000; 0 front, 1 right, 2 back, 3 left
+
+  constexpr bool operator==(const TelemetryEngines&) const = default;
+
+  template <class Self, class Visit>
+  static constexpr void fields(Self& m, Visit& v) {
+    v(m.engine);
+  }
+  constexpr bool valid() const { return engines_ok(engine); }
+};
+
+// What the controllers are steering to, after stick scaling and trim.
+struct TelemetrySetpoints {
+  static constexpr MessageType kType = MessageType::telemetry_setpoints;
+  uint16_t lift = 0;      // 0..1000
+  int16_t roll = 0;       // roll angle set-point, 1e-4 rad
+  int16_t pitch = 0;      // pitch angle set-point, 1e-4 rad
+  int16_t yaw_rate = 0;   // yaw rate set-point, 1e-3 rad/s
+
+  constexpr bool operator==(const TelemetrySetpoints&) const = default;
+
+  template <class Self, class Visit>
+  static constexpr void fields(Self& m, Visit& v) {
+    v(m.lift); v(m.roll); v(m.pitch); v(m.yaw_rate);
+  }
+  constexpr bool valid() const { return lift <= kLiftMax; }
+};
+
+struct TelemetrySystem {
+  static constexpr MessageType kType = MessageType::telemetry_system;
+  uint16_t battery_mv = 0;
+  uint16_t cpu_load = 0;         // share of the control period spent in tasks, per mille (0..1000)
+  uint16_t loop_time_us = 0;     // longest task-set time since the last report, saturated
+  uint16_t deadline_misses = 0;  // since start, wraps
+
+  constexpr bool operator==(const TelemetrySystem&) const = default;
+
+  template <class Self, class Visit>
+  static constexpr void fields(Self& m, Visit& v) {
+    v(m.battery_mv); v(m.cpu_load); v(m.loop_time_us); v(m.deadline_misses);
+  }
+  constexpr bool valid() const { return cpu_load <= kPermilleMax; }
+};
+
+// The QR's receive counters (FrameParser::counters), each modulo 2^16: the PC compares them with
+// what it sent to show the uplink's health.
+struct TelemetryLink {
+  static constexpr MessageType kType = MessageType::telemetry_link;
+  uint16_t frames_ok = 0;
+  uint16_t check_failures = 0;
+  uint16_t unknown_types = 0;
+  uint16_t bytes_skipped = 0;
+
+  constexpr bool operator==(const TelemetryLink&) const = default;
+
+  template <class Self, class Visit>
+  static constexpr void fields(Self& m, Visit& v) {
+    v(m.frames_ok); v(m.check_failures); v(m.unknown_types); v(m.bytes_skipped);
+  }
+  constexpr bool valid() const { return true; }
+};
+
+}  // namespace wire

@@ -1,0 +1,64 @@
+// Compiled with the freestanding flags (no exceptions, no RTTI, no thread-safe statics) and only
+// the headers common/ allows: every template of the wire instantiated the way the QR uses it.
+#include <stddef.h>
+#include <stdint.h>
+
+#include <common/frame_parser.hpp>
+#include <common/messages.hpp>
+#include <common/parameter_table.hpp>
+#include <common/request_dedup.hpp>
+#include <common/resend_queue.hpp>
+
+namespace {
+
+struct EveryMessage {
+  uint32_t handled = 0;
+  template <wire::Message Msg>
+  void operator()(const Msg& message) {
+    handled += wire::encode(message).size;
+  }
+};
+
+template <class... Msgs>
+uint32_t round_trip_all(const wire::Frame& frame, wire::MessageList<Msgs...>) {
+  uint32_t ok = 0;
+  ((ok += [&] {
+     Msgs m{};
+     return wire::decode(frame, m) ? 1u : 0u;
+   }()),
+   ...);
+  return ok;
+}
+
+}  // namespace
+
+uint32_t wire_freestanding_check(const uint8_t* bytes, size_t length, uint32_t now_ms) {
+  wire::FrameParser parser(wire::Listen::both);
+  wire::ResendQueue queue;
+  wire::RequestDedup dedup;
+  wire::LogLineAssembler<wire::SensorLogRecord> sensor;
+  wire::LogLineAssembler<wire::TelemetryLogRecord> telemetry;
+  EveryMessage handler;
+  uint32_t total = 0;
+  for (size_t i = 0; i < length; ++i) {
+    parser.push(bytes[i], [&](const wire::Frame& frame) {
+      wire::dispatch(frame, handler);
+      total += round_trip_all(frame, wire::AllMessages{});
+      const wire::Admission a = dedup.admit(frame, now_ms);
+      if (a.request && !a.duplicate) dedup.record(frame, wire::NackReason::none, now_ms);
+      wire::SensorLogPart sp;
+      wire::SensorLogRecord sr;
+      if (wire::decode(frame, sp)) sensor.add(sp, sr);
+      wire::TelemetryLogPart tp;
+      wire::TelemetryLogRecord tr;
+      if (wire::decode(frame, tp)) telemetry.add(tp, tr);
+    });
+  }
+  total += queue.submit(wire::ModeChange{}, now_ms).size + queue.submit(wire::ParamSet{}, now_ms).size +
+           queue.submit(wire::ParamGet{}, now_ms).size + queue.submit(wire::LogStart{}, now_ms).size +
+           queue.submit(wire::LogStop{}, now_ms).size + queue.submit(wire::LogDownload{}, now_ms).size +
+           queue.submit(wire::Exit{}, now_ms).size;
+  wire::ResendEvent event;
+  while (queue.poll(now_ms + wire::kResendIntervalMs, event)) total += event.frame.size;
+  return total + handler.handled;
+}

@@ -1,0 +1,73 @@
+// The shared parameter table: ids, ranges and defaults hang together, and the defaults the issue
+// names are the ones in the table.
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string>
+
+#include <common/parameter_table.hpp>
+
+using wire::find_parameter;
+using wire::kParameterTable;
+using wire::NackReason;
+using wire::ParamId;
+using wire::ParameterSpec;
+
+namespace {
+int32_t default_of(ParamId id) { return find_parameter(static_cast<uint8_t>(id))->default_value; }
+}  // namespace
+
+TEST(ParameterTable, IdsRunFromOneInTableOrderAndNamesAreUnique) {
+  std::set<std::string> names;
+  for (size_t row = 0; row < wire::kParameterCount; ++row) {
+    const ParameterSpec& spec = kParameterTable[row];
+    EXPECT_EQ(static_cast<size_t>(spec.id), row + 1) << spec.name;
+    EXPECT_TRUE(names.insert(spec.name).second) << spec.name;
+    EXPECT_EQ(find_parameter(static_cast<uint8_t>(spec.id)), &spec);
+  }
+  EXPECT_EQ(find_parameter(0), nullptr);
+  EXPECT_EQ(find_parameter(static_cast<uint8_t>(wire::kParameterCount + 1)), nullptr);
+  EXPECT_EQ(find_parameter(0xFF), nullptr) << "0xFF means 'all' in param_get";
+}
+
+TEST(ParameterTable, RangesAreSaneAndDefaultsInside) {
+  for (const ParameterSpec& spec : kParameterTable) {
+    EXPECT_LE(spec.min, spec.max) << spec.name;
+    EXPECT_TRUE(wire::in_range(spec, spec.default_value)) << spec.name;
+    EXPECT_LE(spec.frac_bits, 30) << spec.name;
+    EXPECT_GT(std::string(spec.unit).size(), 0u) << spec.name;
+    EXPECT_GT(std::string(spec.meaning).size(), 0u) << spec.name;
+  }
+}
+
+TEST(ParameterTable, DefaultsTheSafetyRulesName) {
+  EXPECT_EQ(default_of(ParamId::link_timeout_ms), 250);
+  EXPECT_EQ(default_of(ParamId::battery_panic_mv), 10500);
+  EXPECT_GT(default_of(ParamId::battery_warning_mv), default_of(ParamId::battery_panic_mv));
+  // 45 degrees in mrad: 1000 * pi / 4 = 785.4.
+  EXPECT_EQ(default_of(ParamId::tilt_limit), 785);
+  EXPECT_LT(default_of(ParamId::idle_level), default_of(ParamId::panic_level));
+}
+
+TEST(ParameterTable, EveryParameterTheIssueListsIsThere) {
+  for (const char* name : {"yaw_p", "p1", "p2", "c1", "c2", "filter_cutoff", "telemetry_rate", "link_timeout",
+                           "battery_panic", "battery_warning", "tilt_limit", "panic_hold", "panic_level"}) {
+    bool found = false;
+    for (const ParameterSpec& spec : kParameterTable) found = found || std::string(spec.name) == name;
+    EXPECT_TRUE(found) << name;
+  }
+}
+
+TEST(ParameterValues, StartAtDefaultsAndAcceptOnlyKnownIdsInRange) {
+  wire::ParameterValues values;
+  for (const ParameterSpec& spec : kParameterTable) EXPECT_EQ(values.get(spec.id), spec.default_value);
+
+  const ParameterSpec& tilt = *find_parameter(static_cast<uint8_t>(ParamId::tilt_limit));
+  EXPECT_EQ(values.set(static_cast<uint8_t>(ParamId::tilt_limit), tilt.max), NackReason::none);
+  EXPECT_EQ(values.get(ParamId::tilt_limit), tilt.max);
+  EXPECT_EQ(values.set(static_cast<uint8_t>(ParamId::tilt_limit), tilt.max + 1), NackReason::bad_value);
+  EXPECT_EQ(values.set(static_cast<uint8_t>(ParamId::tilt_limit), tilt.min - 1), NackReason::bad_value);
+  EXPECT_EQ(values.get(ParamId::tilt_limit), tilt.max) << "a refused value changes nothing";
+  EXPECT_EQ(values.set(0, 1), NackReason::unknown_parameter);
+  EXPECT_EQ(values.set(200, 1), NackReason::unknown_parameter);
+}
