@@ -1,0 +1,22 @@
+# cmake -DNM=... -DELF=... -DEXPECT=absent|present -P check_soft_float.cmake
+# Lists the libgcc soft-float helpers (__addsf3, __muldf3, __floatsisf, __fixsfsi, __eqsf2, ...)
+# defined in ELF and fails unless that matches EXPECT. Only helpers something calls are linked
+# (--gc-sections, archive members on demand), so "defined" means "used".
+execute_process(COMMAND ${NM} --defined-only ${ELF} OUTPUT_VARIABLE listing RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "${NM} failed on ${ELF}")
+endif()
+string(REPLACE "\n" ";" lines "${listing}")
+set(helpers "")
+foreach(line IN LISTS lines)
+  string(REGEX REPLACE "^.* " "" name "${line}")
+  if(name MATCHES "^__[a-z]*(sf|df|tf)[a-z]*[0-9]*$")
+    list(APPEND helpers ${name})
+  endif()
+endforeach()
+if(EXPECT STREQUAL "absent" AND helpers)
+  message(FATAL_ERROR "soft-float helpers in ${ELF}: ${helpers}")
+elseif(EXPECT STREQUAL "present" AND NOT helpers)
+  message(FATAL_ERROR "no soft-float helper found in ${ELF}: the check cannot see them")
+endif()
+message(STATUS "soft-float helpers in ${ELF}: ${helpers}")

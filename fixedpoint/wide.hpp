@@ -1,0 +1,117 @@
+// Wide accumulators for signal chains: the exact product of two Q numbers of any formats, sums
+// of such products without rounding in between, and one rounding back at the end.
+//
+//   y = narrow<Q<16>>(mul_wide(b0, x) + mul_wide(b1, x1) - mul_wide(a1, y1));
+//
+// The same three names exist for double and float, where they are plain arithmetic, so signal
+// code written once over a number type T runs in Q on the target, in double as the host's
+// accuracy reference and in float as the target's speed comparison.
+#pragma once
+
+#include <fixedpoint/convert.hpp>
+#include <fixedpoint/detail/raw.hpp>
+#include <fixedpoint/q.hpp>
+
+namespace fx {
+
+// raw / 2^Frac in 64 bits. Sums wrap modulo 2^64; a product of two int32 raws takes at most 63
+// bits, so a handful of them can be added before that matters.
+template <int Frac>
+class Wide {
+  static_assert(Frac >= 0 && Frac < 64, "Wide<Frac>: 0 <= Frac < 64");
+
+ public:
+  static constexpr int frac_bits = Frac;
+
+  constexpr Wide() = default;
+  static constexpr Wide from_raw(int64_t raw) {
+    Wide w;
+    w.raw_ = raw;
+    return w;
+  }
+  constexpr int64_t raw() const { return raw_; }
+  constexpr double to_double() const { return static_cast<double>(raw_) * detail::pow2(-Frac); }
+
+  friend constexpr Wide operator+(Wide a, Wide b) { return from_raw(static_cast<int64_t>(u(a) + u(b))); }
+  friend constexpr Wide operator-(Wide a, Wide b) { return from_raw(static_cast<int64_t>(u(a) - u(b))); }
+  friend constexpr Wide operator-(Wide a) { return from_raw(static_cast<int64_t>(uint64_t{0} - u(a))); }
+  friend constexpr Wide& operator+=(Wide& a, Wide b) { return a = a + b; }
+  friend constexpr Wide& operator-=(Wide& a, Wide b) { return a = a - b; }
+  friend constexpr bool operator==(Wide a, Wide b) { return a.raw_ == b.raw_; }
+
+ private:
+  static constexpr uint64_t u(Wide a) { return static_cast<uint64_t>(a.raw_); }
+  int64_t raw_ = 0;
+};
+
+template <typename T>
+inline constexpr bool is_wide = false;
+template <int Frac>
+inline constexpr bool is_wide<Wide<Frac>> = true;
+
+// Exact: the product's fractional bits are the sum of the factors'.
+template <int Fa, typename Ra, int Fb, typename Rb>
+constexpr Wide<Fa + Fb> mul_wide(Q<Fa, Ra> a, Q<Fb, Rb> b) {
+  if constexpr (detail::RawTraits<Ra>::bits + detail::RawTraits<Rb>::bits <= 32) {
+    // Two int16s: one 32-bit multiply instead of a 64-bit one.
+    return Wide<Fa + Fb>::from_raw(static_cast<int32_t>(a.raw()) * b.raw());
+  } else {
+    return Wide<Fa + Fb>::from_raw(static_cast<int64_t>(a.raw()) * b.raw());
+  }
+}
+
+namespace detail {
+
+template <typename To, int G>
+constexpr int64_t rescaled(Wide<G> from) {
+  constexpr int shift = To::frac_bits - G;
+  if constexpr (shift >= 0) {
+    return shl_wrap(from.raw(), shift);
+  } else {
+    return round_shr(from.raw(), -shift);
+  }
+}
+
+}  // namespace detail
+
+// Back to a Q format, rounding half up; wraps (narrow) or clamps (narrow_sat) when it does not
+// fit. The filters use narrow: a filter sized for its signal has headroom, and saturating would
+// cost a 64-bit range check on every tick.
+template <typename To, int G>
+  requires is_q<To>
+constexpr To narrow(Wide<G> w) {
+  return To::from_raw(detail::wrap<typename To::raw_type>(detail::rescaled<To>(w)));
+}
+
+template <typename To, int G>
+  requires is_q<To>
+constexpr To narrow_sat(Wide<G> w) {
+  return To::from_raw(detail::saturate<typename To::raw_type>(detail::rescaled<To>(w)));
+}
+
+// ---- the same vocabulary for the floating-point number types ----
+constexpr double mul_wide(double a, double b) { return a * b; }
+constexpr float mul_wide(float a, float b) { return a * b; }
+
+template <typename To>
+  requires detail::is_same<To, double>
+constexpr double narrow(double w) {
+  return w;
+}
+template <typename To>
+  requires detail::is_same<To, float>
+constexpr float narrow(float w) {
+  return w;
+}
+template <typename To>
+  requires detail::is_same<To, double>
+constexpr double narrow_sat(double w) {
+  return w;
+}
+template <typename To>
+  requires detail::is_same<To, float>
+constexpr float narrow_sat(float w) {
+  return w;
+}
+
+}  // namespace fx
