@@ -143,3 +143,16 @@ TEST(FrameParser, ResynchronisesAfterRandomGarbage) {
   EXPECT_LT(first_frame_lost, 20000 / 256);
   std::printf("resync: first frame lost after %d of 20000 garbage bursts\n", first_frame_lost);
 }
+
+TEST(FrameParser, AnIdleLineDropsTheRestOfAFrameWhoseSenderStopped) {
+  const auto control = frame(Control{100, 0, 0, 0});
+  FrameParser parser(Listen::both);
+  const std::vector<uint8_t> cut(control.begin(), control.begin() + 6);
+  EXPECT_TRUE(parse_all(parser, cut).empty());
+  EXPECT_EQ(parser.buffered(), 6);
+  parser.line_idle();
+  EXPECT_EQ(parser.buffered(), 0);
+  EXPECT_EQ(parse_all(parser, frame(Exit{1})).size(), 1u);
+  EXPECT_EQ(parser.counters().bytes_skipped, 6u);
+  EXPECT_EQ(parser.counters().check_failures, 0u) << "nothing was mistaken for part of the cut-off frame";
+}
