@@ -14,8 +14,10 @@
 
 namespace fx {
 
-// raw / 2^Frac in 64 bits. Sums wrap modulo 2^64; a product of two int32 raws takes at most 63
-// bits, so a handful of them can be added before that matters.
+// raw / 2^Frac in 64 bits. Sums wrap modulo 2^64. A product of two int32 raws needs up to 63
+// bits, so only sums of products whose factors are both near full scale can overflow; and
+// even then narrow() is right whenever its result fits, since the bits it keeps survive
+// wrapping. narrow_sat() needs the true sum.
 template <int Frac>
 class Wide {
   static_assert(Frac >= 0 && Frac < 64, "Wide<Frac>: 0 <= Frac < 64");

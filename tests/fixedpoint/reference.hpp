@@ -5,6 +5,7 @@
 
 #include <fixedpoint/q.hpp>
 
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <random>
@@ -14,6 +15,12 @@
 namespace fxtest {
 
 using i128 = __int128;
+
+// A Q's value, exactly (long double holds 64 significant bits).
+template <typename Q>
+long double value(Q q) {
+  return ldexpl(static_cast<long double>(q.raw()), -Q::frac_bits);
+}
 
 // floor(x / y) for any signs, y != 0.
 inline i128 floor_div(i128 x, i128 y) {

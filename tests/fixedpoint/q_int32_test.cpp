@@ -1,0 +1,116 @@
+// Q<F, int32_t> against the exact reference, for formats from integer (F = 0) to pure fraction
+// (F = 31): every pair of edge values (extremes, powers of two and their neighbours) plus
+// 100 000 random pairs from a fixed seed per operation.
+#include <fixedpoint/q.hpp>
+#include <gtest/gtest.h>
+
+#include <functional>
+
+#include "reference.hpp"
+
+namespace {
+
+using fxtest::i128;
+
+template <typename Q>
+class QInt32 : public ::testing::Test {};
+using Formats = ::testing::Types<fx::Q<0>, fx::Q<1>, fx::Q<16>, fx::Q<30>, fx::Q<31>>;
+TYPED_TEST_SUITE(QInt32, Formats);
+
+constexpr int kRandomPairs = 100000;
+
+// Calls check(a, b) on every edge pair and on random pairs.
+template <typename Q>
+void for_pairs(uint64_t seed, const std::function<void(Q, Q)>& check) {
+  const auto edges = fxtest::edge_raws<int32_t>();
+  for (int32_t a : edges)
+    for (int32_t b : edges) check(Q::from_raw(a), Q::from_raw(b));
+  fxtest::RawSource<int32_t> source(seed);
+  for (int i = 0; i < kRandomPairs; ++i) check(Q::from_raw(source.next()), Q::from_raw(source.next()));
+}
+
+TYPED_TEST(QInt32, AddAndSubtractWrapOrSaturate) {
+  using Q = TypeParam;
+  for_pairs<Q>(1, [](Q a, Q b) {
+    const i128 sum = i128{a.raw()} + b.raw(), difference = i128{a.raw()} - b.raw();
+    ASSERT_EQ((a + b).raw(), fxtest::wrapped<int32_t>(sum)) << a.raw() << " + " << b.raw();
+    ASSERT_EQ((a - b).raw(), fxtest::wrapped<int32_t>(difference)) << a.raw() << " - " << b.raw();
+    ASSERT_EQ(add_sat(a, b).raw(), fxtest::saturated<int32_t>(sum)) << a.raw() << " + " << b.raw();
+    ASSERT_EQ(sub_sat(a, b).raw(), fxtest::saturated<int32_t>(difference)) << a.raw() << " - " << b.raw();
+    Q c = a;
+    c += b;
+    ASSERT_EQ(c, a + b);
+    c -= b;
+    ASSERT_EQ(c, a);
+  });
+}
+
+TYPED_TEST(QInt32, MultiplyRoundsHalfUpThenWrapsOrSaturates) {
+  using Q = TypeParam;
+  for_pairs<Q>(2, [](Q a, Q b) {
+    const i128 exact = fxtest::round_half_up_shift(i128{a.raw()} * b.raw(), Q::frac_bits);
+    ASSERT_EQ((a * b).raw(), fxtest::wrapped<int32_t>(exact)) << a.raw() << " * " << b.raw();
+    ASSERT_EQ(mul_sat(a, b).raw(), fxtest::saturated<int32_t>(exact)) << a.raw() << " * " << b.raw();
+    Q c = a;
+    c *= b;
+    ASSERT_EQ(c, a * b);
+  });
+}
+
+TYPED_TEST(QInt32, DivideRoundsHalfUpAndSaturatesIncludingByZero) {
+  using Q = TypeParam;
+  for_pairs<Q>(3, [](Q a, Q b) {
+    const int32_t expected =
+        b.raw() == 0 ? (a.raw() > 0 ? INT32_MAX : a.raw() < 0 ? INT32_MIN : 0)
+                     : fxtest::saturated<int32_t>(fxtest::round_half_up_div(i128{a.raw()} << Q::frac_bits, b.raw()));
+    ASSERT_EQ((a / b).raw(), expected) << a.raw() << " / " << b.raw();
+    ASSERT_EQ(div_sat(a, b).raw(), expected) << a.raw() << " / " << b.raw();
+    Q c = a;
+    c /= b;
+    ASSERT_EQ(c.raw(), expected);
+  });
+}
+
+TYPED_TEST(QInt32, TimesIntegerWrapsOrSaturates) {
+  using Q = TypeParam;
+  for_pairs<Q>(4, [](Q a, Q b) {
+    const int32_t n = b.raw();
+    const i128 exact = i128{a.raw()} * n;
+    ASSERT_EQ((a * n).raw(), fxtest::wrapped<int32_t>(exact)) << a.raw() << " * " << n;
+    ASSERT_EQ((n * a).raw(), fxtest::wrapped<int32_t>(exact)) << n << " * " << a.raw();
+    ASSERT_EQ(mul_sat(a, n).raw(), fxtest::saturated<int32_t>(exact)) << a.raw() << " * " << n;
+  });
+}
+
+TYPED_TEST(QInt32, NegateAbsShiftCompare) {
+  using Q = TypeParam;
+  for_pairs<Q>(5, [](Q a, Q b) {
+    const i128 x = a.raw();
+    ASSERT_EQ((-a).raw(), fxtest::wrapped<int32_t>(-x));
+    ASSERT_EQ(neg_sat(a).raw(), fxtest::saturated<int32_t>(-x));
+    ASSERT_EQ(abs_sat(a).raw(), fxtest::saturated<int32_t>(x < 0 ? -x : x));
+    const int n = static_cast<int>(static_cast<uint32_t>(b.raw()) % 36) - 2;  // -2 .. 33
+    const int k = std::clamp(n, 0, 32);
+    ASSERT_EQ((a << n).raw(), fxtest::wrapped<int32_t>(x << k)) << a.raw() << " << " << n;
+    ASSERT_EQ(shl_sat(a, n).raw(), fxtest::saturated<int32_t>(x << k)) << a.raw() << " << " << n;
+    ASSERT_EQ((a >> n).raw(), static_cast<int32_t>(fxtest::floor_div(x, i128{1} << std::min(k, 31))))
+        << a.raw() << " >> " << n;
+    ASSERT_EQ(a == b, a.raw() == b.raw());
+    ASSERT_EQ(a != b, a.raw() != b.raw());
+    ASSERT_EQ(a < b, a.raw() < b.raw());
+    ASSERT_EQ(a <= b, a.raw() <= b.raw());
+    ASSERT_EQ(a > b, a.raw() > b.raw());
+    ASSERT_EQ(a >= b, a.raw() >= b.raw());
+  });
+}
+
+TYPED_TEST(QInt32, IntegersInSaturatingAndOutRounded) {
+  using Q = TypeParam;
+  for_pairs<Q>(6, [](Q a, Q b) {
+    const int32_t n = b.raw();
+    ASSERT_EQ(Q::from_int(n).raw(), fxtest::saturated<int32_t>(i128{n} << Q::frac_bits)) << n;
+    ASSERT_EQ(a.to_int(), static_cast<int32_t>(fxtest::round_half_up_shift(a.raw(), Q::frac_bits))) << a.raw();
+  });
+}
+
+}  // namespace
