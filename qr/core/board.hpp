@@ -21,8 +21,10 @@
 
 namespace qr {
 
-// Raw MPU-6050-style sample: 16-bit gyro and accelerometer counts, body axes x (forward),
-// y (right), z (down). Battery in mV. The barometer is optional (0 when absent).
+// Raw MPU-6050-style sample: 16-bit gyro and accelerometer counts in body axes x (forward),
+// y (right), z (down); the accelerometer reads specific force, so (0, 0, -1 g) at rest and
+// level. Scales in sensor_scale.hpp, signs in docs/conventions.md. Battery in mV. The
+// barometer is optional (0 when absent).
 struct SensorSample {
   int16_t gyro[3] = {0, 0, 0};
   int16_t accel[3] = {0, 0, 0};
