@@ -95,8 +95,9 @@ struct DebugText {
   // Takes up to 9 characters of `chars` (stopping at a NUL) and returns how many it took, so a
   // longer message is sent as a loop of pieces.
   constexpr size_t fill(const char* chars, size_t count) {
+    const size_t limit = count < kDebugTextChars ? count : kDebugTextChars;
     size_t n = 0;
-    for (; n < kDebugTextChars && n < count && chars[n] != '\0'; ++n) text[n] = chars[n];
+    for (; n < limit && chars[n] != '\0'; ++n) text[n] = chars[n];
     for (size_t i = n; i < kDebugTextChars; ++i) text[i] = '\0';
     return n;
   }

@@ -78,7 +78,7 @@ class ResendQueue {
   AnswerMatch answer(MessageType type, uint8_t seq);
 
   Slot slots_[kAckedTypeCount];
-  uint8_t next_seq_[kAckedTypeCount];
+  uint8_t next_seq_[kAckedTypeCount] = {};
 };
 
 }  // namespace wire

@@ -197,7 +197,7 @@ struct Link {
   Quadcopter qr{downlink};
   uint32_t now = 0;
 
-  Link(ChannelFaults faults, uint64_t seed) : uplink(faults, seed), downlink(faults, seed ^ 0x9E3779B97F4A7C15ull) {}
+  Link(const ChannelFaults& faults, uint64_t seed) : uplink(faults, seed), downlink(faults, seed ^ 0x9E3779B97F4A7C15ull) {}
 
   void step(bool new_requests) {
     pc.tick(now, new_requests);

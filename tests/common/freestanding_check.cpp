@@ -19,15 +19,15 @@ struct EveryMessage {
   }
 };
 
+template <class Msg>
+uint32_t decodes_as(const wire::Frame& frame) {
+  Msg message{};
+  return wire::decode(frame, message) ? 1u : 0u;
+}
+
 template <class... Msgs>
-uint32_t round_trip_all(const wire::Frame& frame, wire::MessageList<Msgs...>) {
-  uint32_t ok = 0;
-  ((ok += [&] {
-     Msgs m{};
-     return wire::decode(frame, m) ? 1u : 0u;
-   }()),
-   ...);
-  return ok;
+uint32_t decoders_accepting(const wire::Frame& frame, wire::MessageList<Msgs...>) {
+  return (decodes_as<Msgs>(frame) + ... + 0u);
 }
 
 }  // namespace
@@ -43,7 +43,7 @@ uint32_t wire_freestanding_check(const uint8_t* bytes, size_t length, uint32_t n
   for (size_t i = 0; i < length; ++i) {
     parser.push(bytes[i], [&](const wire::Frame& frame) {
       wire::dispatch(frame, handler);
-      total += round_trip_all(frame, wire::AllMessages{});
+      total += decoders_accepting(frame, wire::AllMessages{});
       const wire::Admission a = dedup.admit(frame, now_ms);
       if (a.request && !a.duplicate) dedup.record(frame, wire::NackReason::none, now_ms);
       wire::SensorLogPart sp;
@@ -54,10 +54,11 @@ uint32_t wire_freestanding_check(const uint8_t* bytes, size_t length, uint32_t n
       if (wire::decode(frame, tp)) telemetry.add(tp, tr);
     });
   }
-  total += queue.submit(wire::ModeChange{}, now_ms).size + queue.submit(wire::ParamSet{}, now_ms).size +
-           queue.submit(wire::ParamGet{}, now_ms).size + queue.submit(wire::LogStart{}, now_ms).size +
-           queue.submit(wire::LogStop{}, now_ms).size + queue.submit(wire::LogDownload{}, now_ms).size +
-           queue.submit(wire::Exit{}, now_ms).size;
+  const wire::FrameBytes sent[] = {queue.submit(wire::ModeChange{}, now_ms), queue.submit(wire::ParamSet{}, now_ms),
+                                   queue.submit(wire::ParamGet{}, now_ms),   queue.submit(wire::LogStart{}, now_ms),
+                                   queue.submit(wire::LogStop{}, now_ms),    queue.submit(wire::LogDownload{}, now_ms),
+                                   queue.submit(wire::Exit{}, now_ms)};
+  for (const wire::FrameBytes& frame : sent) total += frame.size;
   wire::ResendEvent event;
   while (queue.poll(now_ms + wire::kResendIntervalMs, event)) total += event.frame.size;
   return total + handler.handled;

@@ -10,7 +10,7 @@ namespace {
 constexpr size_t kMatchWindow = 64;
 }  // namespace
 
-SimChannel::SimChannel(ChannelFaults faults, uint64_t seed)
+SimChannel::SimChannel(const ChannelFaults& faults, uint64_t seed)
     : faults_(faults),
       rng_(seed),
       bits_to_next_error_(faults.bit_error_rate > 0 ? faults.bit_error_rate : 0.5) {

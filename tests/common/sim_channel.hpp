@@ -26,7 +26,7 @@ struct ChannelFaults {
 
 class SimChannel {
  public:
-  SimChannel(ChannelFaults faults, uint64_t seed);
+  SimChannel(const ChannelFaults& faults, uint64_t seed);
 
   // The sender puts a frame on the line.
   void send(const wire::FrameBytes& frame);
