@@ -101,14 +101,16 @@ using SensorLogPart = LogPart<SensorLogRecord>;
 using TelemetryLogPart = LogPart<TelemetryLogRecord>;
 
 // Part `part` of a line, ready to encode(). The QR sends parts 0..kParts-1 of each line in turn.
+// A part number past the end gives a part with no data, which every receiver refuses.
 template <LogRecord Record>
 constexpr LogPart<Record> make_log_part(const Record& record, uint8_t part) {
-  uint8_t flat[size_t{Record::kParts} * kLogPartDataBytes] = {};
-  write_fields(record, flat, sizeof flat);
   LogPart<Record> out;
   out.line = record.line;
-  out.part = part < Record::kParts ? part : 0;
-  for (size_t i = 0; i < kLogPartDataBytes; ++i) out.data[i] = flat[size_t{out.part} * kLogPartDataBytes + i];
+  out.part = part;
+  if (part >= Record::kParts) return out;
+  uint8_t flat[size_t{Record::kParts} * kLogPartDataBytes] = {};
+  write_fields(record, flat, sizeof flat);
+  for (size_t i = 0; i < kLogPartDataBytes; ++i) out.data[i] = flat[size_t{part} * kLogPartDataBytes + i];
   return out;
 }
 

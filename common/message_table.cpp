@@ -13,11 +13,8 @@ struct TypeIndex {
 
 constexpr TypeIndex make_index() {
   TypeIndex index{};
+  for (uint8_t& slot_of_byte : index.ack_slot) slot_of_byte = kNoAckSlot;
   uint8_t slot = 0;
-  for (uint8_t byte = 0;; ++byte) {
-    index.ack_slot[byte] = kNoAckSlot;
-    if (byte == 0xFF) break;
-  }
   for (size_t row = 0; row < kMessageCount; ++row) {
     const uint8_t byte = type_byte(kMessageTable[row].type);
     index.row_plus_one[byte] = static_cast<uint8_t>(row + 1);

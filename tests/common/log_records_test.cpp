@@ -98,3 +98,12 @@ TEST(LogRecords, ALineWithAFieldOutOfRangeIsRejected) {
   for (const TelemetryLogPart& p : parts_over_the_wire(bad)) last = assembler.add(p, got);
   EXPECT_EQ(last, LogLineAssembler<TelemetryLogRecord>::Result::rejected);
 }
+
+TEST(LogRecords, APartNumberPastTheEndMakesAPartReceiversRefuse) {
+  const SensorLogPart past_end = make_log_part(wire_test::golden_sensor_record(), SensorLogRecord::kParts);
+  SensorLogPart decoded;
+  EXPECT_FALSE(decode(wire_test::frame_of(encode(past_end)), decoded));
+  LogLineAssembler<SensorLogRecord> assembler;
+  SensorLogRecord got;
+  EXPECT_EQ(assembler.add(past_end, got), LogLineAssembler<SensorLogRecord>::Result::rejected);
+}

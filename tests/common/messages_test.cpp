@@ -175,3 +175,12 @@ TEST(Messages, DispatchCallsTheOverloadForTheDecodedMessage) {
   EXPECT_EQ(dispatch(wire_test::frame_of(encode(Control{2000, 0, 0, 0})), handler), DispatchResult::invalid_payload);
   EXPECT_EQ(handler.controls, 1);
 }
+
+TEST(Messages, OutOfScaleValuesSaturateInsteadOfWrapping) {
+  // 40 rad/s in 1e-3 rad/s does not fit an int16: it must show as the end of the scale.
+  EXPECT_EQ(saturate_i16(40 * kRateUnitsPerRadS), 32767);
+  EXPECT_EQ(saturate_i16(-40 * kRateUnitsPerRadS), -32768);
+  EXPECT_EQ(saturate_i16(-1234), -1234);
+  EXPECT_EQ(saturate_u16(70000u), 65535);
+  EXPECT_EQ(saturate_u16(612u), 612);
+}
