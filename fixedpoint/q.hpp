@@ -2,7 +2,8 @@
 //
 // Rules, the same for every operation in the library (fixedpoint/README.md has the table):
 // - Rounding is round half up: an exact result x becomes floor(x + 1/2 lsb). It is the cheapest
-//   unbiased-on-average rounding for two's complement (a shift plus the first dropped bit).
+//   rounding to nearest in two's complement (a shift plus the first dropped bit), and biased
+//   only at exact ties.
 // - The plain operators (+ - * unary-, << , * int) wrap modulo 2^bits, like the integers they
 //   are made of; the *_sat functions clamp to [min(), max()] instead. Pick per use: wrapping
 //   is cheaper and exact when the format has headroom, saturation is for values from outside.
@@ -101,7 +102,7 @@ class Q {
     return from_raw(detail::saturate<Raw>(detail::round_shr(product(a, b), Frac)));
   }
   friend constexpr Q mul_sat(Q a, int32_t n) {
-    // |raw * n| < 2^62: exact in int64 for either storage.
+    // |raw * n| <= 2^62: exact in int64 for either storage.
     return from_raw(detail::saturate<Raw>(static_cast<int64_t>(a.raw_) * n));
   }
   friend constexpr Q shl_sat(Q a, int n) {

@@ -8,7 +8,6 @@
 // accuracy reference and in float as the target's speed comparison.
 #pragma once
 
-#include <fixedpoint/convert.hpp>
 #include <fixedpoint/detail/raw.hpp>
 #include <fixedpoint/q.hpp>
 
@@ -45,11 +44,6 @@ class Wide {
   static constexpr uint64_t u(Wide a) { return static_cast<uint64_t>(a.raw_); }
   int64_t raw_ = 0;
 };
-
-template <typename T>
-inline constexpr bool is_wide = false;
-template <int Frac>
-inline constexpr bool is_wide<Wide<Frac>> = true;
 
 // Exact: the product's fractional bits are the sum of the factors'.
 template <int Fa, typename Ra, int Fb, typename Rb>

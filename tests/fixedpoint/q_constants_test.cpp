@@ -56,7 +56,8 @@ TEST(QConstants, IntegersInSaturateAndOutRoundHalfUp) {
 TEST(QConstants, FormatsAreDistinctTypes) {
   static_assert(!std::is_same_v<Q<16>, Q<17>>);
   static_assert(!std::is_same_v<Q<15>, Q<15, int16_t>>);
-  static_assert(fx::is_q<Q<3, int16_t>> && !fx::is_q<int>);
+  static_assert(fx::is_q<Q<3, int16_t>>);
+  static_assert(!fx::is_q<int>);
 }
 
 }  // namespace

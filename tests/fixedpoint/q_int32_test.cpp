@@ -12,105 +12,136 @@ namespace {
 
 using fxtest::i128;
 
-template <typename Q>
-class QInt32 : public ::testing::Test {};
-using Formats = ::testing::Types<fx::Q<0>, fx::Q<1>, fx::Q<16>, fx::Q<30>, fx::Q<31>>;
-TYPED_TEST_SUITE(QInt32, Formats);
-
 constexpr int kRandomPairs = 100000;
 
-// Calls check(a, b) on every edge pair and on random pairs.
+// Runs Check::run<Q>() for each int32 format, from integer to pure fraction.
+template <typename Check>
+void for_each_format() {
+  Check::template run<fx::Q<0>>();
+  Check::template run<fx::Q<1>>();
+  Check::template run<fx::Q<16>>();
+  Check::template run<fx::Q<30>>();
+  Check::template run<fx::Q<31>>();
+}
+
+// Calls check(a, b) on every edge pair and on random pairs, until the first failure.
 template <typename Q>
 void for_pairs(uint64_t seed, const std::function<void(Q, Q)>& check) {
+  SCOPED_TRACE(::testing::Message() << "in Q<" << Q::frac_bits << ">");
   const auto edges = fxtest::edge_raws<int32_t>();
-  for (int32_t a : edges)
-    for (int32_t b : edges) check(Q::from_raw(a), Q::from_raw(b));
+  for (int32_t a : edges) {
+    for (int32_t b : edges) {
+      check(Q::from_raw(a), Q::from_raw(b));
+      if (::testing::Test::HasFatalFailure()) return;
+    }
+  }
   fxtest::RawSource<int32_t> source(seed);
-  for (int i = 0; i < kRandomPairs; ++i) check(Q::from_raw(source.next()), Q::from_raw(source.next()));
+  for (int i = 0; i < kRandomPairs; ++i) {
+    check(Q::from_raw(source.next()), Q::from_raw(source.next()));
+    if (::testing::Test::HasFatalFailure()) return;
+  }
 }
 
-TYPED_TEST(QInt32, AddAndSubtractWrapOrSaturate) {
-  using Q = TypeParam;
-  for_pairs<Q>(1, [](Q a, Q b) {
-    const i128 sum = i128{a.raw()} + b.raw(), difference = i128{a.raw()} - b.raw();
-    ASSERT_EQ((a + b).raw(), fxtest::wrapped<int32_t>(sum)) << a.raw() << " + " << b.raw();
-    ASSERT_EQ((a - b).raw(), fxtest::wrapped<int32_t>(difference)) << a.raw() << " - " << b.raw();
-    ASSERT_EQ(add_sat(a, b).raw(), fxtest::saturated<int32_t>(sum)) << a.raw() << " + " << b.raw();
-    ASSERT_EQ(sub_sat(a, b).raw(), fxtest::saturated<int32_t>(difference)) << a.raw() << " - " << b.raw();
-    Q c = a;
-    c += b;
-    ASSERT_EQ(c, a + b);
-    c -= b;
-    ASSERT_EQ(c, a);
-  });
-}
+struct AddAndSubtractWrapOrSaturate {
+  template <typename Q>
+  static void run() {
+    for_pairs<Q>(1, [](Q a, Q b) {
+      const i128 sum = i128{a.raw()} + b.raw(), difference = i128{a.raw()} - b.raw();
+      ASSERT_EQ((a + b).raw(), fxtest::wrapped<int32_t>(sum)) << a.raw() << " + " << b.raw();
+      ASSERT_EQ((a - b).raw(), fxtest::wrapped<int32_t>(difference)) << a.raw() << " - " << b.raw();
+      ASSERT_EQ(add_sat(a, b).raw(), fxtest::saturated<int32_t>(sum)) << a.raw() << " + " << b.raw();
+      ASSERT_EQ(sub_sat(a, b).raw(), fxtest::saturated<int32_t>(difference)) << a.raw() << " - " << b.raw();
+      Q c = a;
+      c += b;
+      ASSERT_EQ(c, a + b);
+      c -= b;
+      ASSERT_EQ(c, a);
+    });
+  }
+};
+TEST(QInt32, AddAndSubtractWrapOrSaturate) { for_each_format<AddAndSubtractWrapOrSaturate>(); }
 
-TYPED_TEST(QInt32, MultiplyRoundsHalfUpThenWrapsOrSaturates) {
-  using Q = TypeParam;
-  for_pairs<Q>(2, [](Q a, Q b) {
-    const i128 exact = fxtest::round_half_up_shift(i128{a.raw()} * b.raw(), Q::frac_bits);
-    ASSERT_EQ((a * b).raw(), fxtest::wrapped<int32_t>(exact)) << a.raw() << " * " << b.raw();
-    ASSERT_EQ(mul_sat(a, b).raw(), fxtest::saturated<int32_t>(exact)) << a.raw() << " * " << b.raw();
-    Q c = a;
-    c *= b;
-    ASSERT_EQ(c, a * b);
-  });
-}
+struct MultiplyRoundsHalfUpThenWrapsOrSaturates {
+  template <typename Q>
+  static void run() {
+    for_pairs<Q>(2, [](Q a, Q b) {
+      const i128 exact = fxtest::round_half_up_shift(i128{a.raw()} * b.raw(), Q::frac_bits);
+      ASSERT_EQ((a * b).raw(), fxtest::wrapped<int32_t>(exact)) << a.raw() << " * " << b.raw();
+      ASSERT_EQ(mul_sat(a, b).raw(), fxtest::saturated<int32_t>(exact)) << a.raw() << " * " << b.raw();
+      Q c = a;
+      c *= b;
+      ASSERT_EQ(c, a * b);
+    });
+  }
+};
+TEST(QInt32, MultiplyRoundsHalfUpThenWrapsOrSaturates) { for_each_format<MultiplyRoundsHalfUpThenWrapsOrSaturates>(); }
 
-TYPED_TEST(QInt32, DivideRoundsHalfUpAndSaturatesIncludingByZero) {
-  using Q = TypeParam;
-  for_pairs<Q>(3, [](Q a, Q b) {
-    const int32_t expected =
-        b.raw() == 0 ? (a.raw() > 0 ? INT32_MAX : a.raw() < 0 ? INT32_MIN : 0)
-                     : fxtest::saturated<int32_t>(fxtest::round_half_up_div(i128{a.raw()} << Q::frac_bits, b.raw()));
-    ASSERT_EQ((a / b).raw(), expected) << a.raw() << " / " << b.raw();
-    ASSERT_EQ(div_sat(a, b).raw(), expected) << a.raw() << " / " << b.raw();
-    Q c = a;
-    c /= b;
-    ASSERT_EQ(c.raw(), expected);
-  });
-}
+struct DivideRoundsHalfUpAndSaturatesIncludingByZero {
+  template <typename Q>
+  static void run() {
+    for_pairs<Q>(3, [](Q a, Q b) {
+      const int32_t expected =
+          b.raw() == 0 ? (a.raw() > 0 ? INT32_MAX : a.raw() < 0 ? INT32_MIN : 0)
+                       : fxtest::saturated<int32_t>(fxtest::round_half_up_div(i128{a.raw()} << Q::frac_bits, b.raw()));
+      ASSERT_EQ((a / b).raw(), expected) << a.raw() << " / " << b.raw();
+      ASSERT_EQ(div_sat(a, b).raw(), expected) << a.raw() << " / " << b.raw();
+      Q c = a;
+      c /= b;
+      ASSERT_EQ(c.raw(), expected);
+    });
+  }
+};
+TEST(QInt32, DivideRoundsHalfUpAndSaturatesIncludingByZero) { for_each_format<DivideRoundsHalfUpAndSaturatesIncludingByZero>(); }
 
-TYPED_TEST(QInt32, TimesIntegerWrapsOrSaturates) {
-  using Q = TypeParam;
-  for_pairs<Q>(4, [](Q a, Q b) {
-    const int32_t n = b.raw();
-    const i128 exact = i128{a.raw()} * n;
-    ASSERT_EQ((a * n).raw(), fxtest::wrapped<int32_t>(exact)) << a.raw() << " * " << n;
-    ASSERT_EQ((n * a).raw(), fxtest::wrapped<int32_t>(exact)) << n << " * " << a.raw();
-    ASSERT_EQ(mul_sat(a, n).raw(), fxtest::saturated<int32_t>(exact)) << a.raw() << " * " << n;
-  });
-}
+struct TimesIntegerWrapsOrSaturates {
+  template <typename Q>
+  static void run() {
+    for_pairs<Q>(4, [](Q a, Q b) {
+      const int32_t n = b.raw();
+      const i128 exact = i128{a.raw()} * n;
+      ASSERT_EQ((a * n).raw(), fxtest::wrapped<int32_t>(exact)) << a.raw() << " * " << n;
+      ASSERT_EQ((n * a).raw(), fxtest::wrapped<int32_t>(exact)) << n << " * " << a.raw();
+      ASSERT_EQ(mul_sat(a, n).raw(), fxtest::saturated<int32_t>(exact)) << a.raw() << " * " << n;
+    });
+  }
+};
+TEST(QInt32, TimesIntegerWrapsOrSaturates) { for_each_format<TimesIntegerWrapsOrSaturates>(); }
 
-TYPED_TEST(QInt32, NegateAbsShiftCompare) {
-  using Q = TypeParam;
-  for_pairs<Q>(5, [](Q a, Q b) {
-    const i128 x = a.raw();
-    ASSERT_EQ((-a).raw(), fxtest::wrapped<int32_t>(-x));
-    ASSERT_EQ(neg_sat(a).raw(), fxtest::saturated<int32_t>(-x));
-    ASSERT_EQ(abs_sat(a).raw(), fxtest::saturated<int32_t>(x < 0 ? -x : x));
-    const int n = static_cast<int>(static_cast<uint32_t>(b.raw()) % 36) - 2;  // -2 .. 33
-    const int k = std::clamp(n, 0, 32);
-    ASSERT_EQ((a << n).raw(), fxtest::wrapped<int32_t>(x << k)) << a.raw() << " << " << n;
-    ASSERT_EQ(shl_sat(a, n).raw(), fxtest::saturated<int32_t>(x << k)) << a.raw() << " << " << n;
-    ASSERT_EQ((a >> n).raw(), static_cast<int32_t>(fxtest::floor_div(x, i128{1} << std::min(k, 31))))
-        << a.raw() << " >> " << n;
-    ASSERT_EQ(a == b, a.raw() == b.raw());
-    ASSERT_EQ(a != b, a.raw() != b.raw());
-    ASSERT_EQ(a < b, a.raw() < b.raw());
-    ASSERT_EQ(a <= b, a.raw() <= b.raw());
-    ASSERT_EQ(a > b, a.raw() > b.raw());
-    ASSERT_EQ(a >= b, a.raw() >= b.raw());
-  });
-}
+struct NegateAbsShiftCompare {
+  template <typename Q>
+  static void run() {
+    for_pairs<Q>(5, [](Q a, Q b) {
+      const i128 x = a.raw();
+      ASSERT_EQ((-a).raw(), fxtest::wrapped<int32_t>(-x));
+      ASSERT_EQ(neg_sat(a).raw(), fxtest::saturated<int32_t>(-x));
+      ASSERT_EQ(abs_sat(a).raw(), fxtest::saturated<int32_t>(x < 0 ? -x : x));
+      const int n = static_cast<int>(static_cast<uint32_t>(b.raw()) % 36) - 2;  // -2 .. 33
+      const int k = std::clamp(n, 0, 32);
+      ASSERT_EQ((a << n).raw(), fxtest::wrapped<int32_t>(x << k)) << a.raw() << " << " << n;
+      ASSERT_EQ(shl_sat(a, n).raw(), fxtest::saturated<int32_t>(x << k)) << a.raw() << " << " << n;
+      ASSERT_EQ((a >> n).raw(), static_cast<int32_t>(fxtest::floor_div(x, i128{1} << std::min(k, 31))))
+          << a.raw() << " >> " << n;
+      ASSERT_EQ(a == b, a.raw() == b.raw());
+      ASSERT_EQ(a != b, a.raw() != b.raw());
+      ASSERT_EQ(a < b, a.raw() < b.raw());
+      ASSERT_EQ(a <= b, a.raw() <= b.raw());
+      ASSERT_EQ(a > b, a.raw() > b.raw());
+      ASSERT_EQ(a >= b, a.raw() >= b.raw());
+    });
+  }
+};
+TEST(QInt32, NegateAbsShiftCompare) { for_each_format<NegateAbsShiftCompare>(); }
 
-TYPED_TEST(QInt32, IntegersInSaturatingAndOutRounded) {
-  using Q = TypeParam;
-  for_pairs<Q>(6, [](Q a, Q b) {
-    const int32_t n = b.raw();
-    ASSERT_EQ(Q::from_int(n).raw(), fxtest::saturated<int32_t>(i128{n} << Q::frac_bits)) << n;
-    ASSERT_EQ(a.to_int(), static_cast<int32_t>(fxtest::round_half_up_shift(a.raw(), Q::frac_bits))) << a.raw();
-  });
-}
+struct IntegersInSaturatingAndOutRounded {
+  template <typename Q>
+  static void run() {
+    for_pairs<Q>(6, [](Q a, Q b) {
+      const int32_t n = b.raw();
+      ASSERT_EQ(Q::from_int(n).raw(), fxtest::saturated<int32_t>(i128{n} << Q::frac_bits)) << n;
+      ASSERT_EQ(a.to_int(), static_cast<int32_t>(fxtest::round_half_up_shift(a.raw(), Q::frac_bits))) << a.raw();
+    });
+  }
+};
+TEST(QInt32, IntegersInSaturatingAndOutRounded) { for_each_format<IntegersInSaturatingAndOutRounded>(); }
 
 }  // namespace
