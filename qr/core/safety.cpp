@@ -22,16 +22,16 @@ constexpr const ModeRule& rule(Mode m) { return kModeRules[index(m)]; }
 
 // A request into a mode other than safe/panic must pass every guard, in this order.
 struct Guard {
-  Refusal reason;
+  NackReason reason;
   bool (*blocks)(Mode from, Mode to, const Situation& s, const SafetyLimits& l);
 };
 
 constexpr Guard kGuards[] = {
-    {Refusal::not_from_this_mode, [](Mode from, Mode, const Situation&, const SafetyLimits&) { return from != Mode::safe; }},
-    {Refusal::controls_not_neutral, [](Mode, Mode, const Situation& s, const SafetyLimits&) { return !s.controls.neutral(); }},
-    {Refusal::engines_running, [](Mode, Mode, const Situation& s, const SafetyLimits&) { return !s.engines.all_zero(); }},
-    {Refusal::not_calibrated, [](Mode, Mode to, const Situation& s, const SafetyLimits&) { return rule(to).needs_calibration && !s.calibrated; }},
-    {Refusal::battery_low, [](Mode, Mode, const Situation& s, const SafetyLimits& l) { return s.battery_mv < l.battery_panic_mv; }},
+    {NackReason::not_from_this_mode, [](Mode from, Mode, const Situation&, const SafetyLimits&) { return from != Mode::safe; }},
+    {NackReason::controls_not_neutral, [](Mode, Mode, const Situation& s, const SafetyLimits&) { return !s.controls.neutral(); }},
+    {NackReason::engines_running, [](Mode, Mode, const Situation& s, const SafetyLimits&) { return !s.engines.all_zero(); }},
+    {NackReason::not_calibrated, [](Mode, Mode to, const Situation& s, const SafetyLimits&) { return rule(to).needs_calibration && !s.calibrated; }},
+    {NackReason::battery_low, [](Mode, Mode, const Situation& s, const SafetyLimits& l) { return s.battery_mv < l.battery_panic_mv; }},
 };
 
 // Watchdogs that end a flight: each is checked every tick in the modes it applies to.
@@ -52,10 +52,10 @@ uint16_t scale(uint16_t v, uint32_t num, uint32_t den) {
 
 }  // namespace
 
-Refusal SafetyMachine::request(uint8_t wanted, const Situation& s) {
-  if (wanted >= kModeCount) return Refusal::unknown_mode;
+NackReason SafetyMachine::request(uint8_t wanted, const Situation& s) {
+  if (wanted >= kModeCount) return NackReason::unknown_mode;
   const Mode to = static_cast<Mode>(wanted);
-  if (to == mode_) return Refusal::none;
+  if (to == mode_) return NackReason::none;
 
   if (to == Mode::safe || to == Mode::panic) {
     if (rule(mode_).flying) {
@@ -63,14 +63,14 @@ Refusal SafetyMachine::request(uint8_t wanted, const Situation& s) {
     } else if (mode_ != Mode::panic) {
       mode_ = Mode::safe;  // engines are not turning: nothing to ramp down
     }
-    return Refusal::none;
+    return NackReason::none;
   }
 
   for (const Guard& g : kGuards) {
     if (g.blocks(mode_, to, s, limits_)) return g.reason;
   }
   mode_ = to;
-  return Refusal::none;
+  return NackReason::none;
 }
 
 void SafetyMachine::request_exit(const Situation& s) {

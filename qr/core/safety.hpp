@@ -6,7 +6,8 @@
 #include <stdint.h>
 
 #include <qr/core/board.hpp>
-#include <qr/core/mode.hpp>
+#include <common/mode.hpp>
+#include <common/nack_reason.hpp>
 
 namespace qr {
 
@@ -21,15 +22,11 @@ struct ControlInput {
   bool neutral() const { return lift == 0 && roll == 0 && pitch == 0 && yaw == 0; }
 };
 
-enum class Refusal : uint8_t {
-  none = 0,
-  not_from_this_mode,    // modes are entered from safe only
-  controls_not_neutral,
-  engines_running,
-  not_calibrated,
-  battery_low,
-  unknown_mode,
-};
+using wire::Mode;
+using wire::NackReason;  // the machine's refusals are the first reasons on the wire's list
+
+constexpr uint8_t index(Mode m) { return static_cast<uint8_t>(m); }
+inline constexpr uint8_t kModeCount = wire::kModeCount;
 
 enum class PanicCause : uint8_t { none = 0, requested, link_lost, battery_low, tilt };
 
@@ -68,7 +65,7 @@ class SafetyMachine {
 
   // A pilot's mode request. Safe and panic are always obeyed (a flight mode reaches safe
   // through panic); anything else is checked against the guard table.
-  Refusal request(uint8_t mode, const Situation& s);
+  NackReason request(uint8_t mode, const Situation& s);
   // Exit: to safe (through panic if flying), then stopped.
   void request_exit(const Situation& s);
   void calibration_finished();

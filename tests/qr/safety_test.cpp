@@ -7,7 +7,7 @@ namespace qr {
 namespace {
 
 constexpr uint8_t m(Mode mode) { return index(mode); }
-constexpr Mode kAllModes[] = {Mode::safe, Mode::panic, Mode::manual, Mode::calibration, Mode::yaw, Mode::full};
+constexpr Mode kAllModes[] = {Mode::safe, Mode::panic, Mode::manual, Mode::calibration, Mode::yaw_control, Mode::full_control};
 
 struct Safety : ::testing::Test {
   SafetyLimits limits;
@@ -28,10 +28,10 @@ struct Safety : ::testing::Test {
   void enter(Mode mode) {
     if (mode == Mode::panic) {
       enter(Mode::manual);
-      ASSERT_EQ(machine.request(m(Mode::panic), s), Refusal::none);
+      ASSERT_EQ(machine.request(m(Mode::panic), s), NackReason::none);
       return;
     }
-    ASSERT_EQ(machine.request(m(mode), s), Refusal::none);
+    ASSERT_EQ(machine.request(m(mode), s), NackReason::none);
     ASSERT_EQ(machine.mode(), mode);
   }
   void fly(uint16_t engines) {
@@ -66,8 +66,8 @@ TEST_F(Safety, SafeIsReachableFromEveryModeFlightModesThroughPanic) {
     at(1000);
     enter(mode);
     if (mode != Mode::calibration && mode != Mode::safe) fly(500);
-    EXPECT_EQ(machine.request(m(Mode::safe), s), Refusal::none);
-    const bool flying = mode == Mode::manual || mode == Mode::yaw || mode == Mode::full || mode == Mode::panic;
+    EXPECT_EQ(machine.request(m(Mode::safe), s), NackReason::none);
+    const bool flying = mode == Mode::manual || mode == Mode::yaw_control || mode == Mode::full_control || mode == Mode::panic;
     EXPECT_EQ(machine.mode(), flying ? Mode::panic : Mode::safe) << "from mode " << int(m(mode));
     run_for(limits.panic_hold_us + limits.panic_ramp_us + 1000);
     EXPECT_EQ(machine.mode(), Mode::safe) << "from mode " << int(m(mode));
@@ -76,35 +76,35 @@ TEST_F(Safety, SafeIsReachableFromEveryModeFlightModesThroughPanic) {
 
 // Rule 3
 TEST_F(Safety, LeavingSafeNeedsNeutralControls) {
-  for (Mode to : {Mode::manual, Mode::calibration, Mode::yaw, Mode::full}) {
+  for (Mode to : {Mode::manual, Mode::calibration, Mode::yaw_control, Mode::full_control}) {
     s.controls = ControlInput{};
     s.controls.roll = 5;
-    EXPECT_EQ(machine.request(m(to), s), Refusal::controls_not_neutral);
+    EXPECT_EQ(machine.request(m(to), s), NackReason::controls_not_neutral);
     s.controls = ControlInput{};
     s.controls.lift = 1;
-    EXPECT_EQ(machine.request(m(to), s), Refusal::controls_not_neutral);
+    EXPECT_EQ(machine.request(m(to), s), NackReason::controls_not_neutral);
     EXPECT_EQ(machine.mode(), Mode::safe);
   }
 }
 
 TEST_F(Safety, LeavingSafeNeedsEnginesAtZero) {
   s.engines.value[2] = 10;
-  EXPECT_EQ(machine.request(m(Mode::manual), s), Refusal::engines_running);
+  EXPECT_EQ(machine.request(m(Mode::manual), s), NackReason::engines_running);
   EXPECT_EQ(machine.mode(), Mode::safe);
 }
 
 // Rule 4
 TEST_F(Safety, CalibrationOnlyFromSafe) {
   enter(Mode::manual);
-  EXPECT_EQ(machine.request(m(Mode::calibration), s), Refusal::not_from_this_mode);
+  EXPECT_EQ(machine.request(m(Mode::calibration), s), NackReason::not_from_this_mode);
   EXPECT_EQ(machine.mode(), Mode::manual);
 }
 
 TEST_F(Safety, YawAndFullRefuseWithoutCalibration) {
   s.calibrated = false;
-  EXPECT_EQ(machine.request(m(Mode::yaw), s), Refusal::not_calibrated);
-  EXPECT_EQ(machine.request(m(Mode::full), s), Refusal::not_calibrated);
-  EXPECT_EQ(machine.request(m(Mode::manual), s), Refusal::none);
+  EXPECT_EQ(machine.request(m(Mode::yaw_control), s), NackReason::not_calibrated);
+  EXPECT_EQ(machine.request(m(Mode::full_control), s), NackReason::not_calibrated);
+  EXPECT_EQ(machine.request(m(Mode::manual), s), NackReason::none);
 }
 
 TEST_F(Safety, CalibrationReturnsToSafeWhenFinished) {
@@ -114,7 +114,7 @@ TEST_F(Safety, CalibrationReturnsToSafeWhenFinished) {
 }
 
 TEST_F(Safety, UnknownModeIsRefused) {
-  EXPECT_EQ(machine.request(kModeCount, s), Refusal::unknown_mode);
+  EXPECT_EQ(machine.request(kModeCount, s), NackReason::unknown_mode);
   EXPECT_EQ(machine.mode(), Mode::safe);
 }
 
@@ -129,7 +129,7 @@ TEST_F(Safety, EmergencyStopIsObeyedFromEveryMode) {
     enter(mode);
     fly(mode == Mode::calibration || mode == Mode::safe ? 0 : 700);
     s.controls.roll = 300;  // the pilot is mid-manoeuvre: panic does not care
-    EXPECT_EQ(machine.request(m(Mode::panic), s), Refusal::none);
+    EXPECT_EQ(machine.request(m(Mode::panic), s), NackReason::none);
     EXPECT_TRUE(machine.mode() == Mode::panic || machine.mode() == Mode::safe);
     const EngineCommand out = machine.limit_engines(s.engines, s);
     for (uint16_t v : out.value) EXPECT_LE(v, limits.panic_level) << "from mode " << int(m(mode));
@@ -142,7 +142,7 @@ TEST_F(Safety, PanicHoldsThenRampsToZeroThenSafeIgnoringControls) {
   enter(Mode::manual);
   fly(800);
   s.engines.value[3] = 200;  // an engine below the panic level stays where it was
-  ASSERT_EQ(machine.request(m(Mode::panic), s), Refusal::none);
+  ASSERT_EQ(machine.request(m(Mode::panic), s), NackReason::none);
 
   s.controls.lift = 1000;  // ignored from here on
   s.engines = machine.limit_engines(s.engines, s);
@@ -157,7 +157,7 @@ TEST_F(Safety, PanicHoldsThenRampsToZeroThenSafeIgnoringControls) {
   const uint16_t mid = machine.limit_engines(s.engines, s).value[0];
   EXPECT_GT(mid, 0);
   EXPECT_LT(mid, limits.panic_level);
-  EXPECT_EQ(machine.request(m(Mode::manual), s), Refusal::not_from_this_mode);
+  EXPECT_EQ(machine.request(m(Mode::manual), s), NackReason::not_from_this_mode);
 
   run_for(limits.panic_ramp_us / 2 + 1000);
   EXPECT_EQ(machine.mode(), Mode::safe);
@@ -185,16 +185,16 @@ TEST_F(Safety, LinkLossInSafeStaysSafe) {
 // Rule 8
 TEST_F(Safety, BatteryLowPanicsAndWarnsBefore) {
   at(1000);
-  enter(Mode::full);
+  enter(Mode::full_control);
   fly(500);
   s.battery_mv = limits.battery_warn_mv - 1;
   run_for(1000);
   EXPECT_TRUE(machine.battery_warning());
-  EXPECT_EQ(machine.mode(), Mode::full);
+  EXPECT_EQ(machine.mode(), Mode::full_control);
 
   s.battery_mv = limits.battery_panic_mv - 1;
   run_for(limits.battery_trip_us / 2);  // a short dip under load is not a panic
-  EXPECT_EQ(machine.mode(), Mode::full);
+  EXPECT_EQ(machine.mode(), Mode::full_control);
   run_for(limits.battery_trip_us);
   EXPECT_EQ(machine.mode(), Mode::panic);
   EXPECT_EQ(machine.panic_cause(), PanicCause::battery_low);
@@ -202,12 +202,12 @@ TEST_F(Safety, BatteryLowPanicsAndWarnsBefore) {
 
 TEST_F(Safety, LowBatteryRefusesToLeaveSafe) {
   s.battery_mv = limits.battery_panic_mv - 1;
-  EXPECT_EQ(machine.request(m(Mode::manual), s), Refusal::battery_low);
+  EXPECT_EQ(machine.request(m(Mode::manual), s), NackReason::battery_low);
 }
 
 // Rule 9
 TEST_F(Safety, TiltBeyondLimitPanicsInYawAndFull) {
-  for (Mode mode : {Mode::yaw, Mode::full}) {
+  for (Mode mode : {Mode::yaw_control, Mode::full_control}) {
     SafetyMachine fresh{limits};
     machine = fresh;
     s.controls = ControlInput{};
@@ -237,7 +237,7 @@ TEST_F(Safety, TiltDoesNotPanicManual) {
 
 // Rule 10
 TEST_F(Safety, NoEngineStallsWhileLiftIsAboveZero) {
-  for (Mode mode : {Mode::manual, Mode::yaw, Mode::full}) {
+  for (Mode mode : {Mode::manual, Mode::yaw_control, Mode::full_control}) {
     SafetyMachine fresh{limits};
     machine = fresh;
     s.controls = ControlInput{};
@@ -265,7 +265,7 @@ TEST_F(Safety, ExitGoesToSafeThenStops) {
 
 TEST_F(Safety, ExitWhileFlyingGoesThroughPanic) {
   at(1000);
-  enter(Mode::full);
+  enter(Mode::full_control);
   fly(600);
   machine.request_exit(s);
   EXPECT_EQ(machine.mode(), Mode::panic);
