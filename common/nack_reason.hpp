@@ -17,6 +17,7 @@ enum class NackReason : uint8_t {
   bad_value = 7,          // a field out of its range (e.g. a parameter value outside the table's range)
   unknown_parameter = 8,  // no parameter with that id
   busy = 9,               // e.g. a log download while logging
+  not_supported = 10,     // a request this firmware does not carry out
 };
 
 struct NackReasonSpec {
@@ -35,6 +36,7 @@ inline constexpr NackReasonSpec kNackReasons[] = {
     {NackReason::bad_value, "bad_value", "value out of range"},
     {NackReason::unknown_parameter, "unknown_parameter", "no such parameter"},
     {NackReason::busy, "busy", "busy, try again later"},
+    {NackReason::not_supported, "not_supported", "not supported by this firmware"},
 };
 
 constexpr const NackReasonSpec* find_nack_reason(NackReason reason) {

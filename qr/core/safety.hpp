@@ -62,6 +62,7 @@ class SafetyMachine {
   PanicCause panic_cause() const { return panic_cause_; }
   bool battery_warning() const { return battery_warning_; }
   SafetyLimits& limits() { return limits_; }
+  const SafetyLimits& limits() const { return limits_; }
 
   // A pilot's mode request. Safe and panic are always obeyed (a flight mode reaches safe
   // through panic); anything else is checked against the guard table.

@@ -12,6 +12,7 @@
 //   uint32_t rx_space() const;  void receive(uint8_t);      bytes from the serial line
 //   bool tx_peek(uint8_t&) const;  void tx_pop();            bytes for the serial line
 //   EngineCommand engines() const;  uint8_t leds() const;  bool running() const;
+//   void account(const TickReport&);                         timing of the tick just finished
 #pragma once
 
 #include <stdint.h>
@@ -28,6 +29,13 @@ struct SchedulerLimits {
   // per tick keep up at 1 kHz and 500 Hz while no tick ever sees a burst of link work.
   uint16_t rx_bytes_per_tick = 32;
   uint16_t tx_bytes_per_tick = 16;
+};
+
+// What the context learns about each finished tick (for telemetry).
+struct TickReport {
+  uint32_t busy_us = 0;
+  uint32_t deadline_misses = 0;
+  uint16_t cpu_load_permille = 0;
 };
 
 template <uint8_t TaskCount>
@@ -107,7 +115,8 @@ class Scheduler {
     }
 
     const uint32_t end_us = board_.now_us();
-    window_busy_us_ += end_us - start_us;
+    const uint32_t busy_us = end_us - start_us;
+    window_busy_us_ += busy_us;
     const uint32_t window_us = end_us - window_start_us_;
     if (window_us >= 1000000u) {
       stats_.cpu_load_permille = static_cast<uint16_t>(
@@ -116,6 +125,7 @@ class Scheduler {
       window_start_us_ = end_us;
     }
 
+    context_.account(TickReport{busy_us, stats_.deadline_misses, stats_.cpu_load_permille});
     next_set_ = context_.task_set();
   }
 

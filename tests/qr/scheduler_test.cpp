@@ -40,6 +40,8 @@ struct TestContext {
   EngineCommand engines() const { return {}; }
   uint8_t leds() const { return 0; }
   bool running() const { return true; }
+  void account(const TickReport& r) { last_report = r; }
+  TickReport last_report;
 
   void work(int id) {
     ++runs[id];
@@ -69,6 +71,7 @@ TEST_F(SchedulerTest, OverrunCountsOneMissAndNextPeriodStartsOnTime) {
   for (int i = 0; i < 10; ++i) scheduler.tick();
 
   EXPECT_EQ(scheduler.stats().deadline_misses, 1u);
+  EXPECT_EQ(context.last_report.deadline_misses, 1u);
   ASSERT_EQ(board.kick_times_us.size(), 10u);
   // Ticks 1..6 start at kicks 1..6; kick 7 fell inside tick 6 and is skipped; tick 7 starts
   // exactly on kick 8, and every later tick stays on the period grid.

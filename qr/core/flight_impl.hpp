@@ -1,0 +1,198 @@
+// Member definitions of qr::Flight (a template, so they live in a header). Include flight.hpp.
+#pragma once
+
+#include <qr/core/flight.hpp>
+
+namespace qr {
+
+// Rows in FlightTask order (flight_tasks.hpp).
+template <class Chain>
+const Task<Flight<Chain>> Flight<Chain>::kTasks[kFlightTaskCount] = {
+    {"link", [](Flight& f) { f.run_link(); }, 1},
+    {"filter", [](Flight& f) { f.run_filter(); }, 1},
+    {"calibration", [](Flight& f) { f.run_calibration(); }, 1},
+    {"estimator", [](Flight& f) { f.run_estimator(); }, 1},
+    {"attitude", [](Flight& f) { f.run_attitude_control(); }, 1},
+    {"yaw", [](Flight& f) { f.run_yaw_control(); }, 1},
+    {"mixer", [](Flight& f) { f.run_mixer(); }, 1},
+    {"manual", [](Flight& f) { f.run_manual_mixer(); }, 1},
+    {"safety", [](Flight& f) { f.run_safety(); }, 1},
+    {"telemetry", [](Flight& f) { f.run_telemetry(); }, 1},
+};
+
+namespace flight_text {
+inline constexpr const char* kModeNames[wire::kModeCount] = {"safe", "panic", "manual", "calibration", "yaw control", "full control"};
+inline constexpr const char* kPanicCauses[] = {"", "requested", "link lost", "battery low", "tilt"};
+}  // namespace flight_text
+
+// Applies one decoded message from the PC; for requests, `answer` is what the ack/nack says.
+template <class Chain>
+struct Flight<Chain>::RequestHandler {
+  Flight& f;
+  NackReason answer = NackReason::none;
+
+  void operator()(const wire::Control& c) { f.controls_ = ControlInput{c.lift, c.roll, c.pitch, c.yaw}; }
+  void operator()(const wire::ModeChange& m) {
+    answer = f.safety_.request(static_cast<uint8_t>(m.mode), f.situation());
+  }
+  void operator()(const wire::ParamSet& p) {
+    answer = f.params_.set(p.id, p.value);
+    if (answer == NackReason::none) f.apply_parameters();
+  }
+  void operator()(const wire::ParamGet& g) {
+    if (g.id == wire::kAllParameters) {
+      f.report_next_ = 0;
+      f.report_end_ = static_cast<uint8_t>(wire::kParameterCount);
+      return;
+    }
+    for (uint8_t row = 0; row < wire::kParameterCount; ++row) {
+      if (static_cast<uint8_t>(wire::kParameterTable[row].id) == g.id) {
+        f.report_next_ = row;
+        f.report_end_ = static_cast<uint8_t>(row + 1);
+        return;
+      }
+    }
+    answer = NackReason::unknown_parameter;
+  }
+  void operator()(const wire::Exit&) { f.safety_.request_exit(f.situation()); }
+};
+
+template <class Chain>
+void Flight<Chain>::run_link() {
+  uint8_t byte = 0;
+  while (rx_.pop(byte)) {
+    last_byte_us_ = tick_us_;
+    parser_.push(byte, [this](const wire::Frame& frame) { on_frame(frame); });
+  }
+  // A frame's bytes come within a millisecond; after 50 ms of silence what the parser holds is
+  // the start of a frame whose sender stopped (docs/protocol.md, section 4).
+  if (parser_.buffered() != 0 && tick_us_ - last_byte_us_ > 50000u) parser_.line_idle();
+
+  chain_.set_pilot(controls_);
+
+  // Parameter reports owed to a param_get: one per tick, so a full report never crowds out
+  // telemetry or replies.
+  if (report_next_ < report_end_ && tx_.space() >= wire::kMaxFrameBytes) {
+    const wire::ParameterSpec& spec = wire::kParameterTable[report_next_++];
+    send(wire::encode(wire::ParamReport{static_cast<uint8_t>(spec.id), params_.get(spec.id)}));
+  }
+}
+
+template <class Chain>
+void Flight<Chain>::on_frame(const wire::Frame& frame) {
+  last_frame_us_ = tick_us_;  // any frame that passed its check proves the link alive
+  const wire::Admission admission = dedup_.admit(frame, uptime_ms_);
+  if (admission.duplicate) {
+    send(wire::reply_frame(frame.type, admission.seq, admission.previous));
+    return;
+  }
+  RequestHandler handler{*this};
+  const wire::DispatchResult result = wire::dispatch(frame, handler);
+  if (!admission.request) return;  // control: periodic, never answered
+
+  const NackReason answer = result == wire::DispatchResult::handled           ? handler.answer
+                            : result == wire::DispatchResult::invalid_payload ? NackReason::bad_value
+                                                                              : NackReason::not_supported;
+  dedup_.record(frame, answer, uptime_ms_);
+  send(wire::reply_frame(frame.type, admission.seq, answer));
+}
+
+template <class Chain>
+void Flight<Chain>::run_safety() {
+  const Situation s = situation();
+  safety_.supervise(s);
+  engines_ = safety_.limit_engines(wanted_, s);
+
+  const Mode now = safety_.mode();
+  if (now == announced_mode_) return;
+  announced_mode_ = now;
+  say("mode: ");
+  say(flight_text::kModeNames[index(now)]);
+  if (now == Mode::panic) {
+    say(" (");
+    say(flight_text::kPanicCauses[static_cast<uint8_t>(safety_.panic_cause())]);
+    say(")");
+  }
+  say("\n");
+}
+
+template <class Chain>
+void Flight<Chain>::run_telemetry() {
+  if (++telemetry_count_ < telemetry_divider_) return;
+  telemetry_count_ = 0;
+
+  uint8_t flags = 0;
+  if (chain_.calibrated()) flags |= wire::kFlagCalibrated;
+  if (safety_.battery_warning()) flags |= wire::kFlagBatteryWarning;
+  send(wire::encode(wire::TelemetryAttitude{telemetry_seq_++, safety_.mode(), flags, chain_.roll_e4(),
+                                            chain_.pitch_e4(), chain_.yaw_e4()}));
+  send(wire::encode(wire::TelemetryRates{chain_.p_e3(), chain_.q_e3(), chain_.r_e3()}));
+  send_slow_group();
+}
+
+// Engines, set-points, system and link take turns, each at a quarter of the telemetry rate.
+template <class Chain>
+void Flight<Chain>::send_slow_group() {
+  const uint8_t group = slow_group_;
+  slow_group_ = static_cast<uint8_t>((slow_group_ + 1) & 3u);
+  if (group == 0) {
+    wire::TelemetryEngines m;
+    for (int i = 0; i < 4; ++i) m.engine[i] = engines_.value[i];
+    send(wire::encode(m));
+  } else if (group == 1) {
+    send(wire::encode(wire::TelemetrySetpoints{controls_.lift, chain_.roll_setpoint_e4(),
+                                               chain_.pitch_setpoint_e4(), chain_.yaw_rate_setpoint_e3()}));
+  } else if (group == 2) {
+    const uint16_t loop = loop_time_us_ > 0xFFFFu ? uint16_t{0xFFFF} : static_cast<uint16_t>(loop_time_us_);
+    loop_time_us_ = 0;
+    send(wire::encode(wire::TelemetrySystem{sample_.battery_mv, cpu_load_permille_, loop,
+                                            static_cast<uint16_t>(deadline_misses_)}));
+  } else {
+    const wire::LinkCounters& c = parser_.counters();
+    send(wire::encode(wire::TelemetryLink{static_cast<uint16_t>(c.frames_ok), static_cast<uint16_t>(c.check_failures),
+                                          static_cast<uint16_t>(c.unknown_types),
+                                          static_cast<uint16_t>(c.bytes_skipped)}));
+  }
+}
+
+template <class Chain>
+void Flight<Chain>::apply_parameters() {
+  using wire::ParamId;
+  const auto get = [this](ParamId id) { return static_cast<uint32_t>(params_.get(id)); };
+  SafetyLimits& l = safety_.limits();
+  l.link_timeout_us = get(ParamId::link_timeout_ms) * 1000u;
+  l.battery_warn_mv = static_cast<uint16_t>(get(ParamId::battery_warning_mv));
+  l.battery_panic_mv = static_cast<uint16_t>(get(ParamId::battery_panic_mv));
+  l.tilt_limit_mrad = static_cast<int32_t>(get(ParamId::tilt_limit));
+  l.panic_level = static_cast<uint16_t>(get(ParamId::panic_level));
+  l.panic_hold_us = get(ParamId::panic_hold_ms) * 1000u;
+  l.panic_ramp_us = get(ParamId::panic_ramp_ms) * 1000u;
+  l.idle = static_cast<uint16_t>(get(ParamId::idle_level));
+  telemetry_divider_ = divider_for(get(ParamId::telemetry_rate_hz));
+  chain_.set_parameters(params_);
+}
+
+template <class Chain>
+uint8_t Flight<Chain>::leds() const {
+  // One LED per state the pilot must see at a glance: safe, panic, flying, battery warning.
+  const Mode m = safety_.mode();
+  const bool flying = m == Mode::manual || m == Mode::yaw_control || m == Mode::full_control;
+  return static_cast<uint8_t>((m == Mode::safe ? 1u : 0u) | (m == Mode::panic ? 2u : 0u) | (flying ? 4u : 0u) |
+                              (safety_.battery_warning() ? 8u : 0u));
+}
+
+template <class Chain>
+void Flight<Chain>::send(const wire::FrameBytes& frame) {
+  if (!tx_.push(frame.bytes, frame.size)) ++tx_dropped_;
+}
+
+template <class Chain>
+void Flight<Chain>::say(const char* text) {
+  while (*text != '\0') {
+    wire::DebugText piece;
+    text += piece.fill(text, wire::kDebugTextChars);
+    send(wire::encode(piece));
+  }
+}
+
+}  // namespace qr

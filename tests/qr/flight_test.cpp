@@ -1,0 +1,249 @@
+// The flight context end to end on the fake board: frames in through the serial line, acks,
+// telemetry and engine values out, with a scripted signal chain.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include <common/messages.hpp>
+#include <qr/boards/fake/fake_board.hpp>
+#include <qr/core/flight.hpp>
+#include <qr/core/scheduler.hpp>
+
+#include "scripted_chain.hpp"
+
+namespace qr {
+namespace {
+
+using fake::FakeBoard;
+using test::ScriptedChain;
+using Firmware = Flight<ScriptedChain>;
+
+struct FlightTest : ::testing::Test {
+  FakeBoard board;
+  Firmware flight;
+  Scheduler<FakeBoard, Firmware> scheduler{board, flight};
+  wire::FrameParser pc{wire::Listen::qr_to_pc};
+  std::vector<wire::Frame> received;
+  wire::Control sticks;
+  uint8_t seq = 0;
+
+  FlightTest() { board.sensors.battery_mv = 12000; }
+
+  template <class M>
+  void send(const M& m) {
+    const wire::FrameBytes f = wire::encode(m);
+    board.rx.insert(board.rx.end(), f.bytes, f.bytes + f.size);
+  }
+  uint8_t request_mode(Mode mode) {
+    send(wire::ModeChange{++seq, mode});
+    return seq;
+  }
+  // Runs for `ms` with the console's heartbeat: a control frame every 20 ms.
+  void run_ms(uint32_t ms, bool heartbeat = true) {
+    for (uint32_t t = 0; t < ms; ++t) {
+      if (heartbeat && t % 20 == 0) send(sticks);
+      for (uint32_t i = 0; i < 1000 / kPeriodUs; ++i) scheduler.tick();
+      for (uint8_t b : board.tx) pc.push(b, [&](const wire::Frame& f) { received.push_back(f); });
+      board.tx.clear();
+    }
+  }
+  template <class M>
+  std::vector<M> got() const {
+    std::vector<M> out;
+    for (const wire::Frame& f : received) {
+      M m;
+      if (f.type == M::kType && wire::decode(f, m)) out.push_back(m);
+    }
+    return out;
+  }
+  std::string debug_text() const {
+    std::string s;
+    for (const auto& d : got<wire::DebugText>()) s.append(d.text, d.length());
+    return s;
+  }
+  void calibrate() {
+    request_mode(Mode::calibration);
+    run_ms(50);
+    ASSERT_EQ(flight.mode(), Mode::safe) << "calibration returns to safe when done";
+  }
+};
+
+TEST_F(FlightTest, StartsInSafeAndStreamsTelemetryAtTheParameterRate) {
+  run_ms(1000);
+  EXPECT_EQ(flight.mode(), Mode::safe);
+  const auto attitude = got<wire::TelemetryAttitude>();
+  const auto rate = wire::kParameterTable[static_cast<int>(wire::ParamId::telemetry_rate_hz) - 1].default_value;
+  EXPECT_NEAR(static_cast<double>(attitude.size()), rate, 1.0);
+  ASSERT_FALSE(attitude.empty());
+  EXPECT_EQ(attitude.back().phi, 123);
+  EXPECT_EQ(attitude.back().mode, Mode::safe);
+  // The rates frame follows the attitude frame; the last one may still be on its way.
+  EXPECT_NEAR(static_cast<double>(got<wire::TelemetryRates>().size()), static_cast<double>(attitude.size()), 1.0);
+  EXPECT_NEAR(static_cast<double>(got<wire::TelemetrySystem>().size()), rate / 4.0, 1.0);
+  EXPECT_EQ(got<wire::TelemetrySystem>().back().battery_mv, 12000);
+  EXPECT_EQ(flight.tx_dropped_frames(), 0u);
+}
+
+TEST_F(FlightTest, ModeChangeIsAckedWithItsSequenceNumberAndApplied) {
+  const uint8_t s = request_mode(Mode::manual);
+  run_ms(5);
+  EXPECT_EQ(flight.mode(), Mode::manual);
+  const auto acks = got<wire::Ack>();
+  ASSERT_EQ(acks.size(), 1u);
+  EXPECT_EQ(acks[0].type, wire::MessageType::mode_change);
+  EXPECT_EQ(acks[0].seq, s);
+  EXPECT_NE(debug_text().find("mode: manual\n"), std::string::npos);
+}
+
+TEST_F(FlightTest, RefusedModeChangeIsNackedWithTheSafetyReason) {
+  sticks.lift = 100;
+  run_ms(30);
+  request_mode(Mode::manual);
+  run_ms(5);
+  EXPECT_EQ(flight.mode(), Mode::safe);
+  const auto nacks = got<wire::Nack>();
+  ASSERT_EQ(nacks.size(), 1u);
+  EXPECT_EQ(nacks[0].reason, wire::NackReason::controls_not_neutral);
+}
+
+TEST_F(FlightTest, FullControlNeedsCalibrationThroughTheLink) {
+  request_mode(Mode::full_control);
+  run_ms(5);
+  ASSERT_EQ(got<wire::Nack>().size(), 1u);
+  EXPECT_EQ(got<wire::Nack>()[0].reason, wire::NackReason::not_calibrated);
+  calibrate();
+  request_mode(Mode::full_control);
+  run_ms(5);
+  EXPECT_EQ(flight.mode(), Mode::full_control);
+}
+
+TEST_F(FlightTest, ResentRequestIsAnsweredAgainButAppliedOnce) {
+  const wire::ModeChange to_manual{7, Mode::manual};
+  send(to_manual);
+  run_ms(5);
+  ASSERT_EQ(flight.mode(), Mode::manual);
+  sticks.lift = 300;
+  run_ms(40);
+  // The ack was lost and the link dropped out long enough to panic. When it comes back, the
+  // console's resend of the same request arrives: answered as before, not applied again (applied,
+  // it would be refused now, in panic).
+  run_ms(300, false);
+  ASSERT_EQ(flight.mode(), Mode::panic);
+  send(to_manual);
+  run_ms(5);
+  EXPECT_EQ(flight.mode(), Mode::panic);
+  EXPECT_TRUE(got<wire::Nack>().empty());
+  const auto acks = got<wire::Ack>();
+  ASSERT_EQ(acks.size(), 2u);
+  EXPECT_EQ(acks[1].seq, 7);
+}
+
+TEST_F(FlightTest, EnginesFollowTheMixerInManualAndStayZeroInSafe) {
+  sticks.lift = 400;
+  run_ms(30);
+  EXPECT_TRUE(board.engines.all_zero()) << "safe: engines zero whatever the sticks say";
+  sticks.lift = 0;
+  run_ms(30);
+  request_mode(Mode::manual);
+  run_ms(5);
+  ASSERT_EQ(flight.mode(), Mode::manual);
+  sticks.lift = 400;
+  run_ms(30);
+  for (uint16_t v : board.engines.value) EXPECT_EQ(v, 400);
+  sticks.lift = 20;  // below idle: the safety machine keeps the engines turning
+  run_ms(30);
+  for (uint16_t v : board.engines.value) EXPECT_EQ(v, flight.safety().limits().idle);
+}
+
+TEST_F(FlightTest, LinkLossInFlightPanicsThenSettlesInSafe) {
+  request_mode(Mode::manual);
+  run_ms(5);
+  sticks.lift = 500;
+  run_ms(100);
+  run_ms(260, false);  // the console goes quiet
+  EXPECT_EQ(flight.mode(), Mode::panic);
+  EXPECT_NE(debug_text().find("mode: panic (link lost)\n"), std::string::npos);
+  EXPECT_EQ(board.engines.value[0], flight.safety().limits().panic_level);
+  run_ms(3100, false);
+  EXPECT_EQ(flight.mode(), Mode::safe);
+  EXPECT_TRUE(board.engines.all_zero());
+}
+
+TEST_F(FlightTest, TiltFromTheEstimatorPanicsFullControl) {
+  calibrate();
+  request_mode(Mode::full_control);
+  run_ms(5);
+  sticks.lift = 500;
+  run_ms(50);
+  flight.chain().tilt = flight.safety().limits().tilt_limit_mrad + 1;
+  run_ms(5);
+  EXPECT_EQ(flight.mode(), Mode::panic);
+}
+
+TEST_F(FlightTest, TaskSetsFollowTheMode) {
+  run_ms(10);
+  EXPECT_EQ(flight.chain().attitude_controlled, 0u);
+  calibrate();
+  request_mode(Mode::yaw_control);
+  run_ms(10);
+  EXPECT_GT(flight.chain().yaw_controlled, 0u);
+  EXPECT_EQ(flight.chain().attitude_controlled, 0u);
+  request_mode(Mode::safe);
+  run_ms(3100);
+  request_mode(Mode::full_control);
+  run_ms(10);
+  EXPECT_EQ(flight.mode(), Mode::full_control);
+  EXPECT_GT(flight.chain().attitude_controlled, 0u);
+}
+
+TEST_F(FlightTest, ParameterSetIsRangeCheckedAppliedAndReported) {
+  send(wire::ParamSet{++seq, static_cast<uint8_t>(wire::ParamId::link_timeout_ms), 500});
+  send(wire::ParamSet{++seq, static_cast<uint8_t>(wire::ParamId::link_timeout_ms), 5});  // below range
+  send(wire::ParamSet{++seq, 200, 1});                                                  // no such id
+  run_ms(5);
+  EXPECT_EQ(flight.safety().limits().link_timeout_us, 500000u);
+  ASSERT_EQ(got<wire::Ack>().size(), 1u);
+  const auto nacks = got<wire::Nack>();
+  ASSERT_EQ(nacks.size(), 2u);
+  EXPECT_EQ(nacks[0].reason, wire::NackReason::bad_value);
+  EXPECT_EQ(nacks[1].reason, wire::NackReason::unknown_parameter);
+
+  send(wire::ParamGet{++seq, wire::kAllParameters});
+  run_ms(50);
+  const auto reports = got<wire::ParamReport>();
+  ASSERT_EQ(reports.size(), wire::kParameterCount);
+  for (const auto& r : reports) {
+    if (r.id == static_cast<uint8_t>(wire::ParamId::link_timeout_ms)) EXPECT_EQ(r.value, 500);
+  }
+}
+
+TEST_F(FlightTest, RequestsThisFirmwareDoesNotCarryOutAreNackedNotIgnored) {
+  send(wire::LogStart{++seq, wire::kLogSensor});
+  run_ms(5);
+  const auto nacks = got<wire::Nack>();
+  ASSERT_EQ(nacks.size(), 1u);
+  EXPECT_EQ(nacks[0].type, wire::MessageType::log_start);
+  EXPECT_EQ(nacks[0].reason, wire::NackReason::not_supported);
+}
+
+TEST_F(FlightTest, ExitIsConfirmedThenTheFirmwareStops) {
+  send(wire::Exit{++seq});
+  for (int i = 0; i < 100 && flight.running(); ++i) run_ms(1);
+  EXPECT_FALSE(flight.running());
+  EXPECT_EQ(flight.mode(), Mode::safe);
+  const auto acks = got<wire::Ack>();
+  ASSERT_EQ(acks.size(), 1u);
+  EXPECT_EQ(acks[0].type, wire::MessageType::exit);
+}
+
+TEST_F(FlightTest, GarbageOnTheLineIsCountedAndTheNextFrameStillWorks) {
+  for (int i = 0; i < 200; ++i) board.rx.push_back(static_cast<uint8_t>(i * 37 + 11));
+  request_mode(Mode::manual);
+  run_ms(30);
+  EXPECT_EQ(flight.mode(), Mode::manual);
+  EXPECT_GT(flight.link_counters().bytes_skipped, 0u);
+}
+
+}  // namespace
+}  // namespace qr

@@ -1,0 +1,62 @@
+// A signal chain for firmware tests: it does what the test sets, so the tests exercise the
+// flight context (link, safety, telemetry, task sets) without the physics of a real chain.
+#pragma once
+
+#include <stdint.h>
+
+#include <common/parameter_table.hpp>
+#include <qr/core/board.hpp>
+#include <qr/core/safety.hpp>
+
+namespace qr::test {
+
+struct ScriptedChain {
+  // Scripted behaviour
+  uint32_t calibration_samples = 10;
+  int32_t tilt = 0;
+
+  // What the firmware did to it
+  uint32_t filtered = 0;
+  uint32_t estimated = 0;
+  uint32_t yaw_controlled = 0;
+  uint32_t attitude_controlled = 0;
+  uint32_t parameter_updates = 0;
+  int32_t yaw_p = 0;
+  ControlInput pilot;
+
+  void set_parameters(const wire::ParameterValues& p) {
+    ++parameter_updates;
+    yaw_p = p.get(wire::ParamId::yaw_p);
+  }
+  void set_pilot(const ControlInput& c) { pilot = c; }
+  void filter(const SensorSample&) { ++filtered; }
+  bool calibrate() {
+    if (calibration_count_ < calibration_samples) ++calibration_count_;
+    return calibrated();
+  }
+  bool calibrated() const { return calibration_count_ >= calibration_samples; }
+  void estimate() { ++estimated; }
+  void control_yaw() { ++yaw_controlled; }
+  void control_attitude() { ++attitude_controlled; }
+  // Every engine at the lift stick: enough to see that the mixer ran and what the safety
+  // machine then did with it.
+  EngineCommand mix() const { return all(pilot.lift); }
+  EngineCommand mix_manual() const { return all(pilot.lift); }
+
+  int16_t roll_e4() const { return 123; }
+  int16_t pitch_e4() const { return -45; }
+  int16_t yaw_e4() const { return 6; }
+  int16_t p_e3() const { return 7; }
+  int16_t q_e3() const { return 8; }
+  int16_t r_e3() const { return 9; }
+  int16_t roll_setpoint_e4() const { return 0; }
+  int16_t pitch_setpoint_e4() const { return 0; }
+  int16_t yaw_rate_setpoint_e3() const { return 0; }
+  int32_t tilt_mrad() const { return tilt; }
+
+ private:
+  static EngineCommand all(uint16_t v) { return EngineCommand{{v, v, v, v}}; }
+  uint32_t calibration_count_ = 0;
+};
+
+}  // namespace qr::test
