@@ -1,0 +1,32 @@
+// The ground: a flat plane at world z = 0 (NED, so anything with z > 0 is below it), met by
+// a handful of points on the airframe, each a stiff spring-damper that can push but never pull,
+// with Coulomb friction. Penalty contact rather than a constraint solver: a point sinks a fraction
+// of a millimetre at rest, and the same few lines handle resting, landing, tipping over and a
+// crash on the arms, with nothing to converge. The points are the four feet, the four motor
+// hubs and the top of the battery, so in any orientation something lies between the centre of
+// mass and the ground.
+#pragma once
+
+#include <array>
+
+#include <sim/quaternion.hpp>
+#include <sim/vehicle.hpp>
+#include <sim/wrench.hpp>
+
+namespace sim {
+
+inline constexpr int kContactPoints = 9;
+
+std::array<Vec3, kContactPoints> contact_points(const VehicleParams& vehicle);
+
+struct ContactResult {
+  Wrench wrench;             // on the airframe, body axes
+  double deepest_m = 0;      // how far the lowest point is below the ground (<= 0: above)
+  bool touching = false;
+};
+
+ContactResult ground_contact(const VehicleParams& vehicle, const std::array<Vec3, kContactPoints>& points,
+                             const Vec3& position, const Vec3& velocity, const Quat& attitude,
+                             const Vec3& body_rate);
+
+}  // namespace sim

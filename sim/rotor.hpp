@@ -1,0 +1,46 @@
+// One rotor on its motor: where it sits, which way it spins, how its speed follows the engine
+// command, and what it does to the airframe. Layout and signs from docs/conventions.md: engines
+// 0 front, 1 right, 2 back, 3 left; front and back spin clockwise seen from above (their angular
+// velocity points along body +z, down), left and right counter-clockwise.
+#pragma once
+
+#include <array>
+
+#include <sim/vehicle.hpp>
+#include <sim/wrench.hpp>
+
+namespace sim {
+
+inline constexpr int kRotorCount = 4;
+
+struct RotorGeometry {
+  Vec3 hub;     // body frame, from the centre of mass
+  double spin;  // +1 clockwise seen from above (angular velocity along +z), -1 counter-clockwise
+};
+
+std::array<RotorGeometry, kRotorCount> rotor_geometry(const VehicleParams& vehicle);
+
+// The speed the motor settles at for `command` (0..1000) with `volts` across the ESC: the
+// command is a share of full speed, full speed is proportional to the voltage (docs/conventions.md:
+// commands are proportional to rotor speed).
+double motor_target_speed(const VehicleParams& vehicle, double command, double volts);
+
+// First-order lag toward the target, faster up than down: the ESC drives the motor up, but only
+// the prop's drag slows it down.
+double motor_acceleration(const VehicleParams& vehicle, double speed, double target);
+
+// Everything one rotor does to the airframe at rotor speed `speed` (rad/s, >= 0), changing at
+// `speed_rate`, with the airframe turning at `body_rate` and the hub moving through the air at
+// `hub_air_velocity` (body frame):
+//   thrust k_f ω² along -z at the hub;
+//   drag reaction torque -spin k_m ω² about z (a clockwise rotor pushes the body anticlockwise);
+//   reaction to the motor accelerating the rotor, -spin J dω/dt about z;
+//   gyroscopic torque of the rotor's angular momentum, -body_rate x (spin J ω z);
+//   in-plane rotor drag -c ω v_inplane at the hub (induced drag and blade flapping).
+Wrench rotor_wrench(const VehicleParams& vehicle, const RotorGeometry& rotor, double speed, double speed_rate,
+                    const Vec3& body_rate, const Vec3& hub_air_velocity);
+
+// Shaft power the motor delivers to the rotor in steady rotation, W.
+double rotor_shaft_power(const VehicleParams& vehicle, double speed);
+
+}  // namespace sim
