@@ -1,0 +1,52 @@
+// The world the host firmware flies in: the plant, its sensors and a clock in whole
+// microseconds. Time only moves through advance_to(), in fixed physics steps, so the same seed
+// and the same engine commands at the same times give the same flight, bit for bit.
+#pragma once
+
+#include <stdint.h>
+
+#include <sim/battery_sensor.hpp>
+#include <sim/imu.hpp>
+#include <sim/quadrotor.hpp>
+#include <sim/vibration.hpp>
+
+namespace sim {
+
+struct WorldConfig {
+  uint64_t seed = 1;
+  uint32_t step_us = 125;  // 8 kHz; must divide the control period
+};
+
+struct SensorReading {
+  ImuReading imu;
+  uint16_t battery_mv = 0;
+};
+
+class World {
+ public:
+  World(const VehicleParams& vehicle, const WorldConfig& config);
+
+  // Runs whole physics steps until the clock reaches `time_us` (rounded down to a step).
+  void advance_to(uint64_t time_us);
+  uint64_t now_us() const { return now_us_; }
+  uint32_t step_us() const { return step_us_; }
+
+  // What the sensors read at this instant.
+  SensorReading sample();
+  // The vibration the IMU would add now (for tests and plots).
+  VibrationSample vibration() const;
+
+  Quadrotor& plant() { return plant_; }
+  const Quadrotor& plant() const { return plant_; }
+  const Imu& imu() const { return imu_; }
+
+ private:
+  Quadrotor plant_;
+  Vibration vibration_;
+  Imu imu_;
+  BatterySensor battery_sensor_;
+  uint32_t step_us_;
+  uint64_t now_us_ = 0;
+};
+
+}  // namespace sim
