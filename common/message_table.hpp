@@ -42,6 +42,7 @@ enum class MessageType : uint8_t {
   telemetry_link = 0x93,
   sensor_log_part = 0x95,
   telemetry_log_part = 0x96,
+  telemetry_task = 0x99,
 };
 
 enum class Direction : uint8_t { pc_to_qr = 1, qr_to_pc = 2 };
@@ -83,6 +84,7 @@ inline constexpr MessageSpec kMessageTable[] = {
     {MessageType::telemetry_link, 8, false, Direction::qr_to_pc, "telemetry_link"},
     {MessageType::sensor_log_part, 9, false, Direction::qr_to_pc, "sensor_log_part"},
     {MessageType::telemetry_log_part, 9, false, Direction::qr_to_pc, "telemetry_log_part"},
+    {MessageType::telemetry_task, 7, false, Direction::qr_to_pc, "telemetry_task"},
 };
 
 inline constexpr size_t kMessageCount = sizeof(kMessageTable) / sizeof(kMessageTable[0]);

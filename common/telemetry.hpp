@@ -122,4 +122,23 @@ struct TelemetryLink {
   constexpr bool valid() const { return true; }
 };
 
+// One scheduler task's cost so far, in the board's cycle counter (instructions on the devboard),
+// each saturated at 65535. The QR cycles through its tasks, one per telemetry period; the console
+// keeps the table and prints it on request.
+struct TelemetryTask {
+  static constexpr MessageType kType = MessageType::telemetry_task;
+  uint8_t task = 0;  // the QR's task number (docs/protocol.md lists the names)
+  uint16_t min = 0;
+  uint16_t mean = 0;
+  uint16_t max = 0;
+
+  constexpr bool operator==(const TelemetryTask&) const = default;
+
+  template <class Self, class Visit>
+  static constexpr void fields(Self& m, Visit& v) {
+    v(m.task); v(m.min); v(m.mean); v(m.max);
+  }
+  constexpr bool valid() const { return min <= mean && mean <= max; }
+};
+
 }  // namespace wire

@@ -53,10 +53,11 @@ class Flight {
   uint8_t leds() const;
   // Stops once the exit has been carried out and its last bytes are out.
   bool running() const { return !(safety_.stopped() && tx_.empty()); }
-  void account(const TickReport& report) {
+  void account(const TickReport& report, const SchedulerStats<kTaskCount>& stats) {
     if (report.busy_us > loop_time_us_) loop_time_us_ = report.busy_us;
     deadline_misses_ = report.deadline_misses;
     cpu_load_permille_ = report.cpu_load_permille;
+    task_stats_ = &stats;
   }
 
   // ---- read-outs for boards, tests and the simulator ----
@@ -131,6 +132,8 @@ class Flight {
   uint32_t deadline_misses_ = 0;
   uint16_t cpu_load_permille_ = 0;
   uint32_t tx_dropped_ = 0;
+  const SchedulerStats<kTaskCount>* task_stats_ = nullptr;  // the scheduler's, once it ran
+  uint8_t stats_task_ = 0;  // whose figures the next telemetry_task carries
 
   // Parameter reports still owed after a param_get: table rows [report_next_, report_end_).
   uint8_t report_next_ = 0;

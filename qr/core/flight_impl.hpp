@@ -128,6 +128,12 @@ void Flight<Chain>::run_telemetry() {
                                             chain_.pitch_e4(), chain_.yaw_e4()}));
   send(wire::encode(wire::TelemetryRates{chain_.p_e3(), chain_.q_e3(), chain_.r_e3()}));
   send_slow_group();
+  if (task_stats_ != nullptr) {
+    const auto sat = [](uint32_t v) { return v > 0xFFFFu ? uint16_t{0xFFFF} : static_cast<uint16_t>(v); };
+    const CycleStats& c = task_stats_->task[stats_task_];
+    send(wire::encode(wire::TelemetryTask{stats_task_, sat(c.min), sat(c.mean()), sat(c.max)}));
+    stats_task_ = static_cast<uint8_t>((stats_task_ + 1) % kTaskCount);
+  }
 }
 
 // Engines, set-points, system and link take turns, each at a quarter of the telemetry rate.

@@ -12,7 +12,7 @@
 //   uint32_t rx_space() const;  void receive(uint8_t);      bytes from the serial line
 //   bool tx_peek(uint8_t&) const;  void tx_pop();            bytes for the serial line
 //   EngineCommand engines() const;  uint8_t leds() const;  bool running() const;
-//   void account(const TickReport&);                         timing of the tick just finished
+//   void account(const TickReport&, const SchedulerStats<kTaskCount>&);   after each tick
 #pragma once
 
 #include <stdint.h>
@@ -125,7 +125,7 @@ class Scheduler {
       window_start_us_ = end_us;
     }
 
-    context_.account(TickReport{busy_us, stats_.deadline_misses, stats_.cpu_load_permille});
+    context_.account(TickReport{busy_us, stats_.deadline_misses, stats_.cpu_load_permille}, stats_);
     next_set_ = context_.task_set();
   }
 

@@ -83,6 +83,13 @@ TEST_F(FlightTest, StartsInSafeAndStreamsTelemetryAtTheParameterRate) {
   EXPECT_NEAR(static_cast<double>(got<wire::TelemetrySystem>().size()), rate / 4.0, 1.0);
   EXPECT_EQ(got<wire::TelemetrySystem>().back().battery_mv, 12000);
   EXPECT_EQ(flight.tx_dropped_frames(), 0u);
+
+  // Every task's figures come round; those that ran have a count and cost.
+  const auto tasks = got<wire::TelemetryTask>();
+  ASSERT_GE(tasks.size(), size_t{kFlightTaskCount});
+  EXPECT_EQ(tasks[kFlightTaskCount - 1].task, kFlightTaskCount - 1);
+  EXPECT_EQ(scheduler.stats().task[kLinkTask].count, scheduler.stats().ticks);
+  EXPECT_EQ(scheduler.stats().task[kAttitudeControlTask].count, 0u) << "not in safe's task set";
 }
 
 TEST_F(FlightTest, ModeChangeIsAckedWithItsSequenceNumberAndApplied) {

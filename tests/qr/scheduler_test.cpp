@@ -40,7 +40,8 @@ struct TestContext {
   EngineCommand engines() const { return {}; }
   uint8_t leds() const { return 0; }
   bool running() const { return true; }
-  void account(const TickReport& r) { last_report = r; }
+  template <class Stats>
+  void account(const TickReport& r, const Stats&) { last_report = r; }
   TickReport last_report;
 
   void work(int id) {
