@@ -1,0 +1,67 @@
+// Sensor calibration in safe/calibration mode, with the vehicle level and still: the average of
+// kSamples raw samples gives the gyro zero-rate offsets and the accelerometer offsets that make
+// a level vehicle read (0, 0, -1 g). The sums are integers (exact, the same in every number type);
+// the power-of-two sample count makes the average a shift, so the offsets keep 9 fractional bits
+// of a count instead of rounding to whole counts.
+#pragma once
+
+#include <stdint.h>
+
+#include <qr/core/board.hpp>
+#include <qr/core/chain/sensor_units.hpp>
+
+namespace qr::chain {
+
+inline constexpr int kCalibrationShift = 9;
+inline constexpr int32_t kCalibrationSamples = int32_t{1} << kCalibrationShift;  // 0.5 s at 1 kHz
+
+template <class N>
+class SensorCalibration {
+ public:
+  using Rate = typename N::Rate;
+  using Accel = typename N::Accel;
+  using Units = SensorUnits<N>;
+
+  // Forgets the sums (not the offsets in use) and starts counting again.
+  void restart() {
+    for (int i = 0; i < 3; ++i) gyro_sum_[i] = accel_sum_[i] = 0;
+    count_ = 0;
+  }
+
+  // Adds one raw sample; true once kSamples have been averaged (further samples are ignored
+  // until restart()).
+  bool add(const SensorSample& s) {
+    if (count_ >= kCalibrationSamples) return true;
+    for (int i = 0; i < 3; ++i) {
+      gyro_sum_[i] += s.gyro[i];
+      accel_sum_[i] += s.accel[i];
+    }
+    // Level reads -1 g on z: the offset is what is read beyond that.
+    accel_sum_[2] += Units::kCountsPerGInt;
+    if (++count_ < kCalibrationSamples) return false;
+    for (int i = 0; i < 3; ++i) {
+      gyro_offset_[i] = Units::template rate_of<kCalibrationShift>(gyro_sum_[i]);
+      accel_offset_[i] = Units::template accel_of<kCalibrationShift>(accel_sum_[i]);
+    }
+    done_ = true;
+    return true;
+  }
+
+  // At least one calibration has finished since start-up.
+  bool done() const { return done_; }
+  int32_t samples() const { return count_; }
+
+  Rate gyro_offset(int axis) const { return gyro_offset_[axis]; }
+  Accel accel_offset(int axis) const { return accel_offset_[axis]; }
+
+ private:
+  // 512 int16 samples: |sum| < 2^24, far inside int32.
+  int32_t gyro_sum_[3] = {0, 0, 0};
+  int32_t accel_sum_[3] = {0, 0, 0};
+  int32_t count_ = 0;
+  bool done_ = false;
+  Rate gyro_offset_[3] = {};
+  Accel accel_offset_[3] = {};
+};
+
+}  // namespace qr::chain
