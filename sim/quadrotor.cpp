@@ -125,8 +125,7 @@ double Quadrotor::deepest_contact() const {
   return ground_contact(vehicle_, contacts_, state_.position, state_.velocity, state_.attitude, state_.rate).deepest_m;
 }
 
-double Quadrotor::hover_command() const {
-  const double w = vehicle_.hover_speed();
+double Quadrotor::steady_command(double w) const {
   const std::array<double, kRotorCount> speeds{w, w, w, w};
   // Fixed point of volts -> current -> volts; converges in a few rounds (the sag is small).
   double volts = battery_.open_circuit_volts();

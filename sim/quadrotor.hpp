@@ -63,9 +63,12 @@ class Quadrotor {
   const VehicleParams& vehicle() const { return vehicle_; }
   const std::array<uint16_t, kRotorCount>& engines() const { return commands_; }
 
-  // The engine command that holds the vehicle's weight at the battery's present charge, with
-  // the sag of the hover current: what a pilot learns to hold the lift stick at.
-  double hover_command() const;
+  // The engine command (all four equal) that settles the rotors at `speed`, with the battery
+  // sagging under the current that speed draws.
+  double steady_command(double speed) const;
+  // The engine command that holds the vehicle's weight at the battery's present charge: what a
+  // pilot learns to hold the lift stick at.
+  double hover_command() const { return steady_command(vehicle_.hover_speed()); }
 
  private:
   struct Derivative {
