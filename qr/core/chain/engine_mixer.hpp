@@ -1,0 +1,126 @@
+// Lift and moments to engine commands through the inverse of the quadratic rotor model.
+//
+// Model (docs/conventions.md): thrust and reaction torque go with rotor speed squared, and the
+// engine command is proportional to speed. In thrust units, engine i with command ae_i gives
+// w_i = ae_i^2 / 1000 (1000 = one engine at full speed), and
+//   lift   Z = w0 + w1 + w2 + w3
+//   roll   L = w3 - w1                 (left up, right down rolls right)
+//   pitch  M = w0 - w2                 (front up pitches nose up)
+//   yaw    N = w1 + w3 - w0 - w2       (the counter-clockwise pair speeds up: yaws right)
+// (the constants b l and d of the model are folded into the controllers' gains). Inverted:
+//   w_i = Z/4 + m_i,  m = (M/2 - N/4, -L/2 + N/4, -M/2 - N/4, L/2 + N/4)  for engines 0..3,
+//   ae_i = sqrt(1000 w_i).
+//
+// Saturation. While lift > 0 every engine stays within [idle, 1000], i.e. w_i in
+// [idle^2/1000, 1000]. The moment parts m_i sum to zero, so:
+//   1. if their spread (max - min) exceeds what the engines can span, all moments are scaled
+//      down by one factor: the realised moments keep the ratios asked for;
+//   2. if the largest part does not fit above the lift, the lift gives way (moved down): near
+//      full throttle attitude control wins over climb;
+//   3. if the smallest part does not fit below the lift, the moments are scaled down again: at
+//      low lift the pilot's lift wins, so a controller never lifts the vehicle off by itself,
+//      and at idle the engines just idle.
+// The division each scaling needs happens only when saturating. What was realised is readable
+// (applied()), so a log shows when and how much the mixer limited the controllers.
+#pragma once
+
+#include <stdint.h>
+
+#include <common/units.hpp>
+#include <qr/core/board.hpp>
+#include <qr/core/chain/numeric.hpp>
+
+namespace qr::chain {
+
+template <class Thrust>
+struct Moments {
+  Thrust roll{}, pitch{}, yaw{};
+};
+
+template <class N>
+class EngineMixer {
+ public:
+  using Thrust = typename N::Thrust;
+
+  static constexpr Thrust kFullThrust = Thrust(1000.0);
+
+  // idle_level parameter (engine units): one division, at parameter changes only.
+  void set_idle(int32_t idle) {
+    idle_ = static_cast<uint16_t>(idle < 0 ? 0 : idle > wire::kEngineMax ? wire::kEngineMax : idle);
+    idle_thrust_ = N::template ratio<Thrust>(int32_t{idle_} * idle_, wire::kEngineMax);
+  }
+  uint16_t idle() const { return idle_; }
+
+  // Per-engine thrust for a lift stick value: lift^2 / 1000, so ae_i = lift with no moments.
+  static Thrust thrust_of_lift(uint16_t lift) {
+    return product<Thrust>(N::template fixed<0>(int32_t{lift} * lift), kPerMille);
+  }
+
+  EngineCommand mix(uint16_t lift, const Moments<Thrust>& wanted) {
+    if (lift == 0) {
+      applied_ = {};
+      return {};
+    }
+    return mix_thrust(thrust_of_lift(lift), wanted);
+  }
+
+  // The mapping itself, from a per-engine thrust (Z/4) > 0.
+  EngineCommand mix_thrust(Thrust per_engine, const Moments<Thrust>& wanted) {
+    const Thrust low = idle_thrust_;
+    Thrust base = clamp(per_engine, low, kFullThrust);
+
+    Thrust m[4];
+    for (int i = 0; i < 4; ++i) {
+      const Row& row = kRows[i];
+      m[i] = fx::narrow<Thrust>(fx::mul_wide(row.roll, wanted.roll) + fx::mul_wide(row.pitch, wanted.pitch) +
+                                fx::mul_wide(row.yaw, wanted.yaw));
+    }
+    Thrust peak = max_of(max_of(m[0], m[1]), max_of(m[2], m[3]));
+    Thrust trough = min_of(min_of(m[0], m[1]), min_of(m[2], m[3]));
+
+    const Thrust room = kFullThrust - low;
+    if (room < peak - trough) scale(m, peak, trough, room / (peak - trough));  // 1.
+    if (kFullThrust < base + peak) base = kFullThrust - peak;                  // 2.
+    if (base + trough < low) scale(m, peak, trough, (base - low) / -trough);   // 3.
+
+    EngineCommand out;
+    for (int i = 0; i < 4; ++i) {
+      const Thrust w = clamp(base + m[i], low, kFullThrust);  // only rounding can step outside
+      const int32_t ae = N::round_to_int(fx::mul_wide(N::sqrt(w), kRootOf1000));
+      out.value[i] = static_cast<uint16_t>(ae < idle_ ? idle_ : ae > wire::kEngineMax ? wire::kEngineMax : ae);
+    }
+    applied_.roll = m[3] - m[1];
+    applied_.pitch = m[0] - m[2];
+    applied_.yaw = m[1] + m[3] - m[0] - m[2];
+    return out;
+  }
+
+  // The moments the last mix realised (before rounding to whole engine units).
+  const Moments<Thrust>& applied() const { return applied_; }
+
+ private:
+  // m_i = roll x L + pitch x M + yaw x N, one row per engine (0 front, 1 right, 2 back, 3 left).
+  struct Row {
+    Thrust roll, pitch, yaw;
+  };
+  static constexpr Row kRows[4] = {
+      {Thrust(0.0), Thrust(0.5), Thrust(-0.25)},
+      {Thrust(-0.5), Thrust(0.0), Thrust(0.25)},
+      {Thrust(0.0), Thrust(-0.5), Thrust(-0.25)},
+      {Thrust(0.5), Thrust(0.0), Thrust(0.25)},
+  };
+  static constexpr typename N::Scale kPerMille = typename N::Scale(0.001);
+  static constexpr Thrust kRootOf1000 = Thrust(31.62277660168379332);
+
+  static void scale(Thrust (&m)[4], Thrust& peak, Thrust& trough, Thrust factor) {
+    for (Thrust& v : m) v = product<Thrust>(v, factor);
+    peak = product<Thrust>(peak, factor);
+    trough = product<Thrust>(trough, factor);
+  }
+
+  uint16_t idle_ = 0;
+  Thrust idle_thrust_{};
+  Moments<Thrust> applied_{};
+};
+
+}  // namespace qr::chain

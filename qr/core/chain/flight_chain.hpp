@@ -1,0 +1,195 @@
+// The signal chain as the firmware runs it: one object, one method per scheduler task, data
+// flowing one way through a tick:
+//
+//   set_pilot -> filter -> (calibrate) -> estimate -> (control_attitude) (control_yaw) -> mix
+//                                                                       (manual: mix_manual)
+//
+// Each method reads what the ones before it left and writes its own outputs; none reaches back.
+//
+// Num is the number policy: FixedNumbers in flight (FixedChain below); the host tests also run
+// FlightChain<DoubleNumbers> (qr/tools/real_numbers.hpp) as the accuracy reference. SampleHz is
+// the control rate the designs and time steps are made for.
+//
+// Units at the readouts are the wire's (common/units.hpp): angles 1e-4 rad, rates 1e-3 rad/s,
+// engines 0..1000; moments are in 1e-3 thrust units (engine_mixer.hpp).
+#pragma once
+
+#include <stdint.h>
+
+#include <common/parameter_table.hpp>
+#include <common/units.hpp>
+#include <qr/core/board.hpp>
+#include <qr/core/chain/attitude_estimator.hpp>
+#include <qr/core/chain/controllers.hpp>
+#include <qr/core/chain/engine_mixer.hpp>
+#include <qr/core/chain/fixed_numbers.hpp>
+#include <qr/core/chain/pilot_setpoints.hpp>
+#include <qr/core/chain/sensor_calibration.hpp>
+#include <qr/core/chain/sensor_filters.hpp>
+#include <qr/core/rate.hpp>
+#include <qr/core/safety.hpp>
+
+namespace qr {
+
+template <class Num, uint32_t SampleHz = kControlHz>
+class FlightChain {
+ public:
+  using Rate = typename Num::Rate;
+  using Accel = typename Num::Accel;
+  using Angle = typename Num::Angle;
+  using Thrust = typename Num::Thrust;
+  static constexpr uint32_t kSampleHz = SampleHz;
+
+  FlightChain() { set_parameters(wire::ParameterValues{}); }
+
+  // Called when a parameter changes (not per tick): the only place that divides.
+  void set_parameters(const wire::ParameterValues& p) {
+    using wire::ParamId;
+    filters_.set_cutoff(p.get(ParamId::filter_cutoff_hz));
+    estimator_.set_divisors(p.get(ParamId::kalman_c1), p.get(ParamId::kalman_c2));
+    yaw_.set_gain(p.get(ParamId::yaw_p));
+    for (auto& axis : tilt_) axis.set_gains(p.get(ParamId::roll_pitch_p1), p.get(ParamId::roll_pitch_p2));
+    pilot_.set_max_yaw_rate(p.get(ParamId::max_yaw_rate));
+    mixer_.set_idle(p.get(ParamId::idle_level));
+  }
+
+  // Latest sticks -> set-points (angles, yaw rate) and open-loop moments; every tick.
+  void set_pilot(const ControlInput& c) { pilot_.update(c); }
+
+  // Task "filter": one raw sample through the low-pass filters.
+  void filter(const SensorSample& s) {
+    ++ticks_;
+    sample_ = s;
+    filters_.update(s);
+  }
+
+  // Task "calibration": averages the samples filter() was given; true once this run is done.
+  // A run starts whenever calibrate() is called after a tick without it (entering calibration
+  // mode), or after restart_calibration(). A finished run restarts the estimator from the
+  // accelerometer's angles; until the next run finishes, the previous offsets stay in use.
+  bool calibrate() {
+    if (calibrated_at_tick_ + 1 != ticks_) calibration_.restart();
+    calibrated_at_tick_ = ticks_;
+    const bool was_done = calibration_.samples() >= chain::kCalibrationSamples;
+    const bool done = calibration_.add(sample_);
+    if (done && !was_done) estimator_.restart();
+    return done;
+  }
+  void restart_calibration() { calibration_.restart(); }
+  // Offsets exist (some calibration run has finished since start-up).
+  bool calibrated() const { return calibration_.done(); }
+
+  // Task "estimator": calibrated filtered sensors -> attitude, bias-corrected rates.
+  void estimate() {
+    Rate rate[3];
+    Accel accel[3];
+    for (int i = 0; i < 3; ++i) {
+      rate[i] = filters_.rate(i) - calibration_.gyro_offset(i);
+      accel[i] = filters_.accel(i) - calibration_.accel_offset(i);
+    }
+    estimator_.update(rate, accel);
+  }
+
+  // Task "yaw control": the yaw moment from the yaw rate loop. (Roll and pitch stay with the
+  // sticks unless the attitude controller runs in the same tick.)
+  void control_yaw() {
+    yaw_moment_ = yaw_.moment(pilot_.yaw_rate(), estimator_.r());
+    yaw_ran_ = true;
+  }
+
+  // Task "attitude control": the roll and pitch moments from the angle/rate cascades.
+  void control_attitude() {
+    roll_moment_ = tilt_[0].moment(pilot_.roll_angle(), estimator_.roll(), estimator_.p());
+    pitch_moment_ = tilt_[1].moment(pilot_.pitch_angle(), estimator_.pitch(), estimator_.q());
+    attitude_ran_ = true;
+  }
+
+  // Task "mixer": lift and moments -> engines. Each moment comes from its controller if that
+  // ran this tick, otherwise from the stick: full control runs both controllers, yaw control
+  // only the yaw loop (roll and pitch manual), manual neither. The order of the controller tasks
+  // within a tick does not matter.
+  EngineCommand mix() {
+    moments_.roll = attitude_ran_ ? roll_moment_ : pilot_.roll_moment();
+    moments_.pitch = attitude_ran_ ? pitch_moment_ : pilot_.pitch_moment();
+    moments_.yaw = yaw_ran_ ? yaw_moment_ : pilot_.yaw_moment();
+    attitude_ran_ = yaw_ran_ = false;
+    return engines_ = mixer_.mix(pilot_.lift(), moments_);
+  }
+
+  // Manual mode: sticks -> moments open loop -> the same mapping.
+  EngineCommand mix_manual() {
+    attitude_ran_ = yaw_ran_ = false;
+    return mix();
+  }
+
+  // ---- readouts, in the wire's integer units ----
+  int16_t roll_e4() const { return angle_e4(estimator_.roll()); }
+  int16_t pitch_e4() const { return angle_e4(estimator_.pitch()); }
+  int16_t yaw_e4() const { return angle_e4(estimator_.yaw()); }
+  int16_t p_e3() const { return rate_e3(estimator_.p()); }
+  int16_t q_e3() const { return rate_e3(estimator_.q()); }
+  int16_t r_e3() const { return rate_e3(estimator_.r()); }
+  int16_t roll_setpoint_e4() const { return angle_e4(pilot_.roll_angle()); }
+  int16_t pitch_setpoint_e4() const { return angle_e4(pilot_.pitch_angle()); }
+  int16_t yaw_rate_setpoint_e3() const { return rate_e3(pilot_.yaw_rate()); }
+  uint16_t lift() const { return pilot_.lift(); }
+  int32_t tilt_mrad() const {
+    const int32_t roll = Num::round_to_int(fx::mul_wide(chain::magnitude(estimator_.roll()), kThousand));
+    const int32_t pitch = Num::round_to_int(fx::mul_wide(chain::magnitude(estimator_.pitch()), kThousand));
+    return roll > pitch ? roll : pitch;
+  }
+
+  // For the sensor log and the replay: filtered (not calibrated) sensors in counts, the
+  // accelerometer's own angles, the gyro bias estimates, the rate set-points of the angle loops,
+  // the moments asked for and the moments the mixer realised, the last engine values.
+  int16_t gyro_filtered(int axis) const { return Units::gyro_counts(filters_.rate(axis)); }
+  int16_t accel_filtered(int axis) const { return Units::accel_counts(filters_.accel(axis)); }
+  int16_t roll_from_accel_e4() const { return angle_e4(estimator_.roll_from_accel()); }
+  int16_t pitch_from_accel_e4() const { return angle_e4(estimator_.pitch_from_accel()); }
+  int32_t p_bias_e6() const { return Num::round_to_int(fx::mul_wide(estimator_.p_bias(), kMillion)); }
+  int32_t q_bias_e6() const { return Num::round_to_int(fx::mul_wide(estimator_.q_bias(), kMillion)); }
+  int16_t p_setpoint_e3() const { return rate_e3(tilt_[0].rate_setpoint()); }
+  int16_t q_setpoint_e3() const { return rate_e3(tilt_[1].rate_setpoint()); }
+  chain::Moments<int32_t> moments_e3() const { return moments_e3(moments_); }
+  chain::Moments<int32_t> applied_moments_e3() const { return moments_e3(mixer_.applied()); }
+  const EngineCommand& engines() const { return engines_; }
+  int32_t cutoff_hz() const { return filters_.cutoff_hz(); }
+
+  // The blocks themselves, for tests and tools that look inside.
+  const chain::AttitudeEstimator<Num, SampleHz>& estimator() const { return estimator_; }
+  const chain::SensorCalibration<Num>& calibration() const { return calibration_; }
+
+ private:
+  using Units = chain::SensorUnits<Num>;
+  using Count = typename Num::template Fixed<0>;
+
+  static constexpr Count kThousand = Count(1000.0);
+  static constexpr Count kTenThousand = Count(10000.0);
+  static constexpr Count kMillion = Count(1000000.0);
+
+  static int16_t angle_e4(Angle a) { return wire::saturate_i16(Num::round_to_int(fx::mul_wide(a, kTenThousand))); }
+  static int16_t rate_e3(Rate r) { return wire::saturate_i16(Num::round_to_int(fx::mul_wide(r, kThousand))); }
+  static chain::Moments<int32_t> moments_e3(const chain::Moments<Thrust>& m) {
+    return {Num::round_to_int(fx::mul_wide(m.roll, kThousand)), Num::round_to_int(fx::mul_wide(m.pitch, kThousand)),
+            Num::round_to_int(fx::mul_wide(m.yaw, kThousand))};
+  }
+
+  chain::SensorFilters<Num, SampleHz> filters_{chain::parameter_spec(wire::ParamId::filter_cutoff_hz).default_value};
+  chain::SensorCalibration<Num> calibration_;
+  chain::AttitudeEstimator<Num, SampleHz> estimator_;
+  chain::PilotSetpoints<Num> pilot_;
+  chain::YawRateController<Num> yaw_;
+  chain::AttitudeController<Num> tilt_[2];  // roll, pitch
+  chain::EngineMixer<Num> mixer_;
+  Thrust roll_moment_{}, pitch_moment_{}, yaw_moment_{};  // the controllers' latest outputs
+  bool attitude_ran_ = false, yaw_ran_ = false;          // ... computed in this tick
+  chain::Moments<Thrust> moments_{};                      // what the last mix asked for
+  EngineCommand engines_{};
+  SensorSample sample_{};
+  uint32_t ticks_ = 0;  // filter() calls: one per tick
+  uint32_t calibrated_at_tick_ = 0;
+};
+
+using FixedChain = FlightChain<chain::FixedNumbers>;
+
+}  // namespace qr
