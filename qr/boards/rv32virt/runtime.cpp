@@ -91,7 +91,29 @@ extern "C" [[noreturn]] void rv32virt_start() {
   rv32virt::exit(main());
 }
 
-extern "C" [[noreturn]] void rv32virt_trap(uint32_t mcause, uint32_t mepc, uint32_t mtval) {
+// Interrupt handlers a program may define; without one, that interrupt is a fault.
+extern "C" [[gnu::weak]] void rv32virt_timer_interrupt() {
+  rv32virt::puts("\nrv32virt: unexpected timer interrupt\n");
+  rv32virt::exit(2);
+}
+extern "C" [[gnu::weak]] void rv32virt_external_interrupt() {
+  rv32virt::puts("\nrv32virt: unexpected external interrupt\n");
+  rv32virt::exit(2);
+}
+
+// Called from the trap entry. Interrupts return to the interrupted code; exceptions end the run.
+extern "C" void rv32virt_trap(uint32_t mcause, uint32_t mepc, uint32_t mtval) {
+  constexpr uint32_t kInterrupt = 0x80000000u;
+  constexpr uint32_t kMachineTimer = 7;
+  constexpr uint32_t kMachineExternal = 11;
+  if (mcause == (kInterrupt | kMachineTimer)) {
+    rv32virt_timer_interrupt();
+    return;
+  }
+  if (mcause == (kInterrupt | kMachineExternal)) {
+    rv32virt_external_interrupt();
+    return;
+  }
   rv32virt::puts("\nrv32virt: trap mcause=");
   rv32virt::put_u32(mcause);
   rv32virt::puts(" mepc=");

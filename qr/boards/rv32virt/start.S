@@ -12,13 +12,47 @@ _start:
   call rv32virt_start
 1:j 1b
 
-/* Any exception ends the run: the C++ side reports mcause/mepc and exits with failure. */
+/* Traps: save the caller-saved registers, let C++ handle it (interrupts return, exceptions end
+   the run), restore, return. The callee-saved ones are kept by the C++ code itself. */
   .align 4
   .globl rv32virt_trap_entry
 rv32virt_trap_entry:
-  la sp, __stack_top
+  addi sp, sp, -64
+  sw ra, 0(sp)
+  sw t0, 4(sp)
+  sw t1, 8(sp)
+  sw t2, 12(sp)
+  sw a0, 16(sp)
+  sw a1, 20(sp)
+  sw a2, 24(sp)
+  sw a3, 28(sp)
+  sw a4, 32(sp)
+  sw a5, 36(sp)
+  sw a6, 40(sp)
+  sw a7, 44(sp)
+  sw t3, 48(sp)
+  sw t4, 52(sp)
+  sw t5, 56(sp)
+  sw t6, 60(sp)
   csrr a0, mcause
   csrr a1, mepc
   csrr a2, mtval
   call rv32virt_trap
-2:j 2b
+  lw ra, 0(sp)
+  lw t0, 4(sp)
+  lw t1, 8(sp)
+  lw t2, 12(sp)
+  lw a0, 16(sp)
+  lw a1, 20(sp)
+  lw a2, 24(sp)
+  lw a3, 28(sp)
+  lw a4, 32(sp)
+  lw a5, 36(sp)
+  lw a6, 40(sp)
+  lw a7, 44(sp)
+  lw t3, 48(sp)
+  lw t4, 52(sp)
+  lw t5, 56(sp)
+  lw t6, 60(sp)
+  addi sp, sp, 64
+  mret

@@ -1,0 +1,22 @@
+// The flight firmware on the devboard: the board, the flight context and the scheduler, run
+// until the console's exit request has been carried out.
+#pragma once
+
+#include <qr/boards/rv32virt/virt_board.hpp>
+#include <qr/core/flight.hpp>
+#include <qr/core/rate.hpp>
+#include <qr/core/scheduler.hpp>
+
+namespace rv32virt {
+
+template <class Chain>
+int run_firmware() {
+  // Static: the flight context is large and must not live on the 8 KiB stack.
+  static qr::Flight<Chain> flight;
+  static VirtBoard board(qr::kControlHz);
+  static qr::Scheduler<VirtBoard, qr::Flight<Chain>> scheduler(board, flight);
+  scheduler.run_until_stopped();
+  return 0;
+}
+
+}  // namespace rv32virt

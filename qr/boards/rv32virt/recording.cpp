@@ -1,0 +1,37 @@
+#include <qr/boards/rv32virt/recording.hpp>
+
+namespace rv32virt {
+namespace {
+
+uint16_t u16(const uint8_t* p) { return static_cast<uint16_t>(p[0] | (p[1] << 8)); }
+int16_t i16(const uint8_t* p) { return static_cast<int16_t>(u16(p)); }
+uint32_t u32(const uint8_t* p) { return static_cast<uint32_t>(u16(p)) | (static_cast<uint32_t>(u16(p + 2)) << 16); }
+
+}  // namespace
+
+Recording::Recording(const uint8_t* bytes) {
+  for (int i = 0; i < 4; ++i) {
+    if (bytes[i] != kRecordingMagic[i]) return;
+  }
+  if (u16(bytes + 4) != kRecordingVersion || u16(bytes + 6) != kRecordBytes) return;
+  records_ = bytes + kRecordingHeaderBytes;
+  count_ = u32(bytes + 8);
+  rate_hz_ = u32(bytes + 12);
+}
+
+RecordedTick Recording::at(uint32_t index) const {
+  const uint8_t* r = records_ + static_cast<size_t>(index) * kRecordBytes;
+  RecordedTick t;
+  for (int axis = 0; axis < 3; ++axis) {
+    t.sample.gyro[axis] = i16(r + 2 * axis);
+    t.sample.accel[axis] = i16(r + 6 + 2 * axis);
+  }
+  t.sample.battery_mv = u16(r + 12);
+  t.sticks.lift = u16(r + 14);
+  t.sticks.roll = i16(r + 16);
+  t.sticks.pitch = i16(r + 18);
+  t.sticks.yaw = i16(r + 20);
+  return t;
+}
+
+}  // namespace rv32virt

@@ -1,0 +1,168 @@
+#include <qr/boards/rv32virt/virt_board.hpp>
+
+#include <common/byte_ring.hpp>
+#include <qr/boards/rv32virt/virt_map.hpp>
+
+namespace rv32virt {
+namespace {
+
+using map::reg;
+
+constexpr uint32_t kUartRbr = 0, kUartThr = 0, kUartIer = 1, kUartFcr = 2, kUartMcr = 4, kUartLsr = 5;
+constexpr uint8_t kLsrDataReady = 0x01, kLsrThrEmpty = 0x20;
+constexpr uint32_t kMieTimer = 1u << 7, kMieExternal = 1u << 11, kMstatusMie = 1u << 3;
+
+// Shared with the interrupt handlers. The ring is single-producer (the UART interrupt) and
+// single-consumer (the main loop); its counters are word-sized, so neither sees a torn update.
+wire::ByteRing<256> g_rx;
+volatile uint32_t g_rx_overruns = 0;
+volatile uint32_t g_kicks = 0;
+volatile uint32_t g_kick_time_us = 0;    // time of the last kick, µs, wraps like now_us
+volatile uint32_t g_kick_mtime_lo = 0;   // mtime (low word) of the last kick
+uint64_t g_next_kick_mtime = 0;
+uint32_t g_period_ticks = 0;
+uint32_t g_period_us = 0;
+
+uint8_t g_log_memory[16 * 1024];
+
+void barrier() { asm volatile("" ::: "memory"); }
+
+uint64_t read_mtime() {
+  for (;;) {
+    const uint32_t hi = reg<uint32_t>(map::kMtime + 4);
+    const uint32_t lo = reg<uint32_t>(map::kMtime);
+    if (reg<uint32_t>(map::kMtime + 4) == hi) return (static_cast<uint64_t>(hi) << 32) | lo;
+  }
+}
+
+void write_mtimecmp(uint64_t t) {
+  // High word to all ones first, so no value between the two writes is reached by mtime.
+  reg<uint32_t>(map::kMtimecmp + 4) = 0xFFFFFFFFu;
+  reg<uint32_t>(map::kMtimecmp) = static_cast<uint32_t>(t);
+  reg<uint32_t>(map::kMtimecmp + 4) = static_cast<uint32_t>(t >> 32);
+}
+
+void set_csr_mie(uint32_t bits) { asm volatile("csrs mie, %0" ::"r"(bits)); }
+void enable_interrupts() { asm volatile("csrs mstatus, %0" ::"r"(kMstatusMie)); }
+void disable_interrupts() { asm volatile("csrc mstatus, %0" ::"r"(kMstatusMie)); }
+
+}  // namespace
+}  // namespace rv32virt
+
+using namespace rv32virt;
+
+extern "C" void rv32virt_timer_interrupt() {
+  g_kick_mtime_lo = static_cast<uint32_t>(g_next_kick_mtime);
+  g_next_kick_mtime += g_period_ticks;
+  write_mtimecmp(g_next_kick_mtime);
+  g_kick_time_us = g_kick_time_us + g_period_us;
+  g_kicks = g_kicks + 1;
+}
+
+extern "C" void rv32virt_external_interrupt() {
+  const uint32_t source = reg<uint32_t>(map::kPlicClaim);
+  if (source == map::kUartIrq) {
+    volatile uint8_t* uart = &reg<uint8_t>(map::kUart);
+    while ((uart[kUartLsr] & kLsrDataReady) != 0) {
+      if (!g_rx.push(uart[kUartRbr])) g_rx_overruns = g_rx_overruns + 1;
+    }
+  }
+  reg<uint32_t>(map::kPlicClaim) = source;  // complete
+}
+
+namespace rv32virt {
+
+VirtBoard::VirtBoard(uint32_t control_hz) : recording_(reinterpret_cast<const uint8_t*>(map::kRecording)) {
+  g_period_ticks = map::kTimebaseHz / control_hz;
+  g_period_us = 1000000u / control_hz;
+
+  volatile uint8_t* uart = &reg<uint8_t>(map::kUart);
+  uart[kUartFcr] = 0x07;  // FIFOs on and cleared
+  uart[kUartMcr] = 0x08;  // OUT2: the 16550's interrupt line enable
+  uart[kUartIer] = 0x01;  // interrupt on received data
+  reg<uint32_t>(map::kPlic + 4 * map::kUartIrq) = 1;  // priority
+  reg<uint32_t>(map::kPlicEnable) = 1u << map::kUartIrq;
+  reg<uint32_t>(map::kPlicThreshold) = 0;
+
+  const uint64_t now = read_mtime();
+  g_kick_mtime_lo = static_cast<uint32_t>(now);
+  g_next_kick_mtime = now + g_period_ticks;
+  write_mtimecmp(g_next_kick_mtime);
+  set_csr_mie(kMieTimer | kMieExternal);
+  enable_interrupts();
+  first_kick_ = g_kicks;
+}
+
+uint32_t VirtBoard::wait_kick(uint32_t seen) {
+  // Interrupts off between the look and the wfi: a kick that lands in between still wakes the
+  // wfi (it waits for pending interrupts, enabled or not) instead of being slept through.
+  for (;;) {
+    disable_interrupts();
+    const uint32_t k = g_kicks;
+    if (k != seen) {
+      enable_interrupts();
+      return k;
+    }
+    asm volatile("wfi");
+    enable_interrupts();
+  }
+}
+
+uint32_t VirtBoard::kicks() const { return g_kicks; }
+
+uint32_t VirtBoard::now_us() const {
+  disable_interrupts();
+  const uint32_t base_us = g_kick_time_us;
+  const uint32_t base_mtime = g_kick_mtime_lo;
+  const uint32_t mtime_lo = static_cast<uint32_t>(read_mtime());
+  enable_interrupts();
+  return base_us + (mtime_lo - base_mtime) / (map::kTimebaseHz / 1000000u);
+}
+
+uint32_t VirtBoard::cycles() const {
+  uint32_t v;
+  asm volatile("csrr %0, minstret" : "=r"(v));
+  return v;
+}
+
+qr::SensorSample VirtBoard::read_sensors() const {
+  if (!recording_.valid()) {
+    qr::SensorSample level;  // at rest, level: the accelerometer feels 1 g upwards
+    level.accel[2] = -8192;
+    level.battery_mv = 12000;
+    return level;
+  }
+  const uint32_t tick = g_kicks - first_kick_;
+  return recording_.at(tick % recording_.count()).sample;
+}
+
+qr::ControlInput VirtBoard::recorded_sticks() const {
+  if (!recording_.valid()) return {};
+  return recording_.at((g_kicks - first_kick_) % recording_.count()).sticks;
+}
+
+bool VirtBoard::recording_ended() const {
+  return recording_.valid() && g_kicks - first_kick_ >= recording_.count();
+}
+
+bool VirtBoard::serial_read(uint8_t& byte) {
+  barrier();
+  const bool got = g_rx.pop(byte);
+  barrier();
+  return got;
+}
+
+bool VirtBoard::serial_write(uint8_t byte) {
+  volatile uint8_t* uart = &reg<uint8_t>(map::kUart);
+  if ((uart[kUartLsr] & kLsrThrEmpty) == 0) return false;
+  uart[kUartThr] = byte;
+  return true;
+}
+
+qr::LogArea VirtBoard::log_area() { return {g_log_memory, sizeof g_log_memory}; }
+
+uint32_t VirtBoard::rx_overruns() const { return g_rx_overruns; }
+
+static_assert(qr::Board<VirtBoard>);
+
+}  // namespace rv32virt

@@ -1,0 +1,33 @@
+// Addresses of the QEMU `virt` machine's devices we use (QEMU hw/riscv/virt.c memory map).
+#pragma once
+
+#include <stdint.h>
+
+namespace rv32virt::map {
+
+// CLINT: machine timer. mtime counts at the timebase, 10 MHz on `virt`.
+inline constexpr uintptr_t kClint = 0x02000000u;
+inline constexpr uintptr_t kMtimecmp = kClint + 0x4000u;  // hart 0
+inline constexpr uintptr_t kMtime = kClint + 0xBFF8u;
+inline constexpr uint32_t kTimebaseHz = 10000000u;
+
+// PLIC: external interrupts, context 0 = hart 0 machine mode.
+inline constexpr uintptr_t kPlic = 0x0C000000u;
+inline constexpr uintptr_t kPlicEnable = kPlic + 0x2000u;
+inline constexpr uintptr_t kPlicThreshold = kPlic + 0x200000u;
+inline constexpr uintptr_t kPlicClaim = kPlic + 0x200004u;
+
+// UART0: NS16550A, interrupt source 10.
+inline constexpr uintptr_t kUart = 0x10000000u;
+inline constexpr uint32_t kUartIrq = 10;
+
+// Where scripts/devboard has QEMU's generic loader put a sensor recording (RAM starts at
+// 0x8000'0000; the program and its stack stay below 1 MiB).
+inline constexpr uintptr_t kRecording = 0x80400000u;
+
+template <class T>
+volatile T& reg(uintptr_t address) {
+  return *reinterpret_cast<volatile T*>(address);
+}
+
+}  // namespace rv32virt::map
