@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""A scripted console for the devboard: talks to the flight firmware over QEMU's serial line.
+"""A scripted console for the devboard: talks to the flight firmware (qr.elf) over QEMU's serial line.
 
 It asks for manual mode and checks the ack, checks that telemetry streams, then asks the
 firmware to exit and checks that it confirms and stops with status 0.
