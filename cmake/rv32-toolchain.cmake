@@ -11,8 +11,10 @@ set(CMAKE_SIZE riscv64-unknown-elf-size CACHE FILEPATH "")
 
 set(QR_RV32_ARCH "-march=rv32im_zicsr -mabi=ilp32")
 set(QR_RV32_FREESTANDING "-ffreestanding -fno-exceptions -fno-rtti -fno-threadsafe-statics -fno-asynchronous-unwind-tables -ffunction-sections -fdata-sections")
+# Per-function stack frames and call graphs (.su, .ci beside each object) for scripts/elfcheck.
+set(QR_RV32_STACK_INFO "-fstack-usage -fcallgraph-info=su")
 set(CMAKE_C_FLAGS_INIT "${QR_RV32_ARCH} ${QR_RV32_FREESTANDING}")
-set(CMAKE_CXX_FLAGS_INIT "${QR_RV32_ARCH} ${QR_RV32_FREESTANDING} -fno-use-cxa-atexit")
+set(CMAKE_CXX_FLAGS_INIT "${QR_RV32_ARCH} ${QR_RV32_FREESTANDING} ${QR_RV32_STACK_INFO} -fno-use-cxa-atexit")
 set(CMAKE_ASM_FLAGS_INIT "${QR_RV32_ARCH}")
 set(CMAKE_EXE_LINKER_FLAGS_INIT "${QR_RV32_ARCH} -nostdlib -nostartfiles -Wl,--gc-sections -Wl,--fatal-warnings")
 
