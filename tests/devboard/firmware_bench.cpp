@@ -1,0 +1,168 @@
+// The flight firmware's cost per tick on the devboard, mode by mode, in instructions retired
+// (exact under QEMU -icount). `scripts/devboard --bench` runs it; one JSON object per line.
+//
+// The bench board never waits: each kick comes at once and moves time on by one period, so the
+// bench runs as fast as QEMU can go while the firmware sees a steady control rate. Between ticks
+// (outside what is measured) the board makes the next sensor sample from the synthetic flight
+// and a scripted pilot puts frames on the serial line, as the console would: telemetry at
+// 100 Hz, control at 50 Hz, the mode requests that arm each mode the legal way.
+#include <common/byte_ring.hpp>
+#include <common/messages.hpp>
+#include <qr/boards/rv32virt/devboard.hpp>
+#include <qr/core/chain/flight_chain.hpp>
+#include <qr/core/flight.hpp>
+#include <qr/core/scheduler.hpp>
+
+#include "../chain/synthetic_flight.hpp"
+
+namespace {
+
+using qr::Mode;
+
+constexpr uint32_t kMeasuredTicks = 2000;
+constexpr uint32_t kArmingTicksMax = 5000;
+constexpr const char* kModeNames[] = {"safe", "panic", "manual", "calibration", "yaw", "full"};
+
+class BenchBoard {
+ public:
+  uint32_t wait_kick(uint32_t seen) {
+    kicks_ = seen + 1;
+    now_us_ += qr::kPeriodUs;
+    sample_ = flight_.next().sample;
+    return kicks_;
+  }
+  uint32_t kicks() const { return kicks_; }
+  uint32_t now_us() const { return now_us_; }
+  uint32_t cycles() const { return rv32virt::instret(); }
+  qr::SensorSample read_sensors() const { return sample_; }
+  void set_engines(qr::EngineCommand) {}
+  bool serial_read(uint8_t& byte) { return rx.pop(byte); }
+  bool serial_write(uint8_t) { return true; }
+  void set_leds(uint8_t) {}
+  qr::LogArea log_area() { return {}; }
+
+  template <class M>
+  void send(const M& message) {
+    const wire::FrameBytes f = wire::encode(message);
+    rx.push(f.bytes, f.size);
+  }
+  qr::ControlInput sticks() { return flight_.next().sticks; }
+
+  wire::ByteRing<256> rx;
+
+ private:
+  qr::chain::synthetic::Flight<qr::kControlHz> flight_;
+  qr::SensorSample sample_;
+  uint32_t kicks_ = 0;
+  uint32_t now_us_ = 0;
+};
+
+template <class Chain>
+struct Rig {
+  BenchBoard board;
+  qr::Flight<Chain> flight;
+  qr::Scheduler<BenchBoard, qr::Flight<Chain>> scheduler{board, flight};
+  uint8_t seq = 0;
+  uint32_t tick = 0;
+  wire::Control sticks;
+
+  // One period: the pilot's frames for it, then the firmware's tick.
+  void step() {
+    if (tick++ % 20 == 0) board.send(sticks);
+    scheduler.tick();
+  }
+  bool request(Mode mode) {
+    board.send(wire::ModeChange{++seq, mode});
+    for (int i = 0; i < 5; ++i) step();
+    return flight.mode() == mode;
+  }
+  // Arms `mode` the legal way, from safe with neutral sticks; false if the firmware refused.
+  bool arm(Mode mode) {
+    board.send(wire::ParamSet{++seq, static_cast<uint8_t>(wire::ParamId::telemetry_rate_hz), 100});
+    if (mode == Mode::yaw_control || mode == Mode::full_control) {
+      if (!request(Mode::calibration)) return false;
+      for (uint32_t i = 0; i < kArmingTicksMax && flight.mode() != Mode::safe; ++i) step();
+    }
+    if (mode == Mode::safe) return true;
+    if (mode == Mode::panic) return request(Mode::manual) && (fly(200), request(Mode::panic));
+    return request(mode);
+  }
+  void fly(uint32_t ticks) {
+    for (uint32_t i = 0; i < ticks; ++i) {
+      const qr::ControlInput c = board.sticks();
+      sticks = wire::Control{c.lift, c.roll, c.pitch, c.yaw};
+      step();
+    }
+  }
+};
+
+void print_stats_field(const char* name, const qr::CycleStats& s) {
+  rv32virt::puts("\"");
+  rv32virt::puts(name);
+  rv32virt::puts("\":{\"mean\":");
+  rv32virt::put_u32(s.mean());
+  rv32virt::puts(",\"max\":");
+  rv32virt::put_u32(s.max);
+  rv32virt::puts("}");
+}
+
+// Runs one mode and prints its line; returns the mean tick cost (0 if it could not be armed).
+template <class Chain>
+uint32_t bench_mode(Rig<Chain>& rig, Mode mode, const char* suffix) {
+  rv32virt::puts("{\"mode\":\"");
+  rv32virt::puts(kModeNames[qr::index(mode)]);
+  rv32virt::puts(suffix);
+  rv32virt::puts("\"");
+  if (!rig.arm(mode)) {
+    rv32virt::puts(",\"error\":\"the firmware refused the mode\"}\n");
+    return 0;
+  }
+  rig.scheduler.reset_stats();
+  uint32_t ticks = 0;
+  const bool lifts = mode != Mode::safe && mode != Mode::calibration;
+  for (; ticks < kMeasuredTicks && rig.flight.mode() == mode; ++ticks) {
+    if (lifts) {
+      rig.fly(1);
+    } else {
+      rig.step();
+    }
+  }
+  const auto& stats = rig.scheduler.stats();
+  rv32virt::puts(",\"ticks\":");
+  rv32virt::put_u32(ticks);
+  rv32virt::puts(",\"tick_instr_mean\":");
+  rv32virt::put_u32(stats.tick.mean());
+  rv32virt::puts(",\"tick_instr_max\":");
+  rv32virt::put_u32(stats.tick.max);
+  rv32virt::puts(",\"tasks\":{");
+  bool first = true;
+  for (uint8_t id = 0; id < qr::kFlightTaskCount; ++id) {
+    if (stats.task[id].count == 0) continue;
+    if (!first) rv32virt::putc(',');
+    first = false;
+    print_stats_field(qr::Flight<Chain>::kTasks[id].name, stats.task[id]);
+  }
+  rv32virt::puts("}}\n");
+  return stats.tick.mean();
+}
+
+template <Mode M, class Chain>
+uint32_t bench(const char* suffix) {
+  static Rig<Chain> rig;  // one fresh firmware per mode, outside the 8 KiB stack
+  return bench_mode(rig, M, suffix);
+}
+
+}  // namespace
+
+int main() {
+  bench<Mode::safe, qr::FixedChain>("");
+  bench<Mode::panic, qr::FixedChain>("");
+  bench<Mode::manual, qr::FixedChain>("");
+  bench<Mode::calibration, qr::FixedChain>("");
+  bench<Mode::yaw_control, qr::FixedChain>("");
+  const uint32_t full = bench<Mode::full_control, qr::FixedChain>("");
+  rv32virt::puts("{\"summary\":\"full-control tick with link and telemetry at 100 Hz; targets: mean <= 3000, max <= 8000 instructions\",\"full_tick_instr_mean\":");
+  rv32virt::put_u32(full);
+  rv32virt::puts("}\n");
+  return full == 0 ? 1 : 0;
+}
