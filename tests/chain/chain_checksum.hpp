@@ -1,0 +1,96 @@
+// The synthetic flight (synthetic_flight.hpp) through a FlightChain in full control, every
+// read-out of every tick folded into one FNV-1a checksum. The host test and the devboard program
+// must both reach kExpected: the flight chain is pure integer arithmetic, so host and RV32 give
+// bit-identical results. Freestanding (runs on the devboard).
+#pragma once
+
+#include <stdint.h>
+
+#include "synthetic_flight.hpp"
+
+namespace qr::chain::checksum {
+
+// FNV-1a 32-bit over every read-out of every tick of synthetic::Flight<1000> through FixedChain.
+// Changes whenever the chain's arithmetic changes: then re-record it, saying why, in the commit.
+inline constexpr uint32_t kExpected = 3489954417u;
+
+class Fnv1a {
+ public:
+  void add(int32_t v) {
+    const uint32_t u = static_cast<uint32_t>(v);
+    for (int i = 0; i < 4; ++i) {
+      hash_ ^= (u >> (8 * i)) & 0xFFu;
+      hash_ *= 16777619u;
+    }
+  }
+  uint32_t value() const { return hash_; }
+
+ private:
+  uint32_t hash_ = 2166136261u;
+};
+
+// Task timing hook: the devboard counts instructions, the host does nothing.
+struct NoTimer {
+  void begin() {}
+  void end(int /*task*/) {}
+};
+
+enum ChainTask : int { kFilter, kCalibrate, kEstimate, kAttitude, kYaw, kMix, kChainTaskCount };
+
+template <class Chain>
+void fold_readouts(const Chain& c, Fnv1a& h) {
+  const int32_t values[] = {
+      c.roll_e4(), c.pitch_e4(), c.yaw_e4(), c.p_e3(), c.q_e3(), c.r_e3(),
+      c.roll_setpoint_e4(), c.pitch_setpoint_e4(), c.yaw_rate_setpoint_e3(), c.p_setpoint_e3(), c.q_setpoint_e3(),
+      c.tilt_mrad(), c.roll_from_accel_e4(), c.pitch_from_accel_e4(), c.p_bias_e6(), c.q_bias_e6(),
+      c.gyro_filtered(0), c.gyro_filtered(1), c.gyro_filtered(2),
+      c.accel_filtered(0), c.accel_filtered(1), c.accel_filtered(2),
+      c.moments_e3().roll, c.moments_e3().pitch, c.moments_e3().yaw,
+      c.applied_moments_e3().roll, c.applied_moments_e3().pitch, c.applied_moments_e3().yaw,
+      c.engines().value[0], c.engines().value[1], c.engines().value[2], c.engines().value[3],
+      c.calibrated() ? 1 : 0};
+  for (const int32_t v : values) h.add(v);
+}
+
+// Calibrates on the first samples, then flies in full control to the end of the script.
+template <class Chain, class Timer = NoTimer>
+uint32_t fly(Chain& chain, Timer& timer) {
+  synthetic::Flight<Chain::kSampleHz> flight;
+  Fnv1a h;
+  bool calibrated = false;
+  for (uint32_t n = 0; n < synthetic::Flight<Chain::kSampleHz>::kTicks; ++n) {
+    const synthetic::Tick t = flight.next();
+    chain.set_pilot(t.sticks);
+    timer.begin();
+    chain.filter(t.sample);
+    timer.end(kFilter);
+    if (!calibrated) {
+      timer.begin();
+      calibrated = chain.calibrate();
+      timer.end(kCalibrate);
+    } else {
+      timer.begin();
+      chain.estimate();
+      timer.end(kEstimate);
+      timer.begin();
+      chain.control_attitude();
+      timer.end(kAttitude);
+      timer.begin();
+      chain.control_yaw();
+      timer.end(kYaw);
+      timer.begin();
+      chain.mix();
+      timer.end(kMix);
+    }
+    fold_readouts(chain, h);
+  }
+  return h.value();
+}
+
+template <class Chain>
+uint32_t fly(Chain& chain) {
+  NoTimer timer;
+  return fly(chain, timer);
+}
+
+}  // namespace qr::chain::checksum
