@@ -1,0 +1,75 @@
+"""The wire as a devboard test script needs it (docs/protocol.md): frames, CRC-8/DVB-S2, a
+byte-stream reader, and the devboard process with a reader thread."""
+import os
+import subprocess
+import threading
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+DEVBOARD = os.path.join(HERE, "..", "..", "scripts", "devboard")
+
+CONTROL, MODE_CHANGE, PARAM_SET, EXIT = 0x11, 0x12, 0x14, 0x1E
+ACK, NACK, TELEMETRY_ATTITUDE, TELEMETRY_SYSTEM = 0x81, 0x82, 0x88, 0x90
+PAYLOAD = {0x81: 2, 0x82: 3, 0x84: 5, 0x87: 9, 0x88: 9, 0x8B: 6, 0x8D: 8, 0x8E: 8, 0x90: 8,
+           0x93: 8, 0x95: 9, 0x96: 9, 0x99: 7}
+TELEMETRY_RATE_HZ = 7  # parameter id
+
+
+def crc8_dvb_s2(data):
+    crc = 0
+    for byte in data:
+        crc ^= byte
+        for _ in range(8):
+            crc = ((crc << 1) ^ 0xD5) & 0xFF if crc & 0x80 else (crc << 1) & 0xFF
+    return crc
+
+
+def frame(msg_type, payload):
+    body = bytes([msg_type]) + bytes(payload)
+    return b"M" + body + bytes([crc8_dvb_s2(body)])
+
+
+def control(lift, roll=0, pitch=0, yaw=0):
+    return frame(CONTROL, b"".join(v.to_bytes(2, "little", signed=s)
+                                   for v, s in ((lift, False), (roll, True), (pitch, True), (yaw, True))))
+
+
+def frames_in(data):
+    """Every frame with a good check in a QR -> PC byte stream, as (type, payload)."""
+    out, i = [], 0
+    while i + 2 < len(data):
+        length = PAYLOAD.get(data[i + 1]) if data[i] == 0x4D else None
+        if length is not None and i + 3 + length <= len(data):
+            body = data[i + 1:i + 2 + length]
+            if crc8_dvb_s2(body) == data[i + 2 + length]:
+                out.append((body[0], bytes(body[1:])))
+                i += 3 + length
+                continue
+        i += 1
+    return out
+
+
+class Devboard:
+    """An ELF on the devboard with its UART on our pipes, read by a thread."""
+
+    def __init__(self, elf, *extra):
+        self.process = subprocess.Popen([DEVBOARD, "--elf", elf, "--stdin", *extra],
+                                        stdin=subprocess.PIPE, stdout=subprocess.PIPE)
+        self.received = bytearray()
+        self.lock = threading.Lock()
+        threading.Thread(target=self._read, daemon=True).start()
+
+    def _read(self):
+        while True:
+            chunk = self.process.stdout.read1(4096)
+            if not chunk:
+                return
+            with self.lock:
+                self.received.extend(chunk)
+
+    def send(self, data):
+        self.process.stdin.write(data)
+        self.process.stdin.flush()
+
+    def snapshot(self):
+        with self.lock:
+            return bytes(self.received)
