@@ -1,0 +1,94 @@
+// Everything the pilot can ask of the console, whichever device the request comes from (a key,
+// the joystick's fire button). Each action has one line of text, used by the help overlay and
+// checked against docs/console.md by a test.
+#pragma once
+
+#include <stddef.h>
+#include <stdint.h>
+
+namespace qrterm {
+
+enum class Action : uint8_t {
+  none,
+  abort,  // panic now; the QR then settles in safe by itself
+  exit,   // command exit, wait for the QR's confirmation, quit
+  mode_safe,
+  mode_panic,
+  mode_manual,
+  mode_calibration,
+  mode_yaw_control,
+  mode_full_control,
+  lift_up,
+  lift_down,
+  roll_left,
+  roll_right,
+  pitch_down,  // nose down: the stick pushed forward
+  pitch_up,    // nose up: the stick pulled back
+  yaw_left,
+  yaw_right,
+  trims_center,
+  yaw_p_up,
+  yaw_p_down,
+  p1_up,
+  p1_down,
+  p2_up,
+  p2_down,
+  c1_up,
+  c1_down,
+  c2_up,
+  c2_down,
+  log_start,
+  log_stop,
+  log_download,
+  params_read,
+  tasks_print,
+  help,
+};
+
+struct ActionSpec {
+  Action action;
+  const char* text;
+};
+
+// Texts stay within kActionTextMax characters: the help overlay shows two columns in 80.
+inline constexpr ActionSpec kActions[] = {
+    {Action::abort, "abort: panic (twice: exit)"},
+    {Action::exit, "exit: QR to safe, then quit"},
+    {Action::mode_safe, "mode safe"},
+    {Action::mode_panic, "mode panic"},
+    {Action::mode_manual, "mode manual"},
+    {Action::mode_calibration, "mode calibration"},
+    {Action::mode_yaw_control, "mode yaw control"},
+    {Action::mode_full_control, "mode full control"},
+    {Action::lift_up, "lift up"},
+    {Action::lift_down, "lift down"},
+    {Action::roll_left, "roll left"},
+    {Action::roll_right, "roll right"},
+    {Action::pitch_down, "pitch down (nose down)"},
+    {Action::pitch_up, "pitch up (nose up)"},
+    {Action::yaw_left, "yaw left"},
+    {Action::yaw_right, "yaw right"},
+    {Action::trims_center, "all trims to zero"},
+    {Action::yaw_p_up, "yaw P up"},
+    {Action::yaw_p_down, "yaw P down"},
+    {Action::p1_up, "P1 (angle gain) up"},
+    {Action::p1_down, "P1 (angle gain) down"},
+    {Action::p2_up, "P2 (rate gain) up"},
+    {Action::p2_down, "P2 (rate gain) down"},
+    {Action::c1_up, "C1 (filter) x2"},
+    {Action::c1_down, "C1 (filter) /2"},
+    {Action::c2_up, "C2 (filter bias) x2"},
+    {Action::c2_down, "C2 (filter bias) /2"},
+    {Action::log_start, "QR logging start"},
+    {Action::log_stop, "QR logging stop"},
+    {Action::log_download, "QR logs download (CSV)"},
+    {Action::params_read, "read parameters back"},
+    {Action::tasks_print, "QR task cycles to the log"},
+    {Action::help, "help on/off"},
+};
+
+inline constexpr size_t kActionTextMax = 30;
+
+const char* action_text(Action action);
+
+}  // namespace qrterm

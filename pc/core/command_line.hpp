@@ -1,0 +1,35 @@
+// qrterm's command line, as a table of options: parsing, defaults and the --help text come from
+// the same rows.
+#pragma once
+
+#include <stdint.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace qrterm {
+
+struct Options {
+  std::optional<std::string> port;  // fly a QR on this serial device; absent: start the simulator
+  uint32_t baud = 115200;
+  std::string sim;                  // empty: <folder of qrterm>/../qr/qrsim
+  std::vector<std::string> sim_arguments;  // passed to the simulator after --serve
+  std::string joystick = "/dev/input/js0";
+  bool no_joystick = false;
+  std::string joystick_map = "./qrterm-joystick.txt";
+  std::string params = "./qrterm-params.txt";
+  std::string log_dir;              // empty: ./logs/<date>-<time>
+  bool help = false;
+};
+
+struct ParsedCommandLine {
+  Options options;
+  std::string error;  // empty when the command line was good
+};
+
+ParsedCommandLine parse_command_line(const std::vector<std::string>& arguments);
+
+std::string usage_text();
+
+}  // namespace qrterm

@@ -1,0 +1,421 @@
+#include <pc/core/console.hpp>
+
+#include <algorithm>
+#include <cstdio>
+
+#include <pc/core/gain_steps.hpp>
+#include <pc/core/hex_log.hpp>
+#include <pc/core/key_map.hpp>
+#include <pc/core/mode_names.hpp>
+#include <pc/core/param_file.hpp>
+#include <pc/core/telemetry_csv.hpp>
+
+namespace qrterm {
+namespace {
+
+struct ModeKey {
+  Action action;
+  wire::Mode mode;
+};
+
+constexpr ModeKey kModeKeys[] = {
+    {Action::mode_safe, wire::Mode::safe},
+    {Action::mode_panic, wire::Mode::panic},
+    {Action::mode_manual, wire::Mode::manual},
+    {Action::mode_calibration, wire::Mode::calibration},
+    {Action::mode_yaw_control, wire::Mode::yaw_control},
+    {Action::mode_full_control, wire::Mode::full_control},
+};
+
+// What the log says when the QR answers a request. Mode changes, log downloads and the exit have
+// more to say and are handled on their own.
+struct RequestText {
+  wire::MessageType type;
+  const char* accepted;  // null: nothing worth a line
+  const char* what;
+};
+
+constexpr RequestText kRequestTexts[] = {
+    {wire::MessageType::mode_change, nullptr, "mode change"},
+    {wire::MessageType::param_set, nullptr, "parameter"},
+    {wire::MessageType::param_get, "reading every parameter back", "parameter read"},
+    {wire::MessageType::log_start, "QR logging (sensor + telemetry)", "log start"},
+    {wire::MessageType::log_stop, "QR logs stopped", "log stop"},
+    {wire::MessageType::log_download, nullptr, "log download"},
+    {wire::MessageType::exit, nullptr, "exit"},
+};
+
+const RequestText& request_text(wire::MessageType type) {
+  for (const RequestText& text : kRequestTexts) {
+    if (text.type == type) return text;
+  }
+  return kRequestTexts[0];
+}
+
+std::string reason_text(wire::NackReason reason) {
+  const wire::NackReasonSpec* spec = wire::find_nack_reason(reason);
+  return spec != nullptr ? spec->text : "refused";
+}
+
+// The QR's scheduler tasks as docs/protocol.md numbers them in telemetry_task.
+constexpr const char* kTaskNames[] = {"link", "filter", "calibration", "estimator", "attitude",
+                                      "yaw", "mixer", "manual", "safety", "telemetry"};
+
+std::string task_name(uint8_t number) {
+  constexpr size_t kCount = sizeof kTaskNames / sizeof kTaskNames[0];
+  return number < kCount ? kTaskNames[number] : "task " + std::to_string(number);
+}
+
+uint8_t id_byte(wire::ParamId id) { return static_cast<uint8_t>(id); }
+
+std::string param_text(wire::ParamId id, int32_t raw) {
+  const wire::ParameterSpec* spec = wire::find_parameter(id_byte(id));
+  return std::string(spec->name) + " = " + format_real(*spec, raw);
+}
+
+}  // namespace
+
+// Every message from the QR, decoded, lands in one of these.
+struct Console::Receiver {
+  Console& console;
+
+  void operator()(const wire::Ack& ack) {
+    console.on_answer(ack.type, ack.seq, wire::NackReason::none, console.link_.answer(ack, console.now_ms_));
+  }
+  void operator()(const wire::Nack& nack) {
+    console.on_answer(nack.type, nack.seq, nack.reason, console.link_.answer(nack, console.now_ms_));
+  }
+  void operator()(const wire::ParamReport& report) {
+    const wire::ParameterSpec* spec = wire::find_parameter(report.id);
+    if (spec == nullptr) return;
+    console.reported_[report.id - 1] = report.value;
+  }
+  void operator()(const wire::DebugText& text) {
+    for (std::string& line : console.debug_text_.add(text)) console.note(Severity::qr, line);
+  }
+  void operator()(const wire::TelemetryAttitude& m) { console.on_attitude(m); }
+  void operator()(const wire::TelemetryRates& m) { console.telemetry_.on(m); }
+  void operator()(const wire::TelemetryEngines& m) { console.telemetry_.on(m); }
+  void operator()(const wire::TelemetrySetpoints& m) { console.telemetry_.on(m); }
+  void operator()(const wire::TelemetrySystem& m) { console.telemetry_.on(m); }
+  void operator()(const wire::TelemetryLink& m) { console.telemetry_.on(m); }
+  void operator()(const wire::TelemetryTask& m) { console.telemetry_.on(m); }
+  void operator()(const wire::SensorLogPart& part) { console.downloader_.on_part(part, console.now_ms_); }
+  void operator()(const wire::TelemetryLogPart& part) { console.downloader_.on_part(part, console.now_ms_); }
+};
+
+Console::Console(ConsoleLog& log, ConsoleFiles files, const Setup& setup, uint32_t now_ms)
+    : log_(log),
+      files_(std::move(files)),
+      start_ms_(now_ms),
+      now_ms_(now_ms),
+      link_(now_ms, setup.first_seq),
+      params_(setup.params),
+      downloader_(LogDownloader::Hooks{
+          [this](const wire::LogDownload& request) { link_.request(request, now_ms_); },
+          [this](Severity severity, const std::string& text) { note(severity, text); },
+          [this](const std::string& name) { return files_.open ? files_.open(name) : nullptr; }}),
+      joystick_(setup.joystick ? JoystickState::ok : JoystickState::none) {
+  if (files_.telemetry_csv != nullptr) telemetry_csv_.emplace(*files_.telemetry_csv, telemetry_csv_header());
+}
+
+void Console::set_time(uint32_t now_ms) { now_ms_ = now_ms; }
+
+void Console::note(Severity severity, const std::string& text) { log_.add(now_ms_ - start_ms_, severity, text); }
+
+void Console::key(Key key, uint32_t now_ms) {
+  set_time(now_ms);
+  const Action action = action_for(key);
+  const bool second_escape = escape_armed_ && action == Action::abort;
+  escape_armed_ = action == Action::abort && !second_escape;
+  if (action != Action::help) help_ = false;  // any other key closes the help, and still acts
+  if (second_escape) {
+    request_exit(now_ms);
+  } else if (action == Action::none) {
+    note(Severity::warning, "key " + key_name(key) + " does nothing (h: help)");
+  } else {
+    act(action, now_ms);
+  }
+}
+
+void Console::act(Action action, uint32_t now_ms) {
+  set_time(now_ms);
+  if (action == Action::abort) return abort("ESC");
+  if (action == Action::help) {
+    help_ = !help_;
+    return;
+  }
+  // While exiting only an abort is still obeyed: the QR is on its way to safe already.
+  if (exit_ != ExitState::running) return;
+  if (action == Action::exit) return request_exit(now_ms);
+  if (controls_.apply(action)) return;
+  if (find_gain_step(action) != nullptr) return step_gain(action);
+  for (const ModeKey& mode_key : kModeKeys) {
+    if (mode_key.action == action) return request_mode(mode_key.mode);
+  }
+  switch (action) {
+    case Action::log_start:
+      link_.request(wire::LogStart{0, wire::kLogSensor | wire::kLogTelemetry}, now_ms_);
+      break;
+    case Action::log_stop:
+      link_.request(wire::LogStop{}, now_ms_);
+      break;
+    case Action::log_download:
+      if (downloader_.active()) {
+        note(Severity::warning, "a log download is running already (" + downloader_.status() + ")");
+      } else {
+        downloader_.start(now_ms_);
+      }
+      break;
+    case Action::params_read:
+      link_.request(wire::ParamGet{0, wire::kAllParameters}, now_ms_);
+      break;
+    case Action::tasks_print:
+      print_tasks();
+      break;
+    default:
+      break;
+  }
+}
+
+void Console::abort(const std::string& why) {
+  // The pilot's inputs are centred too: the QR lands in safe, and leaving safe again needs them
+  // neutral anyway; a lift trim left standing would be the first surprise of the next flight.
+  const bool trimmed = controls_.trims() != Sticks{};
+  controls_.apply(Action::trims_center);
+  note(Severity::error, "ABORT (" + why + "): panic requested" + (trimmed ? ", trims centred" : ""));
+  requested_mode_ = wire::Mode::panic;
+  link_.request(wire::ModeChange{0, wire::Mode::panic}, now_ms_);
+}
+
+void Console::request_mode(wire::Mode mode) {
+  const bool leaving_safe = mode != wire::Mode::safe && mode != wire::Mode::panic;
+  const bool in_safe = !telemetry_.attitude || telemetry_.attitude->mode == wire::Mode::safe;
+  if (leaving_safe && in_safe) {
+    // The QR refuses these too; refusing here as well says exactly what to fix, and keeps a
+    // joystick whose position is unknown from ever taking off.
+    std::string reason;
+    if (joystick_ == JoystickState::lost) {
+      reason = "the joystick is gone (plug it back in, or restart with --no-joystick)";
+    } else if (joystick_ == JoystickState::ok && !joystick_known_) {
+      reason = "the joystick has not reported its position yet";
+    } else {
+      reason = controls_.not_neutral_reason();
+    }
+    if (!reason.empty()) {
+      note(Severity::warning, std::string("not asking for ") + mode_name(mode) + ": " + reason);
+      return;
+    }
+  }
+  note(Severity::info, std::string("asking for mode ") + mode_name(mode));
+  requested_mode_ = mode;
+  // The QR judges "neutral" by the last control it received, which may be up to 20 ms old: a
+  // pilot who centres the trims and at once asks for a mode would be refused. A control message
+  // with the sticks as they are now goes first; frames arrive in order.
+  send_control();
+  link_.request(wire::ModeChange{0, mode}, now_ms_);
+}
+
+void Console::send_control() {
+  last_control_ = controls_.control();
+  link_.send_control(last_control_, now_ms_);
+}
+
+void Console::step_gain(Action action) {
+  const GainStep& step = *find_gain_step(action);
+  const int32_t before = params_.get(step.id);
+  const int32_t after = stepped(step, before);
+  if (after == before) {
+    note(Severity::warning, param_text(step.id, before) + " is at the end of its range");
+    return;
+  }
+  params_.set(id_byte(step.id), after);
+  note(Severity::info, param_text(step.id, after));
+  queue_upload(step.id);
+}
+
+void Console::print_tasks() {
+  if (telemetry_.tasks.empty()) {
+    note(Severity::warning, "no task figures from the QR yet");
+    return;
+  }
+  note(Severity::info, "QR task cycles      min   mean    max");
+  for (const auto& [number, task] : telemetry_.tasks) {
+    char line[64];
+    std::snprintf(line, sizeof line, "  %-14s %6u %6u %6u", task_name(number).c_str(), task.min, task.mean, task.max);
+    note(Severity::info, line);
+  }
+}
+
+void Console::queue_upload(wire::ParamId id) {
+  if (std::find(upload_.begin(), upload_.end(), id) == upload_.end()) upload_.push_back(id);
+}
+
+void Console::joystick_moved(const Sticks& sticks, bool position_known, uint32_t now_ms) {
+  set_time(now_ms);
+  controls_.set_joystick(sticks);
+  joystick_known_ = position_known;
+}
+
+void Console::joystick_fire(uint32_t now_ms) {
+  set_time(now_ms);
+  abort("joystick fire button");
+}
+
+void Console::joystick_lost(uint32_t now_ms) {
+  set_time(now_ms);
+  if (joystick_ != JoystickState::ok) return;
+  joystick_ = JoystickState::lost;
+  joystick_known_ = false;
+  controls_.set_joystick(Sticks{});
+  const bool may_fly = !telemetry_.attitude || (telemetry_.attitude->mode != wire::Mode::safe);
+  if (may_fly) {
+    abort("joystick lost");
+  } else {
+    note(Severity::warning, "joystick lost: flight modes refused until it is back");
+  }
+}
+
+void Console::joystick_back(uint32_t now_ms) {
+  set_time(now_ms);
+  if (joystick_ != JoystickState::lost) return;
+  joystick_ = JoystickState::ok;
+  note(Severity::info, "joystick back: centre it and close the throttle before flying");
+}
+
+void Console::receive(const uint8_t* data, size_t count, uint32_t now_ms) {
+  set_time(now_ms);
+  if (files_.rx_hex != nullptr && count > 0) *files_.rx_hex << hex_line(now_ms - start_ms_, data, count);
+  link_.receive(data, count, now_ms, [this](const wire::Frame& frame) { on_frame(frame); });
+}
+
+void Console::on_frame(const wire::Frame& frame) {
+  Receiver receiver{*this};
+  wire::dispatch(frame, receiver);
+}
+
+void Console::on_attitude(const wire::TelemetryAttitude& attitude) {
+  const std::optional<wire::TelemetryAttitude> before = telemetry_.attitude;
+  telemetry_.on(attitude);
+  if (!before || before->mode != attitude.mode) {
+    note(attitude.mode == wire::Mode::panic ? Severity::warning : Severity::info,
+         std::string("QR mode: ") + mode_name(attitude.mode));
+  }
+  const auto rose = [&](uint8_t bit) { return (attitude.flags & bit) != 0 && (!before || (before->flags & bit) == 0); };
+  if (rose(wire::kFlagCalibrated)) note(Severity::info, "QR calibrated");
+  if (rose(wire::kFlagBatteryWarning)) note(Severity::warning, "QR battery low");
+  if (rose(wire::kFlagLogFull)) note(Severity::warning, "QR log full");
+  if (telemetry_csv_) telemetry_csv_->write(telemetry_csv_row(now_ms_ - start_ms_, telemetry_, last_control_));
+}
+
+void Console::on_answer(wire::MessageType type, uint8_t seq, wire::NackReason reason, const Answer& answer) {
+  (void)seq;
+  // A stale or unexpected answer (to a replaced request, or a repeat of one already taken) says
+  // nothing about what is in force now.
+  if (answer.match != wire::AnswerMatch::matched) return;
+  const bool refused = reason != wire::NackReason::none;
+  if (type == wire::MessageType::exit) {
+    return refused ? finish_exit(Severity::warning, "the QR refused the exit: " + reason_text(reason), false)
+                   : finish_exit(Severity::info, "the QR confirmed the exit", true);
+  }
+  if (type == wire::MessageType::log_download) {
+    return refused ? downloader_.on_nack(reason) : downloader_.on_ack(now_ms_);
+  }
+  if (type == wire::MessageType::mode_change) {
+    const std::string mode = requested_mode_ ? mode_name(*requested_mode_) : "?";
+    if (refused) note(Severity::warning, "QR refused mode " + mode + ": " + reason_text(reason));
+    return;
+  }
+  const RequestText& text = request_text(type);
+  if (refused) {
+    note(Severity::warning, std::string("QR refused the ") + text.what + ": " + reason_text(reason));
+  } else if (text.accepted != nullptr) {
+    note(Severity::info, text.accepted);
+  }
+}
+
+void Console::on_gave_up(const wire::ResendEvent& event) {
+  const RequestText& text = request_text(event.type);
+  if (event.type == wire::MessageType::exit) {
+    return finish_exit(Severity::error, "no answer from the QR to the exit", false);
+  }
+  if (event.type == wire::MessageType::log_download) return downloader_.on_gave_up();
+  note(Severity::error, std::string("no answer from the QR to the ") + text.what + " request (" +
+                            std::to_string(wire::kMaxSends) + " sends)");
+}
+
+void Console::on_link_state(LinkState state) {
+  const LinkState before = link_state_;
+  link_state_ = state;
+  if (state == LinkState::up) {
+    note(Severity::info, before == LinkState::lost ? "link back" : "link up");
+    // The QR may have restarted with its defaults: every parameter goes up again.
+    for (const wire::ParameterSpec& spec : wire::kParameterTable) queue_upload(spec.id);
+    upload_announced_ = false;
+  } else if (state == LinkState::lost) {
+    note(Severity::error, "LINK LOST: no valid frame from the QR for " + std::to_string(kLinkLostAfterMs / 1000) + " s");
+  }
+}
+
+void Console::line_closed(const std::string& why, uint32_t now_ms) {
+  set_time(now_ms);
+  if (link_state_ == LinkState::closed) return;
+  link_.close();
+  link_state_ = LinkState::closed;
+  note(Severity::error, "LINK LOST: " + why);
+  if (exit_ == ExitState::waiting_for_qr) finish_exit(Severity::warning, "exit not confirmed: the line is gone", false);
+}
+
+void Console::request_exit(uint32_t now_ms) {
+  set_time(now_ms);
+  if (exit_ == ExitState::done) return;
+  if (exit_ == ExitState::waiting_for_qr) {
+    return finish_exit(Severity::warning, "exit without waiting for the QR", false);
+  }
+  const LinkState state = link_.state(now_ms);
+  if (state == LinkState::closed || !link_.ever_up()) {
+    return finish_exit(Severity::info, "exit: no QR to tell", false);
+  }
+  note(Severity::info, "exit: asking the QR to go to safe and stop");
+  exit_ = ExitState::waiting_for_qr;
+  exit_started_ms_ = now_ms;
+  link_.request(wire::Exit{}, now_ms);
+}
+
+void Console::finish_exit(Severity severity, const std::string& why, bool confirmed) {
+  note(severity, why);
+  exit_ = ExitState::done;
+  exit_confirmed_ = confirmed;
+}
+
+void Console::tick(uint32_t now_ms) {
+  set_time(now_ms);
+  if (exit_ == ExitState::done) return;
+
+  const LinkState state = link_.state(now_ms);
+  if (state != link_state_) on_link_state(state);
+
+  if (state != LinkState::closed && link_.control_due(now_ms)) send_control();
+  link_.poll(now_ms, [this](const wire::ResendEvent& event) { on_gave_up(event); });
+
+  if (state == LinkState::up && exit_ == ExitState::running && !upload_.empty() &&
+      !link_.pending(wire::MessageType::param_set)) {
+    if (!upload_announced_ && upload_.size() > 1) note(Severity::info, "sending " + std::to_string(upload_.size()) + " parameters");
+    upload_announced_ = true;
+    const wire::ParamId id = upload_.front();
+    upload_.pop_front();
+    link_.request(wire::ParamSet{0, id_byte(id), params_.get(id)}, now_ms);
+  }
+
+  downloader_.tick(now_ms);
+  if (exit_ == ExitState::waiting_for_qr && now_ms - exit_started_ms_ >= kExitWaitMs) {
+    finish_exit(Severity::error, "no answer from the QR to the exit", false);
+  }
+}
+
+std::optional<int32_t> Console::reported(wire::ParamId id) const {
+  const size_t row = static_cast<size_t>(id_byte(id)) - 1;
+  return row < wire::kParameterCount ? reported_[row] : std::nullopt;
+}
+
+}  // namespace qrterm

@@ -1,0 +1,142 @@
+// The console's logic, without a screen: keys and joystick in, requests and control out through
+// the LinkSession, what comes back into the TelemetryModel and the ConsoleLog, parameters up at
+// connect, logs down on request, and the exit handshake. The ncurses Cockpit draws from it and the
+// main loop feeds it; tests drive it with a scripted clock against a fake QR.
+#pragma once
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include <deque>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include <common/messages.hpp>
+#include <common/parameter_table.hpp>
+#include <pc/core/console_log.hpp>
+#include <pc/core/csv_writer.hpp>
+#include <pc/core/debug_text.hpp>
+#include <pc/core/key.hpp>
+#include <pc/core/link_session.hpp>
+#include <pc/core/log_downloader.hpp>
+#include <pc/core/pilot_controls.hpp>
+#include <pc/core/telemetry_model.hpp>
+
+namespace qrterm {
+
+// How long the console waits for the QR to confirm an exit: the resend queue's 1 s of tries, and
+// a little for the last answer to arrive.
+inline constexpr uint32_t kExitWaitMs = wire::kGiveUpAfterMs + 200;
+
+// Where the console writes; any may be absent.
+struct ConsoleFiles {
+  std::ostream* rx_hex = nullptr;
+  std::ostream* telemetry_csv = nullptr;
+  std::function<std::unique_ptr<std::ostream>(const std::string& name)> open;  // a new file in the log folder
+};
+
+enum class JoystickState : uint8_t {
+  none,  // keyboard only (--no-joystick)
+  ok,
+  lost,  // it was there and went away
+};
+
+class Console {
+ public:
+  struct Setup {
+    wire::ParameterValues params;  // sent to the QR whenever the link comes up
+    bool joystick = false;         // a joystick is part of the cockpit
+    uint8_t first_seq = 0;         // of every request type (docs/protocol.md section 6)
+  };
+
+  Console(ConsoleLog& log, ConsoleFiles files, const Setup& setup, uint32_t now_ms);
+
+  // --- what comes in
+  void key(Key key, uint32_t now_ms);
+  void act(Action action, uint32_t now_ms);
+  void joystick_moved(const Sticks& sticks, bool position_known, uint32_t now_ms);
+  void joystick_fire(uint32_t now_ms);  // the abort button
+  void joystick_lost(uint32_t now_ms);
+  void joystick_back(uint32_t now_ms);
+  void receive(const uint8_t* data, size_t count, uint32_t now_ms);
+  void line_closed(const std::string& why, uint32_t now_ms);
+  // x, a second ESC, a signal. A second call while waiting for the QR quits without waiting.
+  void request_exit(uint32_t now_ms);
+  // Timers: control at 50 Hz, resends, parameter upload, link state, log download, exit wait.
+  void tick(uint32_t now_ms);
+  // A message from elsewhere in the program (the simulator's output, the main loop).
+  void note(Severity severity, const std::string& text);
+
+  // --- what goes out
+  std::vector<uint8_t>& output() { return link_.output(); }
+  bool finished() const { return exit_ == ExitState::done; }
+  bool exit_confirmed() const { return exit_confirmed_; }
+
+  // --- what the screen shows
+  uint32_t now_ms() const { return now_ms_; }
+  uint32_t uptime_ms() const { return now_ms_ - start_ms_; }
+  LinkState link_state() const { return link_.state(now_ms_); }
+  const LinkSession& link() const { return link_; }
+  const TelemetryModel& telemetry() const { return telemetry_; }
+  const PilotControls& controls() const { return controls_; }
+  const wire::Control& last_control() const { return last_control_; }
+  const wire::ParameterValues& params() const { return params_; }
+  std::optional<int32_t> reported(wire::ParamId id) const;
+  JoystickState joystick_state() const { return joystick_; }
+  bool joystick_position_known() const { return joystick_known_; }
+  bool help_visible() const { return help_; }
+  bool exiting() const { return exit_ != ExitState::running; }
+  std::string download_status() const { return downloader_.status(); }
+  size_t parameters_to_send() const { return upload_.size(); }
+  const ConsoleLog& log() const { return log_; }
+
+ private:
+  enum class ExitState : uint8_t { running, waiting_for_qr, done };
+  struct Receiver;
+  friend struct Receiver;
+
+  void set_time(uint32_t now_ms);
+  void abort(const std::string& why);
+  void request_mode(wire::Mode mode);
+  void send_control();
+  void step_gain(Action action);
+  void print_tasks();
+  void queue_upload(wire::ParamId id);
+  void finish_exit(Severity severity, const std::string& why, bool confirmed);
+  void on_frame(const wire::Frame& frame);
+  void on_answer(wire::MessageType type, uint8_t seq, wire::NackReason reason, const Answer& answer);
+  void on_gave_up(const wire::ResendEvent& event);
+  void on_attitude(const wire::TelemetryAttitude& attitude);
+  void on_link_state(LinkState state);
+
+  ConsoleLog& log_;
+  ConsoleFiles files_;
+  std::optional<CsvWriter> telemetry_csv_;
+  uint32_t start_ms_;
+  uint32_t now_ms_;
+  LinkSession link_;
+  LinkState link_state_ = LinkState::waiting;
+  TelemetryModel telemetry_;
+  DebugTextAssembler debug_text_;
+  PilotControls controls_;
+  wire::Control last_control_;
+  wire::ParameterValues params_;
+  std::optional<int32_t> reported_[wire::kParameterCount];
+  std::deque<wire::ParamId> upload_;
+  bool upload_announced_ = false;
+  LogDownloader downloader_;
+  JoystickState joystick_;
+  bool joystick_known_ = false;
+  bool escape_armed_ = false;  // the last key was ESC: another one exits
+  bool help_ = false;
+  ExitState exit_ = ExitState::running;
+  uint32_t exit_started_ms_ = 0;
+  bool exit_confirmed_ = false;
+  std::optional<wire::Mode> requested_mode_;
+};
+
+}  // namespace qrterm

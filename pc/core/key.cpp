@@ -1,0 +1,25 @@
+#include <pc/core/key.hpp>
+
+namespace qrterm {
+namespace {
+
+struct NamedKey {
+  Key key;
+  const char* name;
+};
+
+constexpr NamedKey kNamedKeys[] = {
+    {kKeyEscape, "ESC"}, {kKeyUp, "up"}, {kKeyDown, "down"}, {kKeyLeft, "left"}, {kKeyRight, "right"}, {' ', "space"},
+};
+
+}  // namespace
+
+std::string key_name(Key key) {
+  for (const NamedKey& named : kNamedKeys) {
+    if (named.key == key) return named.name;
+  }
+  if (key > ' ' && key < 0x7F) return std::string(1, static_cast<char>(key));
+  return "key " + std::to_string(key);
+}
+
+}  // namespace qrterm

@@ -1,0 +1,25 @@
+// A key as the console sees it: a character code, or one of the named keys below. The screen
+// layer translates its terminal library's codes into these, so the key map knows nothing of
+// ncurses and can be tested without a terminal.
+#pragma once
+
+#include <stdint.h>
+
+#include <string>
+
+namespace qrterm {
+
+using Key = int32_t;
+
+inline constexpr Key kKeyNone = -1;
+inline constexpr Key kKeyEscape = 27;
+// Outside the range of characters, so they never collide with a typed letter.
+inline constexpr Key kKeyUp = 0x110000;
+inline constexpr Key kKeyDown = 0x110001;
+inline constexpr Key kKeyLeft = 0x110002;
+inline constexpr Key kKeyRight = 0x110003;
+
+// "ESC", "up", "a", "?": what the help overlay and the documentation call the key.
+std::string key_name(Key key);
+
+}  // namespace qrterm

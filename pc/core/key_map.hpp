@@ -1,0 +1,60 @@
+// The keyboard, as one table: key -> action. The IN4073 map (ESC, 0-5, a/z, arrows, q/w, u/j,
+// i/k, o/l) plus our keys for the filter constants, logs, parameters and help.
+#pragma once
+
+#include <stddef.h>
+
+#include <pc/core/action.hpp>
+#include <pc/core/key.hpp>
+
+namespace qrterm {
+
+struct KeyBinding {
+  Key key;
+  Action action;
+};
+
+inline constexpr KeyBinding kKeyMap[] = {
+    {kKeyEscape, Action::abort},
+    {'x', Action::exit},
+    {'0', Action::mode_safe},
+    {'1', Action::mode_panic},
+    {'2', Action::mode_manual},
+    {'3', Action::mode_calibration},
+    {'4', Action::mode_yaw_control},
+    {'5', Action::mode_full_control},
+    {'a', Action::lift_up},
+    {'z', Action::lift_down},
+    {kKeyLeft, Action::roll_left},
+    {kKeyRight, Action::roll_right},
+    {kKeyUp, Action::pitch_down},
+    {kKeyDown, Action::pitch_up},
+    {'q', Action::yaw_left},
+    {'w', Action::yaw_right},
+    {'c', Action::trims_center},
+    {'u', Action::yaw_p_up},
+    {'j', Action::yaw_p_down},
+    {'i', Action::p1_up},
+    {'k', Action::p1_down},
+    {'o', Action::p2_up},
+    {'l', Action::p2_down},
+    {'e', Action::c1_up},
+    {'d', Action::c1_down},
+    {'r', Action::c2_up},
+    {'f', Action::c2_down},
+    {'s', Action::log_start},
+    {'t', Action::log_stop},
+    {'g', Action::log_download},
+    {'p', Action::params_read},
+    {'b', Action::tasks_print},
+    {'h', Action::help},
+    {'?', Action::help},
+};
+
+inline constexpr size_t kKeyBindingCount = sizeof(kKeyMap) / sizeof(kKeyMap[0]);
+
+// The action bound to a key; Action::none for an unbound key. Capital letters act like small ones,
+// so a pilot with caps lock on still has every key (the map binds no capital letter).
+Action action_for(Key key);
+
+}  // namespace qrterm

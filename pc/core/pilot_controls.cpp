@@ -1,0 +1,67 @@
+#include <pc/core/pilot_controls.hpp>
+
+#include <algorithm>
+
+#include <common/units.hpp>
+
+namespace qrterm {
+namespace {
+
+struct TrimStep {
+  Action action;
+  int32_t Sticks::*axis;
+  int32_t step;
+};
+
+constexpr TrimStep kTrimSteps[] = {
+    {Action::lift_up, &Sticks::lift, kLiftTrimStep},     {Action::lift_down, &Sticks::lift, -kLiftTrimStep},
+    {Action::roll_right, &Sticks::roll, kStickTrimStep}, {Action::roll_left, &Sticks::roll, -kStickTrimStep},
+    {Action::pitch_up, &Sticks::pitch, kStickTrimStep},  {Action::pitch_down, &Sticks::pitch, -kStickTrimStep},
+    {Action::yaw_right, &Sticks::yaw, kStickTrimStep},   {Action::yaw_left, &Sticks::yaw, -kStickTrimStep},
+};
+
+constexpr int32_t kLiftMax = wire::kLiftMax;
+constexpr int32_t kStickMax = wire::kStickMax;
+
+int16_t stick(int32_t value) { return static_cast<int16_t>(std::clamp(value, -kStickMax, kStickMax)); }
+
+}  // namespace
+
+bool PilotControls::apply(Action action) {
+  if (action == Action::trims_center) {
+    trims_ = Sticks{};
+    return true;
+  }
+  for (const TrimStep& trim : kTrimSteps) {
+    if (trim.action != action) continue;
+    int32_t& value = trims_.*trim.axis;
+    const bool lift = trim.axis == &Sticks::lift;
+    value = std::clamp(value + trim.step, lift ? 0 : -kStickMax, lift ? kLiftMax : kStickMax);
+    return true;
+  }
+  return false;
+}
+
+wire::Control PilotControls::control() const {
+  wire::Control c;
+  c.lift = static_cast<uint16_t>(std::clamp(joystick_.lift + trims_.lift, 0, kLiftMax));
+  c.roll = stick(joystick_.roll + trims_.roll);
+  c.pitch = stick(joystick_.pitch + trims_.pitch);
+  c.yaw = stick(joystick_.yaw + trims_.yaw);
+  return c;
+}
+
+std::string PilotControls::not_neutral_reason() const {
+  std::string reason;
+  const auto note = [&reason](bool off, const char* what) {
+    if (!off) return;
+    if (!reason.empty()) reason += ", ";
+    reason += what;
+  };
+  note(joystick_.lift != 0, "joystick throttle not at zero");
+  note(joystick_.roll != 0 || joystick_.pitch != 0 || joystick_.yaw != 0, "joystick stick or twist not centred");
+  note(trims_ != Sticks{}, "keyboard trims not zero (c centres them)");
+  return reason;
+}
+
+}  // namespace qrterm

@@ -1,0 +1,40 @@
+// What the pilot asks for: the joystick's position plus the keyboard's trims, clamped to the
+// wire's ranges. The IN4073 way: keys add to the stick rather than replace it, so a pilot can fly
+// the joystick and correct a drift with a few presses.
+#pragma once
+
+#include <string>
+
+#include <common/requests.hpp>
+#include <pc/core/action.hpp>
+#include <pc/core/sticks.hpp>
+
+namespace qrterm {
+
+// How far one key press moves a trim, per mille of full deflection.
+inline constexpr int32_t kLiftTrimStep = 10;
+inline constexpr int32_t kStickTrimStep = 10;
+
+class PilotControls {
+ public:
+  // A trim action (lift/roll/pitch/yaw up/down, centre): applies it and returns true. Any other
+  // action is not ours: false.
+  bool apply(Action action);
+
+  void set_joystick(const Sticks& sticks) { joystick_ = sticks; }
+  const Sticks& joystick() const { return joystick_; }
+  const Sticks& trims() const { return trims_; }
+
+  // Joystick plus trims, clamped: what goes out in the next control message.
+  wire::Control control() const;
+
+  // Leaving safe needs neutral controls (docs/safety.md rule 3). Empty when neutral; otherwise
+  // what is not, and what to do about it, for the pilot.
+  std::string not_neutral_reason() const;
+
+ private:
+  Sticks joystick_;
+  Sticks trims_;
+};
+
+}  // namespace qrterm

@@ -1,0 +1,38 @@
+// The QR as the console last heard it: the latest of each telemetry group, what it says about
+// lost telemetry, and when each group last arrived. The screen draws from it; the telemetry CSV
+// writes it out.
+#pragma once
+
+#include <stdint.h>
+
+#include <map>
+#include <optional>
+
+#include <common/telemetry.hpp>
+
+namespace qrterm {
+
+struct TelemetryModel {
+  std::optional<wire::TelemetryAttitude> attitude;
+  std::optional<wire::TelemetryRates> rates;
+  std::optional<wire::TelemetryEngines> engines;
+  std::optional<wire::TelemetrySetpoints> setpoints;
+  std::optional<wire::TelemetrySystem> system;
+  std::optional<wire::TelemetryLink> qr_link;  // the QR's receive counters: the uplink's health
+  std::map<uint8_t, wire::TelemetryTask> tasks;  // cycle figures by task number, one task per telemetry period
+
+  uint32_t attitude_frames = 0;
+  uint32_t attitude_lost = 0;  // from gaps in the attitude tick
+
+  void on(const wire::TelemetryAttitude& message);
+  void on(const wire::TelemetryRates& message) { rates = message; }
+  void on(const wire::TelemetryEngines& message) { engines = message; }
+  void on(const wire::TelemetrySetpoints& message) { setpoints = message; }
+  void on(const wire::TelemetrySystem& message) { system = message; }
+  void on(const wire::TelemetryLink& message) { qr_link = message; }
+  void on(const wire::TelemetryTask& message) { tasks[message.task] = message; }
+
+  bool flag(uint8_t bit) const { return attitude && (attitude->flags & bit) != 0; }
+};
+
+}  // namespace qrterm

@@ -1,0 +1,318 @@
+#include <pc/ui/cockpit.hpp>
+
+#include <ncurses.h>
+
+#include <algorithm>
+#include <cstdarg>
+#include <cstdio>
+
+#include <pc/core/key_map.hpp>
+#include <pc/core/mode_names.hpp>
+#include <pc/core/param_file.hpp>
+#include <pc/ui/terminal.hpp>
+
+namespace qrterm {
+namespace {
+
+constexpr double kDegPerRad = 57.29577951308232;
+
+std::string text(const char* format, ...) __attribute__((format(printf, 1, 2)));
+std::string text(const char* format, ...) {
+  char buffer[512];
+  va_list arguments;
+  va_start(arguments, format);
+  std::vsnprintf(buffer, sizeof buffer, format, arguments);
+  va_end(arguments);
+  return buffer;
+}
+
+// Writes `s` at (row, column), cut at the right edge.
+void put(int row, int column, const std::string& s, short pair = 0, attr_t attributes = A_NORMAL) {
+  const int room = COLS - column;
+  if (row < 0 || row >= LINES || room <= 0) return;
+  attron(COLOR_PAIR(pair) | attributes);
+  mvaddnstr(row, column, s.c_str(), std::min(room, static_cast<int>(s.size())));
+  attroff(COLOR_PAIR(pair) | attributes);
+}
+
+double degrees(int32_t ten_thousandths_rad) { return ten_thousandths_rad * 1e-4 * kDegPerRad; }
+double degrees_per_s(int32_t thousandths_rad_s) { return thousandths_rad_s * 1e-3 * kDegPerRad; }
+
+short mode_color(wire::Mode mode) {
+  if (mode == wire::Mode::panic) return kAlarm;
+  if (is_flight_mode(mode)) return kWarning;
+  return mode == wire::Mode::calibration ? kQr : kInfo;
+}
+
+short severity_color(Severity severity) {
+  constexpr short kColors[] = {kInfo, kWarning, kError, kQr};
+  return kColors[static_cast<size_t>(severity)];
+}
+
+// Engines, attitude and so on are blank until their telemetry group has arrived: a zero would
+// look like data.
+constexpr const char* kUnknown = "--";
+
+}  // namespace
+
+void Cockpit::draw_title(const Console& console, int width) {
+  attron(COLOR_PAIR(kTitle));
+  mvhline(0, 0, ' ', width);
+  attroff(COLOR_PAIR(kTitle));
+  std::string title = text(" qrterm | %s | %.1f s | logs %s", labels_.source.c_str(), console.uptime_ms() / 1000.0,
+                           labels_.log_folder.c_str());
+  put(0, 0, title, kTitle);
+  put(0, width - 11, " h: help ", kTitle, A_BOLD);
+}
+
+void Cockpit::draw_mode_and_link(const Console& console, int width) {
+  const TelemetryModel& t = console.telemetry();
+  const LinkState state = console.link_state();
+  put(1, 0, "MODE", 0, A_BOLD);
+  if (!t.attitude) {
+    put(1, 5, " unknown ", kDim);
+  } else if (state != LinkState::up) {
+    put(1, 5, text(" %s? ", mode_name(t.attitude->mode)), kDim);  // the last mode heard, maybe no longer true
+  } else {
+    put(1, 5, text(" %s ", mode_name(t.attitude->mode)), mode_color(t.attitude->mode), A_BOLD | A_REVERSE);
+  }
+  const LinkFigures& f = console.link().figures();
+  const wire::LinkCounters& c = console.link().counters();
+  if (state == LinkState::lost || state == LinkState::closed) {
+    attron(COLOR_PAIR(kAlarm) | A_BOLD);
+    mvhline(1, 20, ' ', width - 20);
+    attroff(COLOR_PAIR(kAlarm) | A_BOLD);
+    const std::string why = state == LinkState::closed ? "serial line gone"
+                                                       : text("no valid frame for %.1f s", console.link().silence_ms(console.now_ms()) / 1000.0);
+    put(1, 21, "LINK LOST  " + why, kAlarm, A_BOLD | A_BLINK);
+    return;
+  }
+  put(1, 20, "LINK", 0, A_BOLD);
+  put(1, 25, state == LinkState::up ? "up" : "waiting", state == LinkState::up ? kInfo : kWarning, A_BOLD);
+  const std::string rtt = f.round_trip_ms >= 0 ? text("%d ms", f.round_trip_ms) : std::string(kUnknown);
+  put(1, 34, text("%3u frames/s   round trip %-6s  bad %u", f.frames_per_s, rtt.c_str(), c.check_failures));
+  (void)width;
+}
+
+void Cockpit::draw_system(const Console& console, int width) {
+  const TelemetryModel& t = console.telemetry();
+  if (t.system) {
+    const wire::TelemetrySystem& s = *t.system;
+    const bool low = t.flag(wire::kFlagBatteryWarning);
+    put(2, 0, "battery", 0, A_BOLD);
+    put(2, 8, text("%5.2f V", s.battery_mv / 1000.0), low ? kError : kInfo, low ? A_BOLD | A_REVERSE : A_NORMAL);
+    put(2, 18, text("cpu %5.1f %%   loop %5u us   deadline misses %u", s.cpu_load / 10.0, s.loop_time_us, s.deadline_misses));
+  } else {
+    put(2, 0, "battery", 0, A_BOLD);
+    put(2, 8, "-- V", kDim);
+    put(2, 18, "cpu -- %   loop -- us   deadline misses --", kDim);
+  }
+  int column = 0;
+  put(3, column, "QR", 0, A_BOLD);
+  column += 3;
+  struct Flag {
+    uint8_t bit;
+    const char* name;
+    short pair;
+  };
+  constexpr Flag kFlags[] = {{wire::kFlagCalibrated, "calibrated", kInfo},
+                             {wire::kFlagLogging, "logging", kQr},
+                             {wire::kFlagBatteryWarning, "battery low", kError},
+                             {wire::kFlagLogFull, "log full", kWarning}};
+  if (t.attitude && (t.attitude->flags & 0x0F) == 0) put(3, column, "not calibrated", kDim);
+  for (const Flag& flag : kFlags) {
+    if (!t.flag(flag.bit)) continue;
+    put(3, column, flag.name, flag.pair, A_BOLD);
+    column += static_cast<int>(std::string(flag.name).size()) + 1;
+  }
+  std::string status = console.download_status();
+  if (console.parameters_to_send() > 0) status += text("%sparameters to send: %zu", status.empty() ? "" : "  ", console.parameters_to_send());
+  if (console.exiting()) status = "exiting: waiting for the QR";
+  put(3, std::max(column + 2, 44), status, kQr, A_BOLD);
+  (void)width;
+}
+
+void Cockpit::draw_engines_and_attitude(const Console& console, int width) {
+  const TelemetryModel& t = console.telemetry();
+  constexpr const char* kEngineNames[] = {"front", "right", "back", "left"};
+  const int half = width / 2;
+  const int bar = std::max(10, half - 14);
+  for (int i = 0; i < 4; ++i) {
+    const int row = 4 + i;
+    put(row, 0, kEngineNames[i], 0, A_BOLD);
+    if (!t.engines) {
+      put(row, 6, text("%4s", kUnknown), kDim);
+      continue;
+    }
+    const int value = t.engines->engine[i];
+    put(row, 6, text("%4d", value));
+    const int filled = value * bar / 1000;
+    put(row, 11, std::string(static_cast<size_t>(filled), '#'), kBar, A_BOLD);
+    put(row, 11 + filled, std::string(static_cast<size_t>(bar - filled), '.'), kDim);
+  }
+  const int x = half + 2;
+  put(4, x, "        angle deg   rate deg/s", 0, A_BOLD);
+  constexpr const char* kAxes[] = {"roll", "pitch", "yaw"};
+  for (int i = 0; i < 3; ++i) {
+    std::string angle = kUnknown;
+    std::string rate = kUnknown;
+    if (t.attitude) {
+      const int16_t a[] = {t.attitude->phi, t.attitude->theta, t.attitude->psi};
+      angle = text("%+8.2f", degrees(a[i]));
+    }
+    if (t.rates) {
+      const int16_t r[] = {t.rates->p, t.rates->q, t.rates->r};
+      rate = text("%+8.1f", degrees_per_s(r[i]));
+    }
+    put(5 + i, x, text("%-6s %9s %12s", kAxes[i], angle.c_str(), rate.c_str()));
+  }
+}
+
+void Cockpit::draw_pilot(const Console& console, int width) {
+  const TelemetryModel& t = console.telemetry();
+  put(8, 0, "set-point", 0, A_BOLD);
+  if (t.setpoints) {
+    const wire::TelemetrySetpoints& s = *t.setpoints;
+    put(8, 10, text("lift %4u  roll %+6.1f deg  pitch %+6.1f deg  yaw rate %+6.1f deg/s", s.lift, degrees(s.roll),
+                    degrees(s.pitch), degrees_per_s(s.yaw_rate)));
+  } else {
+    put(8, 10, "--", kDim);
+  }
+  const wire::Control& c = console.last_control();
+  put(9, 0, "sending", 0, A_BOLD);
+  put(9, 10, text("lift %4u  roll %+5d  pitch %+5d  yaw %+5d", c.lift, c.roll, c.pitch, c.yaw));
+  const Sticks& trims = console.controls().trims();
+  put(10, 0, "trims", 0, A_BOLD);
+  put(10, 10, text("lift %4d  roll %+5d  pitch %+5d  yaw %+5d", trims.lift, trims.roll, trims.pitch, trims.yaw),
+      trims == Sticks{} ? 0 : kWarning);
+
+  const int js = 57;
+  put(9, js, "joystick", 0, A_BOLD);
+  switch (console.joystick_state()) {
+    case JoystickState::none: put(9, js + 9, "none (keys)", kDim); break;
+    case JoystickState::lost: put(9, js + 9, "LOST", kError, A_BOLD | A_REVERSE); break;
+    case JoystickState::ok: {
+      const bool neutral = console.controls().joystick() == Sticks{};
+      put(9, js + 9, !console.joystick_position_known() ? "no position" : neutral ? "neutral" : "active",
+          !console.joystick_position_known() ? kWarning : kInfo);
+      break;
+    }
+  }
+  const Sticks& j = console.controls().joystick();
+  if (console.joystick_state() == JoystickState::ok) put(10, js, text("js %4d %+5d %+5d %+5d", j.lift, j.roll, j.pitch, j.yaw), kDim);
+
+  // Gains as the QR reported them; '*' marks a value the QR has not confirmed (yet).
+  put(11, 0, "gains", 0, A_BOLD);
+  struct Gain {
+    wire::ParamId id;
+    const char* label;
+  };
+  constexpr Gain kGains[] = {{wire::ParamId::yaw_p, "yaw P"}, {wire::ParamId::roll_pitch_p1, "P1"},
+                             {wire::ParamId::roll_pitch_p2, "P2"}, {wire::ParamId::kalman_c1, "C1"},
+                             {wire::ParamId::kalman_c2, "C2"}};
+  int column = 10;
+  bool unconfirmed = false;
+  for (const Gain& gain : kGains) {
+    const wire::ParameterSpec& spec = *wire::find_parameter(static_cast<uint8_t>(gain.id));
+    const int32_t wanted = console.params().get(gain.id);
+    const std::optional<int32_t> in_force = console.reported(gain.id);
+    const bool confirmed = in_force && *in_force == wanted;
+    unconfirmed = unconfirmed || !confirmed;
+    const std::string s = text("%s %s%s", gain.label, format_real(spec, wanted).c_str(), confirmed ? "" : "*");
+    put(11, column, s, confirmed ? 0 : kWarning);
+    column += static_cast<int>(s.size()) + 2;
+  }
+  if (unconfirmed) put(11, column, "(* not confirmed by the QR)", kDim);
+
+  const LinkFigures& f = console.link().figures();
+  put(12, 0, "link", 0, A_BOLD);
+  std::string uplink = t.qr_link ? text("   QR received %u ok, %u bad", t.qr_link->frames_ok, t.qr_link->check_failures) : "";
+  put(12, 10, text("resent %u  no answer %u  telemetry lost %u%s", f.resends, f.gave_up, t.attitude_lost, uplink.c_str()));
+  (void)width;
+}
+
+void Cockpit::draw_log(const Console& console, int top, int rows, int width) {
+  // A plain '-' rule: line-drawing characters turn into letters in some terminals and captures.
+  put(top - 1, 0, std::string(static_cast<size_t>(width), '-'), kDim);
+  put(top - 1, 2, " log ", kDim);
+  // Newest at the bottom; long lines wrap under their time stamp.
+  constexpr int kStamp = 9;
+  const int room = std::max(10, width - kStamp);
+  int row = top + rows - 1;
+  const auto& lines = console.log().lines();
+  for (auto it = lines.rbegin(); it != lines.rend() && row >= top; ++it) {
+    std::vector<std::string> pieces;
+    for (size_t at = 0; at < it->text.size() || pieces.empty(); at += static_cast<size_t>(room)) {
+      pieces.push_back(it->text.substr(at, static_cast<size_t>(room)));
+    }
+    for (auto piece = pieces.rbegin(); piece != pieces.rend() && row >= top; ++piece, --row) {
+      if (piece + 1 == pieces.rend()) put(row, 0, format_seconds(it->time_ms), kDim);
+      put(row, kStamp, *piece, severity_color(it->severity), it->severity == Severity::error ? A_BOLD : A_NORMAL);
+    }
+  }
+}
+
+void Cockpit::draw_link_alarm(const Console& console, int width) {
+  const LinkState state = console.link_state();
+  if (state != alarmed_ && (state == LinkState::lost || state == LinkState::closed)) beep();
+  alarmed_ = state;
+  if (state != LinkState::lost && state != LinkState::closed) return;
+  const int box = 40;
+  const int left = (width - box) / 2;
+  const std::string line2 = state == LinkState::closed
+                                ? "the serial line is gone"
+                                : text("no valid frame for %.1f s", console.link().silence_ms(console.now_ms()) / 1000.0);
+  const std::string rows[] = {"", "L I N K   L O S T", line2, "x: exit", ""};
+  for (int i = 0; i < 5; ++i) {
+    std::string s = rows[i];
+    const int pad = (box - static_cast<int>(s.size())) / 2;
+    s = std::string(static_cast<size_t>(std::max(0, pad)), ' ') + s;
+    s.resize(static_cast<size_t>(box), ' ');
+    put(4 + i, left, s, kAlarm, A_BOLD);
+  }
+}
+
+void Cockpit::draw_help(int rows, int width) {
+  const int per_column = static_cast<int>((kKeyBindingCount + 1) / 2);
+  const int column_width = 38;
+  const int box_width = std::min(width, 2 * column_width + 4);
+  const int box_height = std::min(rows, per_column + 3);
+  const int top = std::max(0, (rows - box_height) / 2);
+  const int left = std::max(0, (width - box_width) / 2);
+  for (int r = 0; r < box_height; ++r) put(top + r, left, std::string(static_cast<size_t>(box_width), ' '), kTitle);
+  put(top, left + 2, "keys (h or ? closes; any other key acts and closes)", kTitle, A_BOLD);
+  for (size_t i = 0; i < kKeyBindingCount; ++i) {
+    const int column = static_cast<int>(i) / per_column;
+    const int row = top + 2 + static_cast<int>(i) % per_column;
+    if (row >= top + box_height) continue;
+    const KeyBinding& binding = kKeyMap[i];
+    put(row, left + 2 + column * column_width, text("%-6s %s", key_name(binding.key).c_str(), action_text(binding.action)), kTitle);
+  }
+}
+
+void Cockpit::draw(const Console& console) {
+  erase();
+  const int rows = LINES;
+  const int width = COLS;
+  if (rows < kMinRows || width < kMinColumns) {
+    put(0, 0, text("qrterm needs %dx%d, this terminal is %dx%d", kMinColumns, kMinRows, width, rows), kError, A_BOLD);
+    const LinkState state = console.link_state();
+    put(1, 0, text("mode %s, link %s; x exits", console.telemetry().attitude ? mode_name(console.telemetry().attitude->mode) : "?",
+                   link_state_name(state)),
+        state == LinkState::up ? kInfo : kAlarm);
+    draw_log(console, 3, std::max(0, rows - 3), width);
+    refresh();
+    return;
+  }
+  draw_title(console, width);
+  draw_mode_and_link(console, width);
+  draw_system(console, width);
+  draw_engines_and_attitude(console, width);
+  draw_pilot(console, width);
+  draw_log(console, 14, rows - 14, width);
+  draw_link_alarm(console, width);
+  if (console.help_visible()) draw_help(rows, width);
+  refresh();
+}
+
+}  // namespace qrterm

@@ -1,0 +1,42 @@
+// The screen: status on top (mode, link, battery, engines, attitude, set-points, trims, gains),
+// the scrolling log below, LINK LOST across it when the QR is silent, the key help over it on
+// request. 80x24 is enough; more rows go to the log, more columns to the bars and log lines.
+// It only reads the Console; drawing never waits for anything but the terminal.
+#pragma once
+
+#include <string>
+
+#include <pc/core/console.hpp>
+
+namespace qrterm {
+
+struct CockpitLabels {
+  std::string source;      // "sim /dev/pts/3" or "/dev/ttyUSB0 115200"
+  std::string log_folder;
+  std::string joystick;    // "/dev/input/js0", or empty without one
+};
+
+class Cockpit {
+ public:
+  explicit Cockpit(CockpitLabels labels) : labels_(std::move(labels)) {}
+
+  void draw(const Console& console);
+
+  static constexpr int kMinRows = 24;
+  static constexpr int kMinColumns = 80;
+
+ private:
+  void draw_title(const Console& console, int width);
+  void draw_mode_and_link(const Console& console, int width);
+  void draw_system(const Console& console, int width);
+  void draw_engines_and_attitude(const Console& console, int width);
+  void draw_pilot(const Console& console, int width);
+  void draw_log(const Console& console, int top, int rows, int width);
+  void draw_link_alarm(const Console& console, int width);
+  void draw_help(int rows, int width);
+
+  CockpitLabels labels_;
+  LinkState alarmed_ = LinkState::waiting;
+};
+
+}  // namespace qrterm

@@ -1,0 +1,215 @@
+// qrterm: the QR's ground console. Everything that can fail for a reason the pilot can fix (a bad
+// option, a bad file, no joystick, no simulator, a busy port) is checked before the screen opens,
+// so its message lands on an ordinary terminal; after that the terminal is always given back.
+#include <errno.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstring>
+#include <ctime>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <pc/core/command_line.hpp>
+#include <pc/core/console.hpp>
+#include <pc/core/joystick_map.hpp>
+#include <pc/core/param_file.hpp>
+#include <pc/platform/clock.hpp>
+#include <pc/platform/joystick_device.hpp>
+#include <pc/platform/log_folder.hpp>
+#include <pc/platform/serial_port.hpp>
+#include <pc/platform/signals.hpp>
+#include <pc/platform/sim_process.hpp>
+#include <pc/ui/cockpit.hpp>
+#include <pc/ui/main_loop.hpp>
+#include <pc/ui/terminal.hpp>
+
+namespace qrterm {
+namespace {
+
+constexpr int kUsageError = 2;  // bad command line or bad file: nothing was started
+constexpr int kStartError = 1;  // the QR, the simulator or a file could not be reached
+constexpr uint32_t kSimStartTimeoutMs = 10000;  // a sanitizer build of the simulator starts slowly
+constexpr uint32_t kJoystickSettleMs = 200;     // the driver reports every axis right after open
+
+struct Failure {
+  int status;
+  std::string message;
+};
+
+std::string folder_of_this_program() {
+  char path[4096];
+  const ssize_t n = ::readlink("/proc/self/exe", path, sizeof path - 1);
+  if (n <= 0) return ".";
+  std::string self(path, static_cast<size_t>(n));
+  return self.substr(0, self.rfind('/'));
+}
+
+struct StartedParams {
+  wire::ParameterValues values;
+  std::string note;  // for the log: where they came from
+};
+
+StartedParams load_params(const std::string& path) {
+  std::string text;
+  if (!read_file(path, text)) {
+    if (errno != ENOENT) throw Failure{kUsageError, "cannot read " + path + ": " + std::strerror(errno)};
+    return {wire::ParameterValues{}, "no parameter file " + path + ": defaults; it is written at exit"};
+  }
+  ParamFileContents contents = parse_param_file(text);
+  if (!contents.errors.empty()) {
+    throw Failure{kUsageError, describe(path, contents.errors) + "qrterm: fix the parameter file (or move it away to start from the defaults)"};
+  }
+  return {contents.values, "parameters from " + path};
+}
+
+JoystickMap load_joystick_map(const std::string& path) {
+  std::string text;
+  if (!read_file(path, text)) {
+    if (errno != ENOENT) throw Failure{kUsageError, "cannot read " + path + ": " + std::strerror(errno)};
+    return JoystickMap{};
+  }
+  JoystickMapFile file = parse_joystick_map(text);
+  if (!file.errors.empty()) throw Failure{kUsageError, describe(path, file.errors) + "qrterm: fix the joystick map"};
+  return file.map;
+}
+
+// Waits briefly for the driver's report of every axis, so the start-up check sees the stick.
+void settle(JoystickDevice& joystick) {
+  const uint32_t start = monotonic_ms();
+  while (monotonic_ms() - start < kJoystickSettleMs && !joystick.reader().position_known()) {
+    joystick.read();
+    ::usleep(5000);
+  }
+}
+
+int run(int argc, char** argv) {
+  const ParsedCommandLine parsed = parse_command_line(std::vector<std::string>(argv + 1, argv + argc));
+  if (!parsed.error.empty()) throw Failure{kUsageError, parsed.error};
+  const Options& options = parsed.options;
+  if (options.help) {
+    std::fputs(usage_text().c_str(), stdout);
+    return 0;
+  }
+  if (!::isatty(STDIN_FILENO) || !::isatty(STDOUT_FILENO)) throw Failure{kUsageError, "qrterm needs a terminal"};
+
+  const StartedParams params = load_params(options.params);
+  std::unique_ptr<JoystickDevice> joystick;
+  if (!options.no_joystick) {
+    const JoystickMap map = load_joystick_map(options.joystick_map);
+    try {
+      joystick = std::make_unique<JoystickDevice>(options.joystick, map);
+    } catch (const JoystickError& e) {
+      // An error, not a warning: the fire button is the pilot's abort, and a pilot who expects it
+      // must not find out in the air that it is not there.
+      throw Failure{kUsageError, std::string(e.what()) +
+                                     "\n  plug one in, name another with --joystick PATH, or fly with the keyboard only: --no-joystick"};
+    }
+    settle(*joystick);
+  }
+
+  const std::string log_folder = options.log_dir.empty() ? default_log_folder() : options.log_dir;
+  try {
+    make_folders(log_folder);
+  } catch (const LogFolderError& e) {
+    throw Failure{kStartError, e.what()};
+  }
+
+  std::unique_ptr<SimProcess> sim;
+  std::string serial_path;
+  std::string source;
+  if (options.port) {
+    serial_path = *options.port;
+    source = serial_path + " " + std::to_string(options.baud);
+  } else {
+    const std::string program = options.sim.empty() ? folder_of_this_program() + "/../qr/qrsim" : options.sim;
+    std::vector<std::string> arguments{"--serve"};
+    arguments.insert(arguments.end(), options.sim_arguments.begin(), options.sim_arguments.end());
+    try {
+      sim = std::make_unique<SimProcess>(program, arguments, kSimStartTimeoutMs);
+    } catch (const SimError& e) {
+      throw Failure{kStartError, e.what()};
+    }
+    serial_path = sim->serial_path();
+    source = "sim " + serial_path;
+  }
+  std::unique_ptr<SerialPort> serial;
+  try {
+    serial = std::make_unique<SerialPort>(serial_path, options.baud);
+  } catch (const SerialError& e) {
+    throw Failure{kStartError, e.what()};
+  }
+
+  std::unique_ptr<std::ofstream> console_file = open_in(log_folder, "console.log");
+  std::unique_ptr<std::ofstream> hex_file = open_in(log_folder, "rx.hex");
+  std::unique_ptr<std::ofstream> telemetry_file = open_in(log_folder, "telemetry.csv");
+  if (!console_file || !hex_file || !telemetry_file) throw Failure{kStartError, "cannot write files in " + log_folder};
+
+  ConsoleLog log(500, console_file.get());
+  ConsoleFiles files;
+  files.rx_hex = hex_file.get();
+  files.telemetry_csv = telemetry_file.get();
+  files.open = [log_folder](const std::string& name) -> std::unique_ptr<std::ostream> { return open_in(log_folder, name); };
+  Console::Setup setup;
+  setup.params = params.values;
+  setup.joystick = joystick != nullptr;
+  setup.first_seq = static_cast<uint8_t>(::time(nullptr));
+  Console console(log, std::move(files), setup, monotonic_ms());
+
+  console.note(Severity::info, "qrterm on " + source + (sim ? " (simulator pid " + std::to_string(sim->pid()) + ")" : ""));
+  if (sim) {
+    for (const std::string& line : sim->early_output()) console.note(Severity::info, "sim: " + line);
+  }
+  console.note(Severity::info, "logs in " + log_folder);
+  console.note(Severity::info, params.note);
+  if (joystick) {
+    JoystickReader& reader = joystick->reader();
+    console.joystick_moved(reader.sticks(), reader.position_known(), monotonic_ms());
+    PilotControls check;
+    check.set_joystick(reader.sticks());
+    const std::string not_neutral = !reader.position_known() ? "the joystick has not reported its position" : check.not_neutral_reason();
+    if (!not_neutral.empty()) console.note(Severity::warning, not_neutral + ": flight modes are refused until it is neutral");
+    else console.note(Severity::info, "joystick " + options.joystick + " neutral");
+  } else {
+    console.note(Severity::info, "no joystick: keyboard only");
+  }
+  console.note(Severity::info, "h or ? shows the keys");
+
+  install_signal_handlers();
+  bool confirmed = false;
+  {
+    Terminal terminal;
+    Cockpit cockpit({source, log_folder, joystick ? options.joystick : std::string()});
+    Session session{console, *serial, sim.get(), joystick.get(), terminal, cockpit};
+    run_main_loop(session);
+    confirmed = console.exit_confirmed();
+  }
+  if (sim) sim->stop(confirmed ? 1000 : 0);
+
+  const std::string saved = write_file_atomically(options.params, format_param_file(console.params()));
+  if (!saved.empty()) std::fprintf(stderr, "qrterm: %s\n", saved.c_str());
+  // The last few lines of the log say how the session ended.
+  const auto& lines = log.lines();
+  for (size_t i = lines.size() > 3 ? lines.size() - 3 : 0; i < lines.size(); ++i) {
+    std::fprintf(stderr, "qrterm: %s\n", lines[i].text.c_str());
+  }
+  std::fprintf(stderr, "qrterm: parameters saved to %s; logs in %s\n", options.params.c_str(), log_folder.c_str());
+  return 0;
+}
+
+}  // namespace
+}  // namespace qrterm
+
+int main(int argc, char** argv) {
+  try {
+    return qrterm::run(argc, argv);
+  } catch (const qrterm::Failure& failure) {
+    std::fprintf(stderr, "qrterm: %s\n", failure.message.c_str());
+    return failure.status;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "qrterm: %s\n", e.what());
+    return 1;
+  }
+}

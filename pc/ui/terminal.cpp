@@ -1,0 +1,67 @@
+#include <pc/ui/terminal.hpp>
+
+#include <ncurses.h>
+
+namespace qrterm {
+namespace {
+
+struct KeyCode {
+  int curses;
+  Key key;
+};
+
+constexpr KeyCode kKeyCodes[] = {
+    {KEY_UP, kKeyUp}, {KEY_DOWN, kKeyDown}, {KEY_LEFT, kKeyLeft}, {KEY_RIGHT, kKeyRight},
+};
+
+// A lone ESC is told from an arrow key's escape sequence by waiting this long for the rest. Short:
+// ESC is the abort key.
+constexpr int kEscapeDelayMs = 25;
+
+}  // namespace
+
+Terminal::Terminal() {
+  ::initscr();
+  open_ = true;
+  ::cbreak();  // ^C still raises SIGINT, which the main loop turns into an orderly exit
+  ::noecho();
+  ::nonl();
+  ::keypad(stdscr, TRUE);
+  ::nodelay(stdscr, TRUE);
+  ::set_escdelay(kEscapeDelayMs);
+  ::curs_set(0);
+  if (::has_colors()) {
+    ::start_color();
+    ::use_default_colors();
+    ::init_pair(kInfo, COLOR_GREEN, -1);
+    ::init_pair(kWarning, COLOR_YELLOW, -1);
+    ::init_pair(kError, COLOR_RED, -1);
+    ::init_pair(kQr, COLOR_CYAN, -1);
+    ::init_pair(kAlarm, COLOR_WHITE, COLOR_RED);
+    ::init_pair(kTitle, COLOR_BLACK, COLOR_CYAN);
+    ::init_pair(kBar, COLOR_GREEN, -1);
+    ::init_pair(kDim, COLOR_BLUE, -1);
+  }
+}
+
+Terminal::~Terminal() { close(); }
+
+void Terminal::close() {
+  if (!open_) return;
+  ::endwin();
+  open_ = false;
+}
+
+Key Terminal::next_key() {
+  for (;;) {
+    const int code = ::getch();
+    if (code == ERR) return kKeyNone;
+    if (code == KEY_RESIZE) continue;  // the cockpit reads the size at every draw
+    for (const KeyCode& entry : kKeyCodes) {
+      if (entry.curses == code) return entry.key;
+    }
+    return code;
+  }
+}
+
+}  // namespace qrterm

@@ -1,0 +1,541 @@
+// The console's logic against the scripted fake QR: heartbeat, link state, parameters at connect,
+// modes and their refusals, abort and exit, joystick loss, logs, files.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include <common/link_timing.hpp>
+#include <pc/core/key.hpp>
+#include <pc/core/telemetry_csv.hpp>
+
+#include "console_bench.hpp"
+
+namespace {
+
+using qrterm::Console;
+using qrterm::LinkState;
+using qrterm::Severity;
+using qrterm_test::Bench;
+
+size_t count_requests(const Bench& b, wire::MessageType type) {
+  return static_cast<size_t>(
+      std::count_if(b.qr.requests.begin(), b.qr.requests.end(), [type](const wire::Frame& f) { return f.type == type; }));
+}
+
+void enter_manual(Bench& b) {
+  b.connect();
+  b.key('2');
+  ASSERT_TRUE(b.run_until([&] { return b.console.telemetry().attitude && b.console.telemetry().attitude->mode == wire::Mode::manual; }, 200));
+}
+
+TEST(Console, SendsControlAt50HzWhichIsTheHeartbeat) {
+  Bench b;
+  b.run(1000);
+  EXPECT_GE(b.qr.controls_received, 49u);
+  EXPECT_LE(b.qr.controls_received, 51u);
+}
+
+TEST(Console, LinkWaitsThenComesUpWithTheFirstFrame) {
+  Bench b;
+  b.qr.telemetry = false;
+  b.run(100);
+  EXPECT_EQ(b.console.link_state(), LinkState::waiting);
+  b.qr.telemetry = true;
+  b.run(50);
+  EXPECT_EQ(b.console.link_state(), LinkState::up);
+  EXPECT_TRUE(b.logged("link up"));
+}
+
+TEST(Console, LinkLostAfterTwoSecondsWithoutAValidFrameAndBackAfter) {
+  Bench b;
+  b.connect();
+  b.qr.silent = true;
+  b.run(qrterm::kLinkLostAfterMs - 50);
+  EXPECT_EQ(b.console.link_state(), LinkState::up);
+  b.run(100);
+  EXPECT_EQ(b.console.link_state(), LinkState::lost);
+  const qrterm::LogLine* line = b.log.find_last("LINK LOST");
+  ASSERT_NE(line, nullptr);
+  EXPECT_EQ(line->severity, Severity::error);
+  b.qr.silent = false;
+  b.run(50);
+  EXPECT_EQ(b.console.link_state(), LinkState::up);
+  EXPECT_TRUE(b.logged("link back"));
+}
+
+TEST(Console, GarbageIsNoSignOfLife) {
+  Bench b;
+  b.connect();
+  b.qr.silent = true;
+  const uint8_t noise[] = {0x4D, 0x88, 1, 2, 3, 4, 5, 6, 7, 8, 9, 0};  // a frame start with a bad check
+  for (int i = 0; i < 30; ++i) {
+    b.run(100);
+    b.console.receive(noise, sizeof noise, b.now);
+  }
+  EXPECT_EQ(b.console.link_state(), LinkState::lost);
+  EXPECT_GT(b.console.link().counters().check_failures, 0u);
+}
+
+TEST(Console, ClosedLineIsLinkLostAtOnce) {
+  Bench b;
+  b.connect();
+  b.console.line_closed("simulator exited with status 1", b.now);
+  EXPECT_EQ(b.console.link_state(), LinkState::closed);
+  EXPECT_TRUE(b.logged("LINK LOST: simulator exited with status 1"));
+}
+
+TEST(Console, SendsEveryParameterAtConnectOneAtATime) {
+  Console::Setup setup;
+  setup.params.set(static_cast<uint8_t>(wire::ParamId::roll_pitch_p1), 1088);
+  setup.params.set(static_cast<uint8_t>(wire::ParamId::kalman_c2), 5000);
+  Bench b(setup);
+  b.qr.telemetry = false;
+  b.run(100);
+  EXPECT_EQ(count_requests(b, wire::MessageType::param_set), 0u) << "nothing before the link is up";
+  b.qr.telemetry = true;
+  b.connect();
+  EXPECT_EQ(count_requests(b, wire::MessageType::param_set), wire::kParameterCount);
+  EXPECT_EQ(b.qr.params.get(wire::ParamId::roll_pitch_p1), 1088);
+  EXPECT_EQ(b.qr.params.get(wire::ParamId::kalman_c2), 5000);
+  EXPECT_EQ(b.console.reported(wire::ParamId::roll_pitch_p1), 1088) << "the QR's report is what the screen shows";
+  EXPECT_EQ(b.console.parameters_to_send(), 0u);
+}
+
+TEST(Console, ParametersGoUpAgainWhenTheLinkComesBack) {
+  Bench b;
+  b.connect();
+  b.qr.params = wire::ParameterValues{};
+  b.qr.params.set(static_cast<uint8_t>(wire::ParamId::yaw_p), 0);  // "restarted" with other values
+  b.qr.silent = true;
+  b.run(qrterm::kLinkLostAfterMs + 10);
+  b.qr.silent = false;
+  b.run(600);
+  EXPECT_EQ(b.qr.params.get(wire::ParamId::yaw_p), wire::ParameterValues{}.get(wire::ParamId::yaw_p));
+  EXPECT_EQ(count_requests(b, wire::MessageType::param_set), 2 * wire::kParameterCount);
+}
+
+TEST(Console, ModeKeyWithNeutralControlsEntersManual) {
+  Bench b;
+  enter_manual(b);
+  EXPECT_EQ(b.qr.mode, wire::Mode::manual);
+  EXPECT_TRUE(b.logged("QR mode: manual"));
+}
+
+TEST(Console, LiftKeysRaiseTheEnginesInManual) {
+  Bench b;
+  enter_manual(b);
+  for (int i = 0; i < 30; ++i) b.key('a');
+  b.run(200);
+  EXPECT_EQ(b.qr.control.lift, 30 * qrterm::kLiftTrimStep);
+  ASSERT_TRUE(b.console.telemetry().engines);
+  EXPECT_EQ(b.console.telemetry().engines->engine[0], 300);
+  b.key('z');
+  b.run(100);
+  EXPECT_EQ(b.qr.control.lift, 29 * qrterm::kLiftTrimStep);
+}
+
+TEST(Console, RefusesToLeaveSafeWithTrimsAndSaysWhy) {
+  Bench b;
+  b.connect();
+  b.keys("a2");
+  b.run(100);
+  EXPECT_EQ(count_requests(b, wire::MessageType::mode_change), 0u);
+  const qrterm::LogLine* line = b.log.find_last("not asking for manual");
+  ASSERT_NE(line, nullptr);
+  EXPECT_NE(line->text.find("trims"), std::string::npos);
+  EXPECT_EQ(line->severity, Severity::warning);
+  b.keys("c2");
+  b.run(100);
+  EXPECT_EQ(b.qr.mode, wire::Mode::manual);
+}
+
+TEST(Console, RefusesToFlyWithAJoystickNotNeutralOrNotYetHeard) {
+  Console::Setup setup;
+  setup.joystick = true;
+  Bench b(setup);
+  b.connect();
+  b.key('2');
+  EXPECT_TRUE(b.logged("has not reported its position"));
+  b.console.joystick_moved({120, 0, 0, 0}, true, b.now);
+  b.key('2');
+  EXPECT_TRUE(b.logged("joystick throttle not at zero"));
+  b.console.joystick_moved({0, 0, 300, 0}, true, b.now);
+  b.key('2');
+  EXPECT_TRUE(b.logged("stick or twist not centred"));
+  b.run(50);
+  EXPECT_EQ(count_requests(b, wire::MessageType::mode_change), 0u);
+  b.console.joystick_moved({0, 0, 0, 0}, true, b.now);
+  b.key('2');
+  b.run(100);
+  EXPECT_EQ(b.qr.mode, wire::Mode::manual);
+}
+
+TEST(Console, TrimsAddToTheJoystick) {
+  Console::Setup setup;
+  setup.joystick = true;
+  Bench b(setup);
+  b.console.joystick_moved({400, 100, -50, 0}, true, b.now);
+  b.keys("aa");
+  b.key(qrterm::kKeyRight);
+  b.key(qrterm::kKeyUp);
+  b.key('w');
+  b.run(30);
+  EXPECT_EQ(b.qr.control.lift, 420);
+  EXPECT_EQ(b.qr.control.roll, 110);
+  EXPECT_EQ(b.qr.control.pitch, -60);
+  EXPECT_EQ(b.qr.control.yaw, 10);
+}
+
+TEST(Console, QrRefusalIsShownWithItsReason) {
+  Bench b;
+  b.connect();
+  b.key('4');  // yaw control before a calibration
+  b.run(100);
+  const qrterm::LogLine* line = b.log.find_last("QR refused mode yaw control");
+  ASSERT_NE(line, nullptr);
+  EXPECT_NE(line->text.find("sensors not calibrated"), std::string::npos);
+}
+
+TEST(Console, CalibrationThenYawControl) {
+  Bench b;
+  b.connect();
+  b.key('3');
+  ASSERT_TRUE(b.run_until([&] { return b.console.telemetry().flag(wire::kFlagCalibrated); }, 1000));
+  EXPECT_TRUE(b.logged("QR calibrated"));
+  b.run(50);
+  b.key('4');
+  b.run(100);
+  EXPECT_EQ(b.qr.mode, wire::Mode::yaw_control);
+}
+
+TEST(Console, EscapePanicsAndTheQrSettlesInSafe) {
+  Bench b;
+  enter_manual(b);
+  b.keys("aaaaa");
+  b.run(100);
+  b.key(qrterm::kKeyEscape);
+  b.run(50);
+  EXPECT_EQ(b.qr.mode, wire::Mode::panic);
+  EXPECT_TRUE(b.logged("ABORT (ESC): panic requested, trims centred"));
+  EXPECT_EQ(b.console.controls().trims(), qrterm::Sticks{}) << "ready to leave safe again";
+  EXPECT_TRUE(b.run_until([&] { return b.console.telemetry().attitude->mode == wire::Mode::safe; }, 1500));
+  EXPECT_FALSE(b.console.finished());
+}
+
+TEST(Console, SecondEscapeInARowExitsAfterTheQrConfirms) {
+  Bench b;
+  enter_manual(b);
+  b.key(qrterm::kKeyEscape);
+  b.key(qrterm::kKeyEscape);
+  EXPECT_TRUE(b.console.exiting());
+  EXPECT_TRUE(b.run_until([&] { return b.console.finished(); }, 100));
+  EXPECT_TRUE(b.console.exit_confirmed());
+  EXPECT_TRUE(b.qr.exited);
+}
+
+TEST(Console, EscapeThenAnotherKeyDisarmsTheExit) {
+  Bench b;
+  b.connect();
+  b.key(qrterm::kKeyEscape);
+  b.key('c');
+  b.key(qrterm::kKeyEscape);
+  b.run(50);
+  EXPECT_FALSE(b.console.exiting());
+}
+
+TEST(Console, ExitWaitsForTheConfirmationAtMostItsBound) {
+  Bench b;
+  b.connect();
+  b.qr.answer_requests = false;
+  const uint32_t start = b.now;
+  b.key('x');
+  ASSERT_TRUE(b.run_until([&] { return b.console.finished(); }, 3000));
+  EXPECT_FALSE(b.console.exit_confirmed());
+  EXPECT_LE(b.now - start, qrterm::kExitWaitMs);
+  EXPECT_EQ(count_requests(b, wire::MessageType::exit), wire::kMaxSends);
+  EXPECT_TRUE(b.logged("no answer from the QR to the exit"));
+}
+
+TEST(Console, ExitWithoutAQrFinishesAtOnce) {
+  Bench b;
+  b.qr.silent = true;
+  b.run(100);
+  b.key('x');
+  EXPECT_TRUE(b.console.finished());
+  EXPECT_TRUE(b.logged("no QR to tell"));
+}
+
+TEST(Console, SecondExitRequestDoesNotWait) {
+  Bench b;
+  b.connect();
+  b.qr.answer_requests = false;
+  b.console.request_exit(b.now);
+  b.run(10);
+  b.console.request_exit(b.now);
+  EXPECT_TRUE(b.console.finished());
+}
+
+TEST(Console, UnansweredRequestGivesUpAfterTenSendsAndSaysSo) {
+  Bench b;
+  b.connect();
+  b.qr.answer_requests = false;
+  b.key('0');
+  b.run(wire::kGiveUpAfterMs + 50);
+  EXPECT_EQ(count_requests(b, wire::MessageType::mode_change), wire::kMaxSends);
+  const qrterm::LogLine* line = b.log.find_last("no answer from the QR to the mode change");
+  ASSERT_NE(line, nullptr);
+  EXPECT_EQ(line->severity, Severity::error);
+  EXPECT_EQ(b.console.link().figures().gave_up, 1u);
+  EXPECT_EQ(b.console.link().figures().resends, wire::kMaxSends - 1u);
+}
+
+TEST(Console, LostAnswerIsResentAndAppliedOnce) {
+  Bench b;
+  b.connect();
+  const uint32_t applied = b.qr.requests_applied;
+  b.key('2');
+  // The request gets through; its answer is lost, so the console sends it again.
+  b.console.tick(++b.now);
+  b.qr.receive(b.console.output(), b.now);
+  b.console.output().clear();
+  b.qr.take_output();
+  b.run(300);
+  EXPECT_GE(count_requests(b, wire::MessageType::mode_change), 2u);
+  EXPECT_EQ(b.qr.requests_applied, applied + 1);
+  EXPECT_FALSE(b.console.link().pending(wire::MessageType::mode_change));
+  EXPECT_EQ(b.qr.mode, wire::Mode::manual);
+}
+
+TEST(Console, RoundTripIsMeasuredOnFirstSends) {
+  Bench b;
+  b.connect();
+  EXPECT_GE(b.console.link().figures().round_trip_ms, 0);
+  EXPECT_LE(b.console.link().figures().round_trip_ms, 2);
+}
+
+TEST(Console, FramesPerSecondCountsValidFrames) {
+  Bench b;
+  b.run(2100);
+  // Per 20 ms the fake sends attitude, rates and one slow group: 150 frames a second.
+  EXPECT_GE(b.console.link().figures().frames_per_s, 140u);
+  EXPECT_LE(b.console.link().figures().frames_per_s, 160u);
+}
+
+TEST(Console, JoystickLostInFlightPanics) {
+  Console::Setup setup;
+  setup.joystick = true;
+  Bench b(setup);
+  b.console.joystick_moved({}, true, b.now);
+  enter_manual(b);
+  b.console.joystick_lost(b.now);
+  b.run(50);
+  EXPECT_EQ(b.qr.mode, wire::Mode::panic);
+  EXPECT_TRUE(b.logged("ABORT (joystick lost)"));
+  EXPECT_EQ(b.console.joystick_state(), qrterm::JoystickState::lost);
+  b.run(1200);
+  b.key('2');
+  EXPECT_TRUE(b.logged("the joystick is gone"));
+}
+
+TEST(Console, JoystickLostInSafeOnlyWarns) {
+  Console::Setup setup;
+  setup.joystick = true;
+  Bench b(setup);
+  b.console.joystick_moved({}, true, b.now);
+  b.connect();
+  b.console.joystick_lost(b.now);
+  b.run(50);
+  EXPECT_EQ(count_requests(b, wire::MessageType::mode_change), 0u);
+  EXPECT_TRUE(b.logged("joystick lost"));
+  b.console.joystick_back(b.now);
+  EXPECT_EQ(b.console.joystick_state(), qrterm::JoystickState::ok);
+  EXPECT_FALSE(b.console.joystick_position_known());
+}
+
+TEST(Console, JoystickFireAborts) {
+  Console::Setup setup;
+  setup.joystick = true;
+  Bench b(setup);
+  b.console.joystick_moved({}, true, b.now);
+  enter_manual(b);
+  b.console.joystick_fire(b.now);
+  b.run(50);
+  EXPECT_EQ(b.qr.mode, wire::Mode::panic);
+}
+
+TEST(Console, QrDebugTextBecomesCyanLines) {
+  Bench b;
+  b.connect();
+  b.qr.say("hello from the QR, a long line\nsecond");
+  b.run(5);
+  const qrterm::LogLine* line = b.log.find_last("hello from the QR");
+  ASSERT_NE(line, nullptr);
+  EXPECT_EQ(line->text, "hello from the QR, a long line");
+  EXPECT_EQ(line->severity, Severity::qr);
+  EXPECT_FALSE(b.logged("second")) << "an unfinished line waits for its end";
+}
+
+TEST(Console, GainKeysStepTheParameterAndSendIt) {
+  Bench b;
+  b.connect();
+  b.keys("uuj");
+  b.run(100);
+  EXPECT_EQ(b.qr.params.get(wire::ParamId::yaw_p), 1600 + 80);
+  b.keys("e");
+  b.run(100);
+  EXPECT_EQ(b.qr.params.get(wire::ParamId::kalman_c1), 512);
+  b.keys("ff");
+  b.run(100);
+  EXPECT_EQ(b.qr.params.get(wire::ParamId::kalman_c2), 250000);
+  EXPECT_TRUE(b.logged("c2 = 250000"));
+}
+
+TEST(Console, GainAtTheEndOfItsRangeStaysAndSaysSo) {
+  Console::Setup setup;
+  setup.params.set(static_cast<uint8_t>(wire::ParamId::roll_pitch_p1), 0);
+  Bench b(setup);
+  b.connect();
+  b.key('k');
+  EXPECT_EQ(b.console.params().get(wire::ParamId::roll_pitch_p1), 0);
+  EXPECT_TRUE(b.logged("end of its range"));
+}
+
+TEST(Console, ReadsParametersBack) {
+  Bench b;
+  b.connect();
+  b.qr.params.set(static_cast<uint8_t>(wire::ParamId::idle_level), 200);
+  b.key('p');
+  b.run(50);
+  EXPECT_EQ(b.console.reported(wire::ParamId::idle_level), 200);
+}
+
+TEST(Console, LogStartAndStopAreAcknowledged) {
+  Bench b;
+  b.connect();
+  b.key('s');
+  b.run(50);
+  EXPECT_TRUE(b.qr.logging);
+  EXPECT_TRUE(b.console.telemetry().flag(wire::kFlagLogging));
+  b.key('t');
+  b.run(50);
+  EXPECT_FALSE(b.qr.logging);
+  EXPECT_TRUE(b.logged("QR logs stopped"));
+}
+
+wire::SensorLogRecord sensor_line(uint16_t line) {
+  wire::SensorLogRecord r;
+  r.line = line;
+  r.time_us = 1000u * line;
+  r.gyro[0] = static_cast<int16_t>(-line);
+  r.battery_mv = 11850;
+  return r;
+}
+
+TEST(Console, LogDownloadWritesBothLogsAsCsvAndAsksAgainForLostLines) {
+  Bench b;
+  b.connect();
+  for (uint16_t line = 0; line < 40; ++line) b.qr.sensor_log[line] = sensor_line(line);
+  wire::TelemetryLogRecord t;
+  t.mode = wire::Mode::manual;
+  t.engine[2] = 400;
+  b.qr.telemetry_log[0] = t;
+  int dropped = 0;
+  b.qr.drop_log_part = [&dropped](uint16_t line, uint8_t part) { return (line == 7 || line == 8) && part == 2 && dropped++ < 2; };
+  b.key('g');
+  ASSERT_TRUE(b.run_until([&] { return b.written.count("telemetry_log_1.csv") != 0 && !b.console.download_status().size(); }, 10000));
+  const std::string& sensor = b.written["sensor_log_1.csv"];
+  EXPECT_EQ(std::count(sensor.begin(), sensor.end(), '\n'), 41) << sensor;
+  EXPECT_EQ(sensor.rfind("line,time_us,gyro_x", 0), 0u);
+  EXPECT_NE(sensor.find("\r\n7,7000,-7,"), std::string::npos);
+  EXPECT_NE(sensor.find("\r\n8,8000,-8,"), std::string::npos);
+  const auto again = std::find_if(b.qr.requests.begin(), b.qr.requests.end(), [](const wire::Frame& f) {
+    wire::LogDownload d;
+    return wire::decode(f, d) && d.first_line == 7 && d.count == 2;
+  });
+  EXPECT_NE(again, b.qr.requests.end()) << "lines 7 and 8 asked for again";
+  const std::string& telemetry = b.written["telemetry_log_1.csv"];
+  EXPECT_NE(telemetry.find("\r\n0,0,2,0,"), std::string::npos) << telemetry;
+  EXPECT_TRUE(b.logged("sensor log: 40 lines -> sensor_log_1.csv"));
+}
+
+TEST(Console, LogDownloadWhileLoggingIsRefusedWithWhatToDo) {
+  Bench b;
+  b.connect();
+  b.keys("sg");
+  b.run(100);
+  EXPECT_TRUE(b.logged("stop the logs first"));
+  EXPECT_EQ(b.console.download_status(), "");
+}
+
+TEST(Console, TelemetryCsvGetsARowPerAttitudeFrame) {
+  Bench b;
+  b.run(1000);
+  const std::string csv = b.telemetry_csv.str();
+  const size_t rows = static_cast<size_t>(std::count(csv.begin(), csv.end(), '\n'));
+  EXPECT_GE(rows, 49u);
+  EXPECT_LE(rows, 52u);
+  EXPECT_EQ(csv.rfind("pc_time_ms,tick,mode,", 0), 0u);
+}
+
+TEST(Console, HexLogHoldsEveryByteReceived) {
+  Bench b;
+  const uint8_t bytes[] = {0x4D, 0x00, 0xFF};
+  b.console.receive(bytes, sizeof bytes, b.now + 1234);
+  EXPECT_EQ(b.hex.str(), "   1.234  4D 00 FF\n");
+}
+
+TEST(Console, HelpTogglesAndAnyOtherKeyClosesItAndStillActs) {
+  Bench b;
+  b.connect();
+  b.key('h');
+  EXPECT_TRUE(b.console.help_visible());
+  b.key('?');
+  EXPECT_FALSE(b.console.help_visible());
+  b.key('?');
+  b.key('a');
+  EXPECT_FALSE(b.console.help_visible());
+  EXPECT_EQ(b.console.controls().trims().lift, qrterm::kLiftTrimStep);
+}
+
+TEST(Console, UnboundKeySaysSo) {
+  Bench b;
+  b.key('%');
+  EXPECT_TRUE(b.logged("key % does nothing"));
+}
+
+TEST(Console, TaskTableIsPrintedOnRequest) {
+  Bench b;
+  b.key('b');
+  EXPECT_TRUE(b.logged("no task figures"));
+  const wire::FrameBytes frame = wire::encode(wire::TelemetryTask{6, 180, 212, 530});
+  b.console.receive(frame.bytes, frame.size, b.now);
+  b.key('b');
+  const qrterm::LogLine* line = b.log.find_last("mixer");
+  ASSERT_NE(line, nullptr);
+  EXPECT_NE(line->text.find("180    212    530"), std::string::npos) << line->text;
+}
+
+TEST(Console, TelemetryCsvRowFitsItsHeaderEvenWithGroupsMissing) {
+  qrterm::TelemetryModel empty;
+  EXPECT_EQ(qrterm::telemetry_csv_row(0, empty, {}).fields().size(), qrterm::telemetry_csv_header().size());
+  qrterm::TelemetryModel full;
+  full.attitude = wire::TelemetryAttitude{};
+  full.rates = wire::TelemetryRates{};
+  full.engines = wire::TelemetryEngines{};
+  full.setpoints = wire::TelemetrySetpoints{};
+  full.system = wire::TelemetrySystem{};
+  full.qr_link = wire::TelemetryLink{};
+  EXPECT_EQ(qrterm::telemetry_csv_row(0, full, {}).fields().size(), qrterm::telemetry_csv_header().size());
+}
+
+TEST(Console, LostTelemetryIsCountedFromTheTick) {
+  qrterm::TelemetryModel model;
+  wire::TelemetryAttitude a;
+  a.tick = 250;
+  model.on(a);
+  a.tick = 3;  // 251..255, 0..2 lost: 8 frames
+  model.on(a);
+  EXPECT_EQ(model.attitude_lost, 8u);
+}
+
+}  // namespace

@@ -1,0 +1,201 @@
+#include "fake_qr.hpp"
+
+#include <algorithm>
+
+#include <common/link_timing.hpp>
+
+namespace qrterm_test {
+namespace {
+
+bool flight_mode(wire::Mode mode) {
+  return mode == wire::Mode::manual || mode == wire::Mode::yaw_control || mode == wire::Mode::full_control;
+}
+
+bool neutral(const wire::Control& c) { return c.lift == 0 && c.roll == 0 && c.pitch == 0 && c.yaw == 0; }
+
+}  // namespace
+
+// Decoded requests and control.
+struct FakeQr::Handler {
+  FakeQr& qr;
+  wire::NackReason answer = wire::NackReason::none;
+
+  void operator()(const wire::Control& c) {
+    qr.control = c;
+    ++qr.controls_received;
+  }
+  void operator()(const wire::ModeChange& m) { answer = qr.change_mode(m.mode); }
+  void operator()(const wire::ParamSet& p) {
+    answer = qr.params.set(p.id, p.value);
+    if (answer == wire::NackReason::none) qr.send(wire::encode(wire::ParamReport{p.id, p.value}));
+  }
+  void operator()(const wire::ParamGet& g) {
+    for (const wire::ParameterSpec& spec : wire::kParameterTable) {
+      const uint8_t id = static_cast<uint8_t>(spec.id);
+      if (g.id == wire::kAllParameters || g.id == id) qr.send(wire::encode(wire::ParamReport{id, qr.params.get(spec.id)}));
+    }
+  }
+  void operator()(const wire::LogStart&) { qr.logging = true; }
+  void operator()(const wire::LogStop&) { qr.logging = false; }
+  void operator()(const wire::LogDownload& d) {
+    if (qr.logging) {
+      answer = wire::NackReason::busy;
+      return;
+    }
+    qr.send_log(d.log, d.first_line, d.count);
+  }
+  void operator()(const wire::Exit&) {
+    qr.exited = true;
+    qr.mode = flight_mode(qr.mode) ? wire::Mode::panic : wire::Mode::safe;
+    qr.mode_since_ms_ = qr.now_ms_;
+  }
+};
+
+wire::NackReason FakeQr::change_mode(wire::Mode wanted) {
+  if (wanted == wire::Mode::safe || wanted == wire::Mode::panic) {
+    // Safe is reached from flight through panic; in safe or calibration a panic lands in safe.
+    const bool flying = flight_mode(mode);
+    mode = flying ? wire::Mode::panic : (mode == wire::Mode::panic ? wire::Mode::panic : wire::Mode::safe);
+    if (flying) mode_since_ms_ = now_ms_;
+    return wire::NackReason::none;
+  }
+  if (mode != wire::Mode::safe) return wire::NackReason::not_from_this_mode;
+  if (!neutral(control)) return wire::NackReason::controls_not_neutral;
+  if ((wanted == wire::Mode::yaw_control || wanted == wire::Mode::full_control) && !calibrated) {
+    return wire::NackReason::not_calibrated;
+  }
+  mode = wanted;
+  mode_since_ms_ = now_ms_;
+  return wire::NackReason::none;
+}
+
+wire::NackReason FakeQr::apply(const wire::Frame& frame) {
+  Handler handler{*this};
+  if (wire::dispatch(frame, handler) == wire::DispatchResult::invalid_payload) return wire::NackReason::bad_value;
+  return handler.answer;
+}
+
+void FakeQr::receive(const uint8_t* data, size_t count, uint32_t now_ms) {
+  now_ms_ = now_ms;
+  for (size_t i = 0; i < count; ++i) {
+    parser_.push(data[i], [&](const wire::Frame& frame) {
+      last_frame_ms_ = now_ms;
+      if (exited) return;
+      const wire::Admission admission = dedup_.admit(frame, now_ms);
+      if (!admission.request) {
+        Handler handler{*this};
+        wire::dispatch(frame, handler);
+        return;
+      }
+      requests.push_back(frame);
+      if (!answer_requests) return;
+      if (admission.duplicate) {
+        send(wire::reply_frame(frame.type, admission.seq, admission.previous));
+        return;
+      }
+      // The answer goes before what the request makes the QR send (reports, log parts).
+      const size_t before = output_.size();
+      const wire::NackReason answer = apply(frame);
+      ++requests_applied;
+      dedup_.record(frame, answer, now_ms);
+      const wire::FrameBytes reply = wire::reply_frame(frame.type, admission.seq, answer);
+      if (!silent) output_.insert(output_.begin() + static_cast<std::ptrdiff_t>(before), reply.bytes, reply.bytes + reply.size);
+    });
+  }
+}
+
+void FakeQr::tick(uint32_t now_ms) {
+  now_ms_ = now_ms;
+  if (flight_mode(mode) && now_ms - last_frame_ms_ >= kLinkTimeoutMs) {
+    mode = wire::Mode::panic;
+    mode_since_ms_ = now_ms;
+  }
+  if (mode == wire::Mode::calibration && now_ms - mode_since_ms_ >= kCalibrationMs) {
+    calibrated = true;
+    mode = wire::Mode::safe;
+  }
+  if (mode == wire::Mode::panic && now_ms - mode_since_ms_ >= kPanicMs) mode = wire::Mode::safe;
+  update_engines();
+  if (telemetry && wire::reached(now_ms, next_telemetry_ms_)) {
+    next_telemetry_ms_ = now_ms + kTelemetryPeriodMs;
+    send_telemetry();
+  }
+}
+
+void FakeQr::update_engines() {
+  for (uint16_t& e : engine) {
+    if (mode == wire::Mode::panic) {
+      e = std::min<uint16_t>(e, 350);
+    } else if (flight_mode(mode)) {
+      e = control.lift == 0 ? 0 : std::max<uint16_t>(control.lift, 180);
+    } else {
+      e = 0;
+    }
+  }
+}
+
+void FakeQr::send_telemetry() {
+  wire::TelemetryAttitude attitude;
+  attitude.tick = tick_++;
+  attitude.mode = mode;
+  attitude.flags = static_cast<uint8_t>((calibrated ? wire::kFlagCalibrated : 0) | (logging ? wire::kFlagLogging : 0));
+  send(wire::encode(attitude));
+  send(wire::encode(wire::TelemetryRates{}));
+  switch (slow_group_++ % 4) {
+    case 0: {
+      wire::TelemetryEngines engines;
+      std::copy(engine, engine + 4, engines.engine);
+      send(wire::encode(engines));
+      break;
+    }
+    case 1: send(wire::encode(wire::TelemetrySetpoints{control.lift, 0, 0, 0})); break;
+    case 2: send(wire::encode(wire::TelemetrySystem{11850, 420, 612, 0})); break;
+    default: {
+      const wire::LinkCounters& c = parser_.counters();
+      send(wire::encode(wire::TelemetryLink{static_cast<uint16_t>(c.frames_ok), static_cast<uint16_t>(c.check_failures),
+                                            static_cast<uint16_t>(c.unknown_types), static_cast<uint16_t>(c.bytes_skipped)}));
+      break;
+    }
+  }
+}
+
+template <class Record>
+static void send_lines(const std::map<uint16_t, Record>& log, uint16_t first, uint16_t count,
+                       const std::function<bool(uint16_t, uint8_t)>& drop, const std::function<void(const wire::FrameBytes&)>& out) {
+  for (const auto& [line, record] : log) {
+    if (line < first || (count != 0 && line >= uint32_t{first} + count)) continue;
+    for (uint8_t part = 0; part < Record::kParts; ++part) {
+      if (drop && drop(line, part)) continue;
+      out(wire::encode(wire::make_log_part(record, part)));
+    }
+  }
+}
+
+void FakeQr::send_log(wire::LogKind log, uint16_t first, uint16_t count) {
+  const auto out = [this](const wire::FrameBytes& frame) { send(frame); };
+  if (log == wire::LogKind::sensor) {
+    send_lines(sensor_log, first, count, drop_log_part, out);
+  } else {
+    send_lines(telemetry_log, first, count, drop_log_part, out);
+  }
+}
+
+void FakeQr::say(const char* text) {
+  for (size_t at = 0; text[at] != '\0';) {
+    wire::DebugText piece;
+    at += piece.fill(text + at, 64);
+    send(wire::encode(piece));
+  }
+}
+
+void FakeQr::send(const wire::FrameBytes& frame) {
+  if (!silent) output_.insert(output_.end(), frame.bytes, frame.bytes + frame.size);
+}
+
+std::vector<uint8_t> FakeQr::take_output() {
+  std::vector<uint8_t> out;
+  out.swap(output_);
+  return out;
+}
+
+}  // namespace qrterm_test
