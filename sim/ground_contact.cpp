@@ -25,6 +25,14 @@ ContactResult ground_contact(const VehicleParams& v, const std::array<Vec3, kCon
                              const Vec3& position, const Vec3& velocity, const Quat& attitude,
                              const Vec3& body_rate) {
   ContactResult result;
+  // No point lies farther from the centre of mass than `reach`: above that height nothing can
+  // touch, and the nine rotations are skipped (most of a flight).
+  double reach = 0;
+  for (const Vec3& point : points) reach = std::max(reach, norm(point));
+  if (position.z + reach < 0) {
+    result.deepest_m = position.z + reach;  // a bound, not the exact lowest point
+    return result;
+  }
   result.deepest_m = -1e9;
   for (const Vec3& point : points) {
     const Vec3 world_point = position + rotate(attitude, point);

@@ -21,7 +21,8 @@ std::array<Vec3, kContactPoints> contact_points(const VehicleParams& vehicle);
 
 struct ContactResult {
   Wrench wrench;             // on the airframe, body axes
-  double deepest_m = 0;      // how far the lowest point is below the ground (<= 0: above)
+  double deepest_m = 0;      // how far the lowest point is below the ground (<= 0: above; when
+                             // far above, a bound: the centre's height less the farthest point)
   bool touching = false;
 };
 

@@ -1,0 +1,82 @@
+#include <qr/boards/sim/pilot.hpp>
+
+#include <common/link_timing.hpp>
+
+namespace qrsim {
+
+Pilot::Pilot(SimBoard& board, uint8_t first_seq) : board_(board), resend_(first_seq) {}
+
+void Pilot::send(const wire::FrameBytes& frame) {
+  if (silent_) return;
+  for (uint8_t i = 0; i < frame.size; ++i) board_.pc_send(frame.bytes[i]);
+}
+
+void Pilot::request_mode(wire::Mode mode) {
+  const uint32_t now_ms = static_cast<uint32_t>(board_.world().now_us() / 1000);
+  send(resend_.submit(wire::ModeChange{0, mode}, now_ms));
+}
+
+void Pilot::set_parameter(wire::ParamId id, int32_t raw) {
+  const uint32_t now_ms = static_cast<uint32_t>(board_.world().now_us() / 1000);
+  send(resend_.submit(wire::ParamSet{0, static_cast<uint8_t>(id), raw}, now_ms));
+}
+
+void Pilot::step() {
+  const uint64_t now_us = board_.world().now_us();
+
+  uint8_t byte = 0;
+  uint64_t sent_at_us = 0;
+  for (;;) {
+    uint64_t at = 0;
+    const bool has = board_.pc_next_sent_at_us(at);
+    if (!board_.pc_receive(byte)) break;
+    // A frame's start byte carries the time of the tick that sent it.
+    if (has && parser_.buffered() == 0) sent_at_us = at;
+    parser_.push(byte, [&](const wire::Frame& frame) { on_frame(frame, sent_at_us); });
+  }
+
+  const uint32_t now_ms = static_cast<uint32_t>(now_us / 1000);
+  wire::ResendEvent event;
+  while (resend_.poll(now_ms, event)) {
+    if (event.kind == wire::ResendEvent::Kind::resend) {
+      send(event.frame);
+    } else {
+      ++view_.requests_given_up;
+    }
+  }
+
+  if (now_us >= next_control_us_) {
+    next_control_us_ = now_us + wire::kControlPeriodMs * 1000;
+    send(wire::encode(wire::Control{sticks_.lift, sticks_.roll, sticks_.pitch, sticks_.yaw}));
+  }
+}
+
+void Pilot::on_frame(const wire::Frame& frame, uint64_t sent_at_us) {
+  struct Handler {
+    Pilot& p;
+    uint64_t at;
+    void operator()(const wire::TelemetryAttitude& m) {
+      p.view_.heard = true;
+      p.view_.mode = m.mode;
+      p.view_.flags = m.flags;
+      p.view_.attitude_at_us = at;
+      p.view_.phi_e4 = m.phi;
+      p.view_.theta_e4 = m.theta;
+      p.view_.psi_e4 = m.psi;
+    }
+    void operator()(const wire::Ack& m) {
+      if (p.resend_.on_ack(m) == wire::AnswerMatch::matched) ++p.view_.acks;
+    }
+    void operator()(const wire::Nack& m) {
+      if (p.resend_.on_nack(m) == wire::AnswerMatch::matched) {
+        ++p.view_.nacks;
+        p.view_.last_nack = m.reason;
+      }
+    }
+    void operator()(const wire::DebugText& m) { p.view_.debug_text.append(m.text, m.length()); }
+  };
+  Handler handler{*this, sent_at_us};
+  wire::dispatch(frame, handler);
+}
+
+}  // namespace qrsim

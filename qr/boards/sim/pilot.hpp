@@ -1,0 +1,69 @@
+// The simulated pilot at the console's end of the serial line. It talks to the QR only in wire
+// frames, as the ground console does: control 50 times a second (also the heartbeat), requests
+// through a resend queue, telemetry and replies through a parser listening to the QR's side.
+#pragma once
+
+#include <stdint.h>
+
+#include <string>
+
+#include <common/frame_parser.hpp>
+#include <common/messages.hpp>
+#include <common/parameter_table.hpp>
+#include <common/resend_queue.hpp>
+#include <qr/boards/sim/sim_board.hpp>
+
+namespace qrsim {
+
+struct Sticks {
+  uint16_t lift = 0;
+  int16_t roll = 0;
+  int16_t pitch = 0;
+  int16_t yaw = 0;
+};
+
+// What the console knows about the QR, from telemetry and replies.
+struct ConsoleView {
+  bool heard = false;            // any telemetry yet
+  wire::Mode mode = wire::Mode::safe;
+  uint8_t flags = 0;
+  uint64_t attitude_at_us = 0;   // when the last attitude frame was sent (its tick)
+  int16_t phi_e4 = 0, theta_e4 = 0, psi_e4 = 0;
+  uint32_t acks = 0;
+  uint32_t nacks = 0;
+  wire::NackReason last_nack = wire::NackReason::none;
+  uint32_t requests_given_up = 0;
+  std::string debug_text;        // everything the QR said, lines joined
+};
+
+class Pilot {
+ public:
+  explicit Pilot(SimBoard& board, uint8_t first_seq = 0x40);
+
+  void set_sticks(const Sticks& sticks) { sticks_ = sticks; }
+  const Sticks& sticks() const { return sticks_; }
+  void request_mode(wire::Mode mode);
+  void set_parameter(wire::ParamId id, int32_t raw);
+  // Stops sending anything at all (the cable is pulled) or resumes.
+  void go_silent(bool silent) { silent_ = silent; }
+
+  // Once per control period, between ticks: takes what the QR sent, sends what is due.
+  void step();
+
+  bool request_pending(wire::MessageType type) const { return resend_.pending(type); }
+  const ConsoleView& view() const { return view_; }
+
+ private:
+  void send(const wire::FrameBytes& frame);
+  void on_frame(const wire::Frame& frame, uint64_t sent_at_us);
+
+  SimBoard& board_;
+  wire::ResendQueue resend_;
+  wire::FrameParser parser_{wire::Listen::qr_to_pc};
+  Sticks sticks_;
+  bool silent_ = false;
+  uint64_t next_control_us_ = 0;
+  ConsoleView view_;
+};
+
+}  // namespace qrsim

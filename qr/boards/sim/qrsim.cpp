@@ -1,0 +1,177 @@
+// qrsim: the host firmware flying in the simulator.
+//   qrsim --serve [--stdio]        real time, the QR's serial line on a pseudo terminal or stdio
+//   qrsim --scenario NAME --json   headless, faster than real time, one JSON object of figures
+// Run `qrsim --help` for everything; docs/simulator.md describes the model and the scenarios.
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+
+#include <common/parameter_table.hpp>
+#include <qr/boards/sim/scenario.hpp>
+#include <qr/boards/sim/serve.hpp>
+#include <qr/core/rate.hpp>
+
+namespace {
+
+constexpr const char* kUsage = R"(usage:
+  qrsim --serve [--stdio] [--seed N] [--vehicle FILE] [--seconds S] [--status]
+  qrsim --scenario NAME [--seconds S] [--seed N] [--vehicle FILE] [--param NAME=VALUE]...
+        [--no-noise] [--json]
+  qrsim --list
+  qrsim --help
+
+The QR firmware (the same code as on the RV32 board, fixed-point signal chain, %u Hz control
+rate) flying in a simulated IN4073-class quadrotor.
+
+  --serve          run in real time; the QR's serial line (115200 baud timing) is a pseudo
+                   terminal whose path is the first line on stdout ("qrsim: serial on /dev/pts/N"),
+                   for the console to open as it would the real line
+  --stdio          with --serve: the serial line is stdin/stdout instead (messages go to stderr)
+  --status         with --serve: one status line a second on stderr
+  --scenario NAME  fly a scenario headless, in simulated time, and score it; exit status 0 when
+                   every pass band holds, 1 when one does not
+  --seconds S      scenario: scored flight time from the manoeuvre on (default per scenario);
+                   serve: stop after S seconds of flight time (default: run until exit)
+  --seed N         seed of every random source (sensor noise, biases, vibration phases);
+                   same seed, same flight (default 1)
+  --vehicle FILE   vehicle parameter file (default: the compiled-in sim/vehicles/in4073.txt)
+  --param N=V      scenario: the pilot uploads parameter N (a name from docs/protocol.md,
+                   section 9) with value V in the parameter's unit before flying
+  --no-noise       scenario: perfect sensors (no noise, bias, scale error or vibration)
+  --json           scenario: print the figures as one JSON object on one line
+  --list           the scenarios and what they do
+
+)";
+
+int usage_error(const std::string& message) {
+  std::fprintf(stderr, "qrsim: %s (see qrsim --help)\n", message.c_str());
+  return 2;
+}
+
+bool parse_number(const char* text, double& out) {
+  char* end = nullptr;
+  out = std::strtod(text, &end);
+  return end != text && *end == '\0' && std::isfinite(out);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  enum class Command { none, serve, scenario, list, help } command = Command::none;
+  qrsim::ScenarioOptions scenario;
+  qrsim::ServeOptions serve;
+  bool json = false;
+  bool stdio = false;
+  bool status = false;
+  double seconds = 0;
+  uint64_t seed = 1;
+  sim::VehicleParams vehicle = sim::default_vehicle();
+  std::string vehicle_name = sim::default_vehicle_name();
+
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    const auto value = [&](const char* what) -> const char* {
+      if (i + 1 >= argc) return nullptr;
+      (void)what;
+      return argv[++i];
+    };
+    if (arg == "--help" || arg == "-h") {
+      command = Command::help;
+    } else if (arg == "--list") {
+      command = Command::list;
+    } else if (arg == "--serve") {
+      command = Command::serve;
+    } else if (arg == "--stdio") {
+      stdio = true;
+    } else if (arg == "--status") {
+      status = true;
+    } else if (arg == "--json") {
+      json = true;
+    } else if (arg == "--no-noise") {
+      scenario.sensor_noise = false;
+    } else if (arg == "--scenario") {
+      const char* v = value("NAME");
+      if (v == nullptr) return usage_error("--scenario needs a name");
+      command = Command::scenario;
+      scenario.name = v;
+      if (qrsim::find_scenario(v) == nullptr) return usage_error(std::string("no scenario ") + v + " (qrsim --list)");
+    } else if (arg == "--seconds") {
+      const char* v = value("S");
+      if (v == nullptr || !parse_number(v, seconds) || seconds <= 0) return usage_error("--seconds needs a time > 0");
+    } else if (arg == "--seed") {
+      const char* v = value("N");
+      char* end = nullptr;
+      if (v == nullptr) return usage_error("--seed needs a number");
+      seed = std::strtoull(v, &end, 0);
+      if (*end != '\0') return usage_error("--seed needs a number");
+    } else if (arg == "--vehicle") {
+      const char* v = value("FILE");
+      if (v == nullptr) return usage_error("--vehicle needs a file");
+      std::string error;
+      if (!sim::load_vehicle_file(v, vehicle, error)) return usage_error(error);
+      vehicle_name = v;
+    } else if (arg == "--param") {
+      const char* v = value("NAME=VALUE");
+      const char* eq = v == nullptr ? nullptr : std::strchr(v, '=');
+      if (eq == nullptr) return usage_error("--param needs NAME=VALUE");
+      const std::string name(v, eq);
+      const wire::ParameterSpec* spec = nullptr;
+      for (const wire::ParameterSpec& s : wire::kParameterTable) {
+        if (name == s.name) spec = &s;
+      }
+      double real = 0;
+      if (spec == nullptr) return usage_error("no parameter " + name);
+      if (!parse_number(eq + 1, real)) return usage_error("--param " + name + ": not a number");
+      const double raw = std::round(std::ldexp(real, spec->frac_bits));
+      if (raw < spec->min || raw > spec->max) return usage_error("--param " + name + ": out of range");
+      scenario.parameters.emplace_back(spec->id, static_cast<int32_t>(raw));
+    } else {
+      return usage_error("unknown argument " + arg);
+    }
+  }
+
+  switch (command) {
+    case Command::none:
+    case Command::help:
+      std::printf(kUsage, static_cast<unsigned>(qr::kControlHz));
+      return command == Command::help ? 0 : 2;
+    case Command::list:
+      for (const qrsim::ScenarioSpec& s : qrsim::scenarios()) {
+        std::printf("%-12s %4.0f s  %s\n", s.name, s.default_seconds, s.summary);
+      }
+      return 0;
+    case Command::serve:
+      serve.stdio = stdio;
+      serve.status = status;
+      serve.seconds = seconds;
+      serve.seed = seed;
+      serve.vehicle = vehicle;
+      return qrsim::serve(serve);
+    case Command::scenario: {
+      scenario.seconds = seconds;
+      scenario.seed = seed;
+      scenario.vehicle = vehicle;
+      scenario.vehicle_name = vehicle_name;
+      const qrsim::ScenarioResult result = qrsim::run_scenario(scenario);
+      if (json) {
+        std::printf("%s\n", qrsim::to_json(result).c_str());
+      } else {
+        std::printf("scenario %s on %s: %s\n", result.scenario.c_str(), result.vehicle.c_str(),
+                    result.pass ? "PASS" : "FAIL");
+        if (!result.error.empty()) std::printf("  error: %s\n", result.error.c_str());
+        for (const qrsim::Figure& f : result.figures) {
+          if (f.name == "final_mode") {
+            std::printf("  %-26s %s\n", "final_mode", result.final_mode.c_str());
+          } else {
+            std::printf("  %-26s %.4g\n", f.name.c_str(), f.value);
+          }
+        }
+        for (const qrsim::CheckResult& c : result.checks) std::printf("  [%s] %s\n", c.pass ? "ok" : "FAIL", c.band.c_str());
+      }
+      return result.pass ? 0 : 1;
+    }
+  }
+  return 2;
+}

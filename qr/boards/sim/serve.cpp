@@ -1,0 +1,113 @@
+#include <qr/boards/sim/serve.hpp>
+
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <stdlib.h>
+#include <termios.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+
+#include <qr/boards/sim/sim_qr.hpp>
+
+namespace qrsim {
+namespace {
+
+volatile sig_atomic_t g_stop = 0;
+void on_signal(int) { g_stop = 1; }
+
+// The master side of a fresh pseudo terminal, in raw mode; prints the slave's path. The slave is
+// opened once here and kept open, so the master never sees a hang-up between console sessions
+// and the line discipline is raw (no echo, no CR/LF mangling) before any console opens it.
+bool open_pty(int& master, int& slave_keep) {
+  master = posix_openpt(O_RDWR | O_NOCTTY);
+  if (master < 0 || grantpt(master) != 0 || unlockpt(master) != 0) return false;
+  const char* name = ptsname(master);
+  if (name == nullptr) return false;
+  slave_keep = open(name, O_RDWR | O_NOCTTY);
+  if (slave_keep < 0) return false;
+  termios t{};
+  if (tcgetattr(slave_keep, &t) != 0) return false;
+  cfmakeraw(&t);
+  cfsetispeed(&t, B115200);
+  cfsetospeed(&t, B115200);
+  if (tcsetattr(slave_keep, TCSANOW, &t) != 0) return false;
+  std::printf("qrsim: serial on %s\n", name);
+  std::fflush(stdout);
+  return true;
+}
+
+void set_nonblocking(int fd) { fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) | O_NONBLOCK); }
+
+}  // namespace
+
+int serve(const ServeOptions& options) {
+  int in_fd = STDIN_FILENO, out_fd = STDOUT_FILENO, slave_keep = -1;
+  if (!options.stdio) {
+    int master = -1;
+    if (!open_pty(master, slave_keep)) {
+      std::perror("qrsim: pseudo terminal");
+      return 1;
+    }
+    in_fd = out_fd = master;
+  }
+  set_nonblocking(in_fd);
+  signal(SIGINT, on_signal);
+  signal(SIGTERM, on_signal);
+  signal(SIGPIPE, SIG_IGN);
+
+  std::unique_ptr<SimQr> qr = make_qr(options.vehicle, {.seed = options.seed});
+  qr->board.follow_wall_clock();
+  const uint64_t stop_us = options.seconds > 0 ? static_cast<uint64_t>(std::llround(options.seconds * 1e6)) : 0;
+  uint64_t next_status_us = 1000000;
+  uint8_t buffer[256];
+  bool input_open = true;
+
+  while (g_stop == 0) {
+    // Bytes from the console go onto the line now; the line delivers them at 115200 baud.
+    while (input_open) {
+      const ssize_t n = read(in_fd, buffer, sizeof buffer);
+      if (n > 0) {
+        for (ssize_t i = 0; i < n; ++i) qr->board.pc_send(buffer[i]);
+      } else {
+        if (n == 0 && options.stdio) input_open = false;  // stdin closed: keep flying, silent
+        break;                                            // EAGAIN, or EIO: no console attached
+      }
+    }
+    // Bytes the QR has sent that have arrived at the console's end.
+    size_t count = 0;
+    uint8_t byte = 0;
+    while (count < sizeof buffer && qr->board.pc_receive(byte)) buffer[count++] = byte;
+    for (size_t done = 0; done < count;) {
+      const ssize_t n = write(out_fd, buffer + done, count - done);
+      if (n < 0 && errno != EAGAIN && errno != EINTR) break;  // nobody listening: the bytes are lost, as on a wire
+      if (n < 0) {
+        pollfd p{out_fd, POLLOUT, 0};
+        poll(&p, 1, 1);
+        continue;
+      }
+      done += static_cast<size_t>(n);
+    }
+
+    if (!qr->tick()) break;  // sleeps until the next kick, then runs the firmware
+
+    const uint64_t now = qr->world.now_us();
+    if (options.status && now >= next_status_us) {
+      next_status_us += 1000000;
+      const sim::PlantState& s = qr->world.plant().state();
+      const sim::Euler e = sim::to_euler(s.attitude);
+      std::fprintf(stderr, "qrsim: t=%.0fs mode=%u height=%.2fm roll=%.1f pitch=%.1f yaw=%.1f deg battery=%.2fV misses=%u\n",
+                   static_cast<double>(now) * 1e-6, static_cast<unsigned>(qr->firmware.mode()), -s.position.z,
+                   e.roll * 57.29578, e.pitch * 57.29578, e.yaw * 57.29578, qr->world.plant().battery_volts(),
+                   static_cast<unsigned>(qr->scheduler.stats().deadline_misses));
+    }
+    if (stop_us != 0 && now >= stop_us) break;
+  }
+  if (slave_keep >= 0) close(slave_keep);
+  return 0;
+}
+
+}  // namespace qrsim

@@ -1,0 +1,25 @@
+// Serve mode: the simulated QR in real time, its serial line on a pseudo terminal (or on stdin and
+// stdout), so the ground console talks to it exactly as to the hardware.
+#pragma once
+
+#include <stdint.h>
+
+#include <string>
+
+#include <sim/vehicle.hpp>
+
+namespace qrsim {
+
+struct ServeOptions {
+  bool stdio = false;  // the line on stdin/stdout instead of a pseudo terminal
+  uint64_t seed = 1;
+  sim::VehicleParams vehicle = sim::default_vehicle();
+  double seconds = 0;  // > 0: stop after this much time (for tests); 0: until exit or a signal
+  bool status = false; // a status line on stderr once a second
+};
+
+// Runs until the firmware stops (the console sent exit), a signal, or `seconds`. Returns the
+// process exit code.
+int serve(const ServeOptions& options);
+
+}  // namespace qrsim

@@ -1,0 +1,70 @@
+#include <qr/boards/sim/sim_board.hpp>
+
+#include <thread>
+
+namespace qrsim {
+
+qr::SensorSample to_sensor_sample(const sim::SensorReading& reading) {
+  qr::SensorSample s;
+  for (size_t i = 0; i < 3; ++i) {
+    s.gyro[i] = reading.imu.gyro[i];
+    s.accel[i] = reading.imu.accel[i];
+  }
+  s.battery_mv = reading.battery_mv;
+  s.pressure_pa = 0;  // no barometer modelled
+  return s;
+}
+
+SimBoard::SimBoard(sim::World& world) : world_(world) {
+  sample_ = to_sensor_sample(world_.sample());
+}
+
+uint32_t SimBoard::kicks() const {
+  const uint64_t t = real_time_ ? sim_at_wall_start_us_ + wall_us() : world_.now_us();
+  return static_cast<uint32_t>(t / qr::kPeriodUs);
+}
+
+uint32_t SimBoard::wait_kick(uint32_t seen) {
+  uint32_t kick = seen + 1;
+  if (real_time_) {
+    // Sleep until the wall clock reaches the next kick; when the host is late, take the kick
+    // the wall clock is at (the scheduler counts the ones in between as missed).
+    const uint64_t due = kick_time_us(seen) - sim_at_wall_start_us_;
+    const uint64_t wall = wall_us();
+    if (wall < due) std::this_thread::sleep_for(std::chrono::microseconds(due - wall));
+    kick = std::max(kick, kicks());
+  }
+  world_.advance_to(static_cast<uint64_t>(kick) * qr::kPeriodUs);
+  sample_ = to_sensor_sample(world_.sample());
+  return kick;
+}
+
+uint32_t SimBoard::cycles() const {
+  return static_cast<uint32_t>(
+      std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch()).count());
+}
+
+void SimBoard::set_engines(qr::EngineCommand engines) {
+  engines_ = engines;
+  world_.plant().set_engines({engines.value[0], engines.value[1], engines.value[2], engines.value[3]});
+}
+
+bool SimBoard::pc_next_sent_at_us(uint64_t& us) const {
+  uint64_t ns = 0;
+  if (!to_pc_.next_sent_at(ns)) return false;
+  us = ns / 1000;
+  return true;
+}
+
+void SimBoard::follow_wall_clock() {
+  real_time_ = true;
+  wall_start_ = std::chrono::steady_clock::now();
+  sim_at_wall_start_us_ = world_.now_us();
+}
+
+uint64_t SimBoard::wall_us() const {
+  return static_cast<uint64_t>(
+      std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now() - wall_start_).count());
+}
+
+}  // namespace qrsim

@@ -1,0 +1,86 @@
+// The board the host firmware flies in the simulator: qr::Board over a sim::World.
+//
+//   wait_kick   advances the physics to the next control period boundary and samples the
+//               sensors there (the MPU's data-ready is the kick, as on the IN4073 board);
+//   now_us      simulated time; it stands still while a tick runs, so in headless runs a tick
+//               takes no simulated time and no deadline is ever missed. In real time (serve
+//               mode) the kick count follows the wall clock, and a tick the host ran late on is
+//               a deadline miss as on hardware;
+//   cycles      the host's nanosecond clock: what the tasks really cost on this machine (a
+//               benchmark figure; nothing in the flight depends on it);
+//   set_engines the motor commands of the plant;
+//   serial      two SerialLines at 115200 baud: the QR's transmit buffer holds 32 bytes;
+//   log_area    128 KiB of RAM, the size of the IN4073 board's log flash.
+#pragma once
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include <chrono>
+#include <vector>
+
+#include <qr/boards/sim/serial_line.hpp>
+#include <qr/core/board.hpp>
+#include <qr/core/rate.hpp>
+#include <sim/world.hpp>
+
+namespace qrsim {
+
+class SimBoard {
+ public:
+  static constexpr size_t kTransmitBuffer = 32;
+  static constexpr size_t kLogBytes = 128 * 1024;
+
+  explicit SimBoard(sim::World& world);
+
+  // ---- qr::Board ----
+  uint32_t wait_kick(uint32_t seen);
+  uint32_t kicks() const;
+  uint32_t now_us() const { return static_cast<uint32_t>(world_.now_us()); }
+  uint32_t cycles() const;
+  qr::SensorSample read_sensors() const { return sample_; }
+  void set_engines(qr::EngineCommand engines);
+  bool serial_read(uint8_t& byte) { return to_qr_.receive(world_.now_us() * 1000, byte); }
+  bool serial_write(uint8_t byte) { return to_pc_.send(byte, world_.now_us() * 1000); }
+  void set_leds(uint8_t leds) { leds_ = leds; }
+  qr::LogArea log_area() { return {log_.data(), log_.size()}; }
+
+  // ---- the PC's end of the line ----
+  bool pc_send(uint8_t byte) { return to_qr_.send(byte, world_.now_us() * 1000); }
+  bool pc_receive(uint8_t& byte) { return to_pc_.receive(world_.now_us() * 1000, byte); }
+  // When the QR queued the byte pc_receive() gives next (a frame's start byte: its tick).
+  bool pc_next_sent_at_us(uint64_t& us) const;
+
+  // Real time: from now on the kick count follows the wall clock (serve mode).
+  void follow_wall_clock();
+  bool real_time() const { return real_time_; }
+  // Simulated µs of the next kick after `seen`.
+  uint64_t kick_time_us(uint32_t seen) const { return (static_cast<uint64_t>(seen) + 1) * qr::kPeriodUs; }
+
+  sim::World& world() { return world_; }
+  const sim::World& world() const { return world_; }
+  uint8_t leds() const { return leds_; }
+  const qr::EngineCommand& engines() const { return engines_; }
+  uint64_t bytes_to_qr_refused() const { return to_qr_.bytes_refused(); }
+
+ private:
+  uint64_t wall_us() const;
+
+  sim::World& world_;
+  SerialLine to_qr_{1u << 20};  // the PC side's buffer: a USB serial adapter's, large
+  SerialLine to_pc_{kTransmitBuffer};
+  qr::SensorSample sample_{};
+  qr::EngineCommand engines_{};
+  uint8_t leds_ = 0;
+  std::vector<uint8_t> log_ = std::vector<uint8_t>(kLogBytes);
+  bool real_time_ = false;
+  std::chrono::steady_clock::time_point wall_start_{};
+  uint64_t sim_at_wall_start_us_ = 0;
+};
+
+static_assert(qr::Board<SimBoard>);
+
+// A world sample as the firmware's SensorSample.
+qr::SensorSample to_sensor_sample(const sim::SensorReading& reading);
+
+}  // namespace qrsim
