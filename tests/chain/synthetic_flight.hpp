@@ -3,14 +3,15 @@
 // feeds the host/devboard checksum (chain_devboard.cpp, chain_checksum_test.cpp) and, written out
 // by make_recording, the replay's sample recording in tests/data.
 //
-// Script, with t in seconds from the first sample:
-//   t < 0.6   level and still, lift 0: the calibration window (the first 512 samples at 1 kHz)
-//   t >= 0.6  roll swings 0.25 sin(2 pi 0.8 (t - 0.6)) rad; lift 450; roll stick follows at 80 %
-//   t >= 1.2  pitch ramps to 0.15 rad over 0.5 s; pitch stick 600 (0.21 rad)
-//   t >= 1.8  yaw turns at 0.5 rad/s; yaw stick 250 (0.5 rad/s at the default max_yaw_rate)
+// Script: first level and still with lift 0 for 512 samples (the calibration window) plus 0.1 s,
+// then, with t in seconds from the end of that:
+//   t >= 0    roll swings 0.25 sin(2 pi 0.8 t) rad; lift 450; roll stick follows at 80 %
+//   t >= 0.4  an extra roll-gyro drift of +8 counts (2.1e-3 rad/s) for the bias estimate to find
+//   t >= 0.6  pitch ramps to 0.15 rad over 0.5 s; pitch stick 600 (0.21 rad)
+//   t >= 1.2  yaw turns at 0.5 rad/s; yaw stick 250 (0.5 rad/s at the default max_yaw_rate)
+// until t = 1.9 (2512 samples at 1 kHz, 1462 at 500 Hz).
 // Sensors: body rates from the Euler rates (p = phi' - psi' sin theta, ...) plus a gyro offset
-// (x +40, y -25, z +15 counts) and, from t = 1.0, an extra roll-gyro drift of +8 counts
-// (2.1e-3 rad/s); specific force g (sin theta, -sin phi cos theta, -cos phi cos theta) plus an
+// (x +40, y -25, z +15 counts); specific force g (sin theta, -sin phi cos theta, -cos phi cos theta) plus an
 // accelerometer offset (x +60, y -35, z +90 counts); triangular-ish noise (sum of four uniform
 // draws) of +-12 gyro counts and +-80 accelerometer counts.
 #pragma once
@@ -63,7 +64,8 @@ inline int16_t saturate16(int32_t v) {
 template <uint32_t SampleHz>
 class Flight {
  public:
-  static constexpr uint32_t kTicks = SampleHz * 5 / 2;  // 2.5 s
+  static constexpr uint32_t kStill = 512 + SampleHz / 10;
+  static constexpr uint32_t kTicks = kStill + SampleHz * 19 / 10;
 
   // The sample and sticks of tick n (n = 0, 1, 2, ... in order: the noise is a stream).
   Tick next() {
@@ -127,12 +129,12 @@ class Flight {
 
  private:
   static constexpr double kPiD = 3.14159265358979323846;
-  static constexpr uint32_t kRollStart = SampleHz * 3 / 5;
+  static constexpr uint32_t kRollStart = kStill;
   static constexpr uint32_t kRollPeriod = SampleHz * 5 / 4;  // 0.8 Hz
-  static constexpr uint32_t kPitchStart = SampleHz * 6 / 5;
+  static constexpr uint32_t kDriftStart = kStill + SampleHz * 2 / 5;
+  static constexpr uint32_t kPitchStart = kStill + SampleHz * 3 / 5;
   static constexpr uint32_t kPitchRamp = SampleHz / 2;
-  static constexpr uint32_t kYawStart = SampleHz * 9 / 5;
-  static constexpr uint32_t kDriftStart = SampleHz;
+  static constexpr uint32_t kYawStart = kStill + SampleHz * 6 / 5;
 
   static constexpr Angle kRollPhaseStep = Angle(2 * kPiD / kRollPeriod);
   static constexpr Angle kRollAmplitude = Angle(0.25);

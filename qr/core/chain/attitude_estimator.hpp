@@ -13,7 +13,8 @@
 // defaults at 1 kHz), the angle follows the accelerometer with time constant C1 samples.
 //
 // Fixed point: the divisions become multiplications by 1 / C1 and fs / C2, computed when a
-// parameter changes. The bias accumulates in a 64-bit Wide with 52 fractional bits, exactly:
+// parameter changes. The angle accumulates in a 64-bit Wide (AngleIntegral below), and the bias
+// in a 64-bit Wide with 52 fractional bits, both exactly:
 // every product e x fs / C2 adds in without rounding, so a bias error too small to show in the
 // rate format still moves the accumulator (with the report's rate-format bias, e / C2 would round
 // to zero below about 0.05 gyro counts of error and the bias would stop converging there).
@@ -30,6 +31,52 @@
 #include <qr/core/chain/numeric.hpp>
 
 namespace qr::chain {
+
+// An angle kept as the exact sum of its increments. rate x dt is 2e-9 rad per step for a rate of
+// 2e-6 rad/s, about half an lsb of the Angle format: summed in Angle, each step would round to 0
+// or 1 lsb, and a small rate (a small bias error) would be integrated wrongly or not at all. The
+// sum is a Wide in the products' own format (rate x dt and angle x 1/C1 are both Angle x Q<30>
+// for FixedNumbers: Wide<58>, +-32 rad), so every increment adds in exactly; the angle is read
+// from it rounded once. Wrapped into [-pi, pi) after every change.
+template <class N>
+class AngleIntegral {
+ public:
+  using Angle = typename N::Angle;
+  using Sum = decltype(fx::mul_wide(typename N::Angle{}, typename N::AngleGain{}));
+  static_assert(fx::detail::is_same<Sum, decltype(fx::mul_wide(typename N::Rate{}, typename N::Scale{}))>,
+                "rate x dt and angle x gain must add in the same wide format");
+
+  void set(Angle a) {
+    sum_ = fx::mul_wide(a, kOne);
+    angle_ = a;
+  }
+  void add(Sum delta) {
+    sum_ += delta;
+    normalise();
+  }
+  void subtract(Sum delta) {
+    sum_ -= delta;
+    normalise();
+  }
+  Angle angle() const { return angle_; }
+
+ private:
+  static constexpr typename N::AngleGain kOne = typename N::AngleGain(1.0);
+
+  void normalise() {
+    angle_ = N::template convert<Angle>(sum_);
+    if (!(angle_ < kPiAngle<Angle>)) {
+      sum_ -= fx::mul_wide(kTwoPiAngle<Angle>, kOne);
+      angle_ = N::template convert<Angle>(sum_);
+    } else if (angle_ < -kPiAngle<Angle>) {
+      sum_ += fx::mul_wide(kTwoPiAngle<Angle>, kOne);
+      angle_ = N::template convert<Angle>(sum_);
+    }
+  }
+
+  Sum sum_{};
+  Angle angle_{};
+};
 
 // One tilt axis (roll or pitch): angle and gyro bias.
 template <class N, uint32_t SampleHz>
@@ -48,16 +95,16 @@ class TiltEstimator {
   }
   // Starts from this angle (e.g. the accelerometer's) with no bias.
   void start(Angle angle) {
-    angle_ = angle;
+    angle_.set(angle);
     bias_sum_ = {};
     bias_ = {};
   }
 
   void update(Rate gyro, Angle accel_angle) {
     rate_ = gyro - bias_;
-    angle_ = wrap_angle(angle_ + product<Angle>(rate_, kDt));
-    const Angle e = wrap_angle(angle_ - accel_angle);
-    angle_ = wrap_angle(angle_ - product<Angle>(e, k1_));
+    angle_.add(fx::mul_wide(rate_, kDt));
+    const Angle e = wrap_angle(angle_.angle() - accel_angle);
+    angle_.subtract(fx::mul_wide(e, k1_));
     bias_sum_ += fx::mul_wide(e, k2_);
     bias_ = N::template convert_sat<Rate>(bias_sum_);
     if (kMaxBias < bias_) {
@@ -69,7 +116,7 @@ class TiltEstimator {
     }
   }
 
-  Angle angle() const { return angle_; }
+  Angle angle() const { return angle_.angle(); }
   Rate rate() const { return rate_; }
   Rate bias() const { return bias_; }
 
@@ -78,7 +125,7 @@ class TiltEstimator {
 
   typename N::AngleGain k1_{};
   typename N::BiasGain k2_{};
-  Angle angle_{};
+  AngleIntegral<N> angle_;
   Rate rate_{};
   Rate bias_{};
   typename N::BiasSum bias_sum_{};
@@ -112,18 +159,18 @@ class AttitudeEstimator {
     if (!started_) {
       roll_.start(roll_from_accel_);
       pitch_.start(pitch_from_accel_);
-      yaw_ = Angle{};
+      yaw_.set(Angle{});
       started_ = true;
     }
     roll_.update(rate[0], roll_from_accel_);
     pitch_.update(rate[1], pitch_from_accel_);
     yaw_rate_ = rate[2];
-    yaw_ = wrap_angle(yaw_ + product<Angle>(yaw_rate_, kDt));
+    yaw_.add(fx::mul_wide(yaw_rate_, kDt));
   }
 
   Angle roll() const { return roll_.angle(); }
   Angle pitch() const { return pitch_.angle(); }
-  Angle yaw() const { return yaw_; }
+  Angle yaw() const { return yaw_.angle(); }
   Rate p() const { return roll_.rate(); }
   Rate q() const { return pitch_.rate(); }
   Rate r() const { return yaw_rate_; }
@@ -136,7 +183,7 @@ class AttitudeEstimator {
   static constexpr typename N::Scale kDt = typename N::Scale(1.0 / SampleHz);
 
   TiltEstimator<N, SampleHz> roll_, pitch_;
-  Angle yaw_{};
+  AngleIntegral<N> yaw_;
   Rate yaw_rate_{};
   Angle roll_from_accel_{};
   Angle pitch_from_accel_{};

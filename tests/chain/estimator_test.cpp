@@ -1,0 +1,192 @@
+// The attitude estimator: signs, convergence to the accelerometer angle, tracking of a gyro
+// rate, and convergence of the bias estimate to an injected gyro bias, in the flight's Q formats
+// and in double, at 1 kHz and 500 Hz.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include <qr/core/chain/attitude_estimator.hpp>
+#include <qr/core/chain/fixed_numbers.hpp>
+#include <qr/tools/real_numbers.hpp>
+
+#include "chain_test_support.hpp"
+
+namespace qr::chain {
+namespace {
+
+// The estimator with the parameter table's defaults (C1 = 256, C2 = 1e6).
+template <class N, uint32_t Hz = 1000>
+struct Rig {
+  AttitudeEstimator<N, Hz> e;
+  explicit Rig(int32_t c1 = 256, int32_t c2 = 1000000) { e.set_divisors(c1, c2); }
+
+  // Calibrated sensors for an attitude and body rates (plus a gyro bias on p and q).
+  void step(double roll, double pitch, double p, double q, double r, double bias_p = 0, double bias_q = 0) {
+    using Rate = typename N::Rate;
+    using Accel = typename N::Accel;
+    const double fx = std::sin(pitch), fy = -std::sin(roll) * std::cos(pitch), fz = -std::cos(roll) * std::cos(pitch);
+    const Rate rate[3] = {to<Rate>(p + bias_p), to<Rate>(q + bias_q), to<Rate>(r)};
+    const Accel accel[3] = {to<Accel>(fx), to<Accel>(fy), to<Accel>(fz)};
+    e.update(rate, accel);
+  }
+  template <class T>
+  static T to(double v) {
+    if constexpr (fx::is_q<T>) {
+      return test::quantise<T>(v);
+    } else {
+      return static_cast<T>(v);
+    }
+  }
+  double roll() const { return test::as_double(e.roll()); }
+  double pitch() const { return test::as_double(e.pitch()); }
+  double yaw() const { return test::as_double(e.yaw()); }
+  double p_bias() const { return test::as_double(e.p_bias()); }
+  double q_bias() const { return test::as_double(e.q_bias()); }
+  double p() const { return test::as_double(e.p()); }
+};
+
+template <class N>
+class Estimator : public ::testing::Test {};
+using NumberTypes = ::testing::Types<FixedNumbers, DoubleNumbers>;
+TYPED_TEST_SUITE(Estimator, NumberTypes);
+
+// docs/conventions.md: roll positive = right side down, pitch positive = nose up.
+TYPED_TEST(Estimator, TiltingRightGivesPositiveRollAndNoseUpPositivePitch) {
+  Rig<TypeParam> right;
+  right.step(0.2, 0, 0, 0, 0);
+  EXPECT_NEAR(test::as_double(right.e.roll_from_accel()), 0.2, 1e-6);
+  EXPECT_NEAR(right.roll(), 0.2, 1e-6);
+  EXPECT_NEAR(right.pitch(), 0.0, 1e-6);
+  Rig<TypeParam> nose_up;
+  nose_up.step(0, 0.3, 0, 0, 0);
+  EXPECT_NEAR(test::as_double(nose_up.e.pitch_from_accel()), 0.3, 1e-6);
+  EXPECT_NEAR(nose_up.pitch(), 0.3, 1e-6);
+  EXPECT_NEAR(nose_up.roll(), 0.0, 1e-6);
+  // A positive roll rate rolls right: the integrated angle grows before the accelerometer says so.
+  Rig<TypeParam> rolling;
+  rolling.step(0, 0, 0, 0, 0);
+  for (int n = 0; n < 100; ++n) rolling.step(0, 0, 1.0, 0, 0);
+  EXPECT_GT(rolling.roll(), 0.05);
+  // A positive yaw rate turns the nose right: yaw grows.
+  for (int n = 0; n < 100; ++n) rolling.step(0, 0, 0, 0, 0.5);
+  EXPECT_NEAR(rolling.yaw(), 0.05, 1e-6);
+}
+
+// With the gyro still, the angle follows a new accelerometer angle (the bias loop takes part:
+// it reads the disagreement as drift for a while, then gives it back).
+TYPED_TEST(Estimator, ConvergesToTheAccelerometerAngle) {
+  Rig<TypeParam> rig;
+  rig.step(0, 0, 0, 0, 0);
+  for (int n = 0; n < 30000; ++n) rig.step(0.3, -0.2, 0, 0, 0);
+  std::printf("  after 30 s at (0.3, -0.2): roll %.3e, pitch %.3e off; bias %.2e, %.2e rad/s\n", rig.roll() - 0.3,
+              rig.pitch() + 0.2, rig.p_bias(), rig.q_bias());
+  EXPECT_NEAR(rig.roll(), 0.3, 1e-4);
+  EXPECT_NEAR(rig.pitch(), -0.2, 1e-4);
+  EXPECT_NEAR(rig.p_bias(), 0.0, 1e-4);
+}
+
+// The angle follows the gyro through a fast manoeuvre while the accelerometer is noisy
+// (vibration of +-0.1 g), better than the accelerometer alone.
+TYPED_TEST(Estimator, TracksAGyroRateThroughAccelerometerNoise) {
+  Rig<TypeParam> rig;
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> vibration(-0.1, 0.1);
+  rig.step(0, 0, 0, 0, 0);
+  double worst = 0, worst_accel = 0;
+  for (int n = 1; n <= 3000; ++n) {
+    const double t = n / 1000.0;
+    const double roll = 0.4 * std::sin(2 * std::numbers::pi * t), p = 0.8 * std::numbers::pi * std::cos(2 * std::numbers::pi * t);
+    const double noisy_roll = roll + vibration(rng);
+    rig.step(noisy_roll, 0, p, 0, 0);
+    worst = std::max(worst, std::fabs(rig.roll() - roll));
+    worst_accel = std::max(worst_accel, std::fabs(noisy_roll - roll));
+  }
+  std::printf("  tracking a 1 Hz roll of 0.4 rad: max error %.4f rad (accelerometer alone: %.4f rad)\n", worst,
+              worst_accel);
+  EXPECT_LT(worst, 0.02);
+}
+
+// An injected gyro bias is found: rate = gyro - bias goes to zero at rest, and the angle stays
+// level. Time constant about C2 / C1 = 3.9 s; after 40 s it is gone to 1e-4 of itself.
+TYPED_TEST(Estimator, BiasConvergesToAnInjectedGyroBias) {
+  for (const double bias : {0.02, -0.05, 2e-6}) {
+    Rig<TypeParam> rig;
+    rig.step(0, 0, 0, 0, 0);
+    for (int n = 0; n < 40000; ++n) rig.step(0, 0, 0, 0, 0, bias, -bias / 2);
+    std::printf("  injected %.1e rad/s: estimated %.6e (p), %.6e (q); roll %.2e rad\n", bias, rig.p_bias(),
+                rig.q_bias(), rig.roll());
+    EXPECT_NEAR(rig.p_bias(), bias, std::fabs(bias) * 1e-3 + 2e-8);
+    EXPECT_NEAR(rig.q_bias(), -bias / 2, std::fabs(bias) * 1e-3 + 2e-8);
+    EXPECT_NEAR(rig.p(), 0.0, std::fabs(bias) * 1e-3 + 2e-8);
+    EXPECT_NEAR(rig.roll(), 0.0, 1e-5);
+  }
+}
+
+// Where rounding to zero would show (the 2e-6 rad/s case above): a bias error of 1e-6 rad/s
+// (0.004 gyro counts) integrates to 1e-9 rad per step, and leaves a steady angle error
+// e = C1 dt x 1e-6 = 2.6e-7 rad, whose bias step e x fs / C2 is 2.6e-10 rad/s. Both round to 0 in
+// the Angle and Rate formats: an angle summed in Angle and a bias kept as a Rate would stop
+// there. The Wide sums keep both.
+TEST(Estimator, SmallIncrementsWouldRoundToZeroInTheSignalFormats) {
+  using N = FixedNumbers;
+  const N::Rate rate = test::quantise<N::Rate>(1e-6);
+  const N::Scale dt = N::Scale(0.001);
+  EXPECT_EQ(fx::narrow<N::Angle>(fx::mul_wide(rate, dt)).raw(), 0);
+  EXPECT_NE(fx::mul_wide(rate, dt).raw(), 0);
+  const N::Angle e = test::quantise<N::Angle>(256 * 1e-3 * 1e-6);
+  const N::BiasGain k2 = N::ratio<N::BiasGain>(1000, 1000000);
+  EXPECT_EQ(fx::narrow<N::Rate>(fx::mul_wide(e, k2)).raw(), 0);
+  EXPECT_NE(fx::mul_wide(e, k2).raw(), 0);
+}
+
+TYPED_TEST(Estimator, BiasConvergesAt500Hz) {
+  Rig<TypeParam, 500> rig;
+  rig.step(0, 0, 0, 0, 0);
+  for (int n = 0; n < 30000; ++n) rig.step(0, 0, 0, 0, 0, 0.03, 0);  // 60 s: C2/C1 samples is 7.8 s
+  std::printf("  500 Hz: injected 0.03 rad/s, estimated %.6e\n", rig.p_bias());
+  EXPECT_NEAR(rig.p_bias(), 0.03, 3e-5);
+}
+
+TYPED_TEST(Estimator, CorrectsInOneStepWithC1OfOne) {
+  Rig<TypeParam> rig(1, 1000000);
+  rig.step(0, 0, 0, 0, 0);
+  rig.step(0.25, 0.1, 3.0, 0, 0);  // the gyro says otherwise; C1 = 1 believes the accelerometer
+  EXPECT_NEAR(rig.roll(), 0.25, 1e-6);
+  EXPECT_NEAR(rig.pitch(), 0.1, 1e-6);
+}
+
+// Rolling through 180 degrees wraps to -180, and the accelerometer correction takes the short
+// way round instead of pulling the estimate back through zero.
+TYPED_TEST(Estimator, AnglesWrapThroughPi) {
+  Rig<TypeParam> rig;
+  const double rate = 2.0;
+  double roll = 2.9;
+  rig.step(roll, 0, 0, 0, 0);
+  for (int n = 0; n < 500; ++n) {
+    roll += rate / 1000;
+    if (roll >= std::numbers::pi) roll -= 2 * std::numbers::pi;
+    rig.step(roll, 0, rate, 0, 0);
+    ASSERT_GE(rig.roll(), -std::numbers::pi);
+    ASSERT_LT(rig.roll(), std::numbers::pi);
+    double error = rig.roll() - roll;
+    if (error > std::numbers::pi) error -= 2 * std::numbers::pi;
+    if (error < -std::numbers::pi) error += 2 * std::numbers::pi;
+    ASSERT_LT(std::fabs(error), 1e-3) << "at roll " << roll;
+  }
+  EXPECT_LT(roll, 0);  // went through pi
+}
+
+// A broken gyro (stuck at full scale) cannot run the bias or its accumulator away.
+TYPED_TEST(Estimator, BiasIsClampedForABrokenGyro) {
+  Rig<TypeParam> rig(256, 1000);
+  rig.step(0, 0, 0, 0, 0);
+  for (int n = 0; n < 200000; ++n) rig.step(0, 0, 8.7, 0, 0);
+  EXPECT_NEAR(rig.p_bias(), 0.5, 1e-9);
+  for (int n = 0; n < 200000; ++n) rig.step(0, 0, -8.7, 0, 0);
+  EXPECT_NEAR(rig.p_bias(), -0.5, 1e-9);
+}
+
+}  // namespace
+}  // namespace qr::chain
