@@ -1,0 +1,295 @@
+// Test mode: recorded samples and sticks through the flight chain, tick by tick (replay.hpp).
+#include "replay.hpp"
+
+#include <charconv>
+#include <cstdint>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <common/mode.hpp>
+#include <qr/core/chain/flight_chain.hpp>
+#include <qr/tools/real_numbers.hpp>
+
+namespace qr::tools {
+namespace {
+
+// ---- input ----
+
+struct Field {
+  const char* name;
+  int64_t min, max;
+};
+
+// The input columns, in order, with the range each must hold.
+constexpr Field kInputFields[] = {
+    {"time_us", 0, UINT32_MAX},  {"gyro_x", INT16_MIN, INT16_MAX},  {"gyro_y", INT16_MIN, INT16_MAX},
+    {"gyro_z", INT16_MIN, INT16_MAX}, {"accel_x", INT16_MIN, INT16_MAX}, {"accel_y", INT16_MIN, INT16_MAX},
+    {"accel_z", INT16_MIN, INT16_MAX}, {"battery_mv", 0, UINT16_MAX}, {"lift", 0, 1000},
+    {"roll", -1000, 1000},        {"pitch", -1000, 1000},          {"yaw", -1000, 1000},
+};
+constexpr size_t kInputFieldCount = sizeof(kInputFields) / sizeof(kInputFields[0]);
+
+struct Row {
+  size_t line;
+  uint32_t time_us;
+  SensorSample sample;
+  ControlInput sticks;
+};
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
+  return s;
+}
+
+std::vector<std::string_view> split(std::string_view line) {
+  std::vector<std::string_view> fields;
+  size_t start = 0;
+  while (true) {
+    const size_t comma = line.find(',', start);
+    fields.push_back(trim(line.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start)));
+    if (comma == std::string_view::npos) return fields;
+    start = comma + 1;
+  }
+}
+
+std::string join(const std::vector<std::string>& names) {
+  std::string s;
+  for (const std::string& n : names) s += (s.empty() ? "" : ",") + n;
+  return s;
+}
+
+class InputError {
+ public:
+  InputError(const char* file, std::ostream& out) : file_(file), out_(out) {}
+  int at(size_t line, const std::string& what) const {
+    out_ << "replay: " << file_ << ":" << line << ": " << what << "\n";
+    return 1;
+  }
+  int whole(const std::string& what) const {
+    out_ << "replay: " << file_ << ": " << what << "\n";
+    return 1;
+  }
+
+ private:
+  const char* file_;
+  std::ostream& out_;
+};
+
+// Parses one data row, or says what is wrong with it.
+std::string parse_row(std::string_view line, Row& row) {
+  const std::vector<std::string_view> fields = split(line);
+  if (fields.size() != kInputFieldCount) {
+    return "expected " + std::to_string(kInputFieldCount) + " fields, got " + std::to_string(fields.size());
+  }
+  int64_t v[kInputFieldCount];
+  for (size_t i = 0; i < kInputFieldCount; ++i) {
+    const std::string_view f = fields[i];
+    const auto [end, ec] = std::from_chars(f.data(), f.data() + f.size(), v[i]);
+    if (f.empty() || ec != std::errc() || end != f.data() + f.size()) {
+      return std::string(kInputFields[i].name) + ": '" + std::string(f) + "' is not an integer";
+    }
+    if (v[i] < kInputFields[i].min || v[i] > kInputFields[i].max) {
+      return std::string(kInputFields[i].name) + ": " + std::to_string(v[i]) + " is outside " +
+             std::to_string(kInputFields[i].min) + ".." + std::to_string(kInputFields[i].max);
+    }
+  }
+  row.time_us = static_cast<uint32_t>(v[0]);
+  for (int k = 0; k < 3; ++k) {
+    row.sample.gyro[k] = static_cast<int16_t>(v[1 + k]);
+    row.sample.accel[k] = static_cast<int16_t>(v[4 + k]);
+  }
+  row.sample.battery_mv = static_cast<uint16_t>(v[7]);
+  row.sticks.lift = static_cast<uint16_t>(v[8]);
+  row.sticks.roll = static_cast<int16_t>(v[9]);
+  row.sticks.pitch = static_cast<int16_t>(v[10]);
+  row.sticks.yaw = static_cast<int16_t>(v[11]);
+  return {};
+}
+
+// ---- output ----
+
+template <class Chain>
+struct Column {
+  const char* name;
+  int32_t (*value)(const Chain&);
+};
+
+// The output columns after time_us and mode, in the order the host/devboard checksum folds them
+// (tests/chain/chain_checksum.hpp), so a replay's output can be checked against it.
+template <class Chain>
+constexpr Column<Chain> kColumns[] = {
+    {"roll_e4", [](const Chain& c) -> int32_t { return c.roll_e4(); }},
+    {"pitch_e4", [](const Chain& c) -> int32_t { return c.pitch_e4(); }},
+    {"yaw_e4", [](const Chain& c) -> int32_t { return c.yaw_e4(); }},
+    {"p_e3", [](const Chain& c) -> int32_t { return c.p_e3(); }},
+    {"q_e3", [](const Chain& c) -> int32_t { return c.q_e3(); }},
+    {"r_e3", [](const Chain& c) -> int32_t { return c.r_e3(); }},
+    {"roll_sp_e4", [](const Chain& c) -> int32_t { return c.roll_setpoint_e4(); }},
+    {"pitch_sp_e4", [](const Chain& c) -> int32_t { return c.pitch_setpoint_e4(); }},
+    {"yaw_rate_sp_e3", [](const Chain& c) -> int32_t { return c.yaw_rate_setpoint_e3(); }},
+    {"p_sp_e3", [](const Chain& c) -> int32_t { return c.p_setpoint_e3(); }},
+    {"q_sp_e3", [](const Chain& c) -> int32_t { return c.q_setpoint_e3(); }},
+    {"tilt_mrad", [](const Chain& c) -> int32_t { return c.tilt_mrad(); }},
+    {"roll_acc_e4", [](const Chain& c) -> int32_t { return c.roll_from_accel_e4(); }},
+    {"pitch_acc_e4", [](const Chain& c) -> int32_t { return c.pitch_from_accel_e4(); }},
+    {"p_bias_e6", [](const Chain& c) -> int32_t { return c.p_bias_e6(); }},
+    {"q_bias_e6", [](const Chain& c) -> int32_t { return c.q_bias_e6(); }},
+    {"gyro_f_x", [](const Chain& c) -> int32_t { return c.gyro_filtered(0); }},
+    {"gyro_f_y", [](const Chain& c) -> int32_t { return c.gyro_filtered(1); }},
+    {"gyro_f_z", [](const Chain& c) -> int32_t { return c.gyro_filtered(2); }},
+    {"accel_f_x", [](const Chain& c) -> int32_t { return c.accel_filtered(0); }},
+    {"accel_f_y", [](const Chain& c) -> int32_t { return c.accel_filtered(1); }},
+    {"accel_f_z", [](const Chain& c) -> int32_t { return c.accel_filtered(2); }},
+    {"moment_roll_e3", [](const Chain& c) -> int32_t { return c.moments_e3().roll; }},
+    {"moment_pitch_e3", [](const Chain& c) -> int32_t { return c.moments_e3().pitch; }},
+    {"moment_yaw_e3", [](const Chain& c) -> int32_t { return c.moments_e3().yaw; }},
+    {"applied_roll_e3", [](const Chain& c) -> int32_t { return c.applied_moments_e3().roll; }},
+    {"applied_pitch_e3", [](const Chain& c) -> int32_t { return c.applied_moments_e3().pitch; }},
+    {"applied_yaw_e3", [](const Chain& c) -> int32_t { return c.applied_moments_e3().yaw; }},
+    {"ae0", [](const Chain& c) -> int32_t { return c.engines().value[0]; }},
+    {"ae1", [](const Chain& c) -> int32_t { return c.engines().value[1]; }},
+    {"ae2", [](const Chain& c) -> int32_t { return c.engines().value[2]; }},
+    {"ae3", [](const Chain& c) -> int32_t { return c.engines().value[3]; }},
+    {"calibrated", [](const Chain& c) -> int32_t { return c.calibrated() ? 1 : 0; }},
+};
+
+void append(std::string& line, int64_t v) {
+  char buffer[24];
+  const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, v);
+  (void)ec;
+  line.append(buffer, end);
+}
+
+// The tick as the flight task sets run it: calibration first, then full control.
+template <class Chain>
+int fly(const std::vector<Row>& rows, std::ostream& out) {
+  Chain chain;
+  out << replay_output_header() << "\n";
+  bool calibrated = false;
+  std::string line;
+  for (const Row& row : rows) {
+    chain.set_pilot(row.sticks);
+    chain.filter(row.sample);
+    const wire::Mode mode = calibrated ? wire::Mode::full_control : wire::Mode::calibration;
+    if (!calibrated) {
+      calibrated = chain.calibrate();
+    } else {
+      chain.estimate();
+      chain.control_attitude();
+      chain.control_yaw();
+      chain.mix();
+    }
+    line.clear();
+    append(line, row.time_us);
+    line += ',';
+    append(line, static_cast<int>(mode));
+    for (const Column<Chain>& column : kColumns<Chain>) {
+      line += ',';
+      append(line, column.value(chain));
+    }
+    line += '\n';
+    out << line;
+  }
+  return out ? 0 : 2;
+}
+
+template <uint32_t Hz>
+int fly_at(const std::vector<Row>& rows, std::ostream& out, const ReplayOptions& options) {
+  if (options.arithmetic == ReplayArithmetic::reference_double) return fly<FlightChain<chain::DoubleNumbers, Hz>>(rows, out);
+  return fly<FlightChain<chain::FixedNumbers, Hz>>(rows, out);
+}
+
+// Reads and checks every row before the first tick, so bad input produces no output at all.
+int read_rows(std::istream& in, const InputError& error, std::vector<Row>& rows) {
+  std::string line;
+  size_t number = 0;
+  if (!std::getline(in, line)) return error.at(1, "empty: expected the header '" + replay_input_header() + "'");
+  ++number;
+  if (trim(line) != replay_input_header()) {
+    return error.at(number, "header must be '" + replay_input_header() + "', got '" + std::string(trim(line)) + "'");
+  }
+  while (std::getline(in, line)) {
+    ++number;
+    if (trim(line).empty()) continue;
+    Row row{};
+    row.line = number;
+    if (const std::string what = parse_row(line, row); !what.empty()) return error.at(number, what);
+    rows.push_back(row);
+  }
+  if (in.bad()) return error.whole("read error");
+  return 0;
+}
+
+}  // namespace
+
+const std::string& replay_input_header() {
+  static const std::string header = [] {
+    std::vector<std::string> names;
+    for (const Field& f : kInputFields) names.push_back(f.name);
+    return join(names);
+  }();
+  return header;
+}
+
+const std::string& replay_output_header() {
+  static const std::string header = [] {
+    std::vector<std::string> names = {"time_us", "mode"};
+    for (const auto& column : kColumns<FixedChain>) names.push_back(column.name);
+    return join(names);
+  }();
+  return header;
+}
+
+int run_replay(std::istream& in, const char* in_name, std::ostream& out, std::ostream& errors,
+               const ReplayOptions& options) {
+  const InputError error(in_name, errors);
+  std::vector<Row> rows;
+  if (const int rc = read_rows(in, error, rows); rc != 0) return rc;
+  if (rows.size() < static_cast<size_t>(chain::kCalibrationSamples) + 1) {
+    return error.whole("has " + std::to_string(rows.size()) + " rows; the first " +
+                       std::to_string(chain::kCalibrationSamples) +
+                       " calibrate the sensors, so at least one more is needed");
+  }
+  // The control rate is the time step, the same on every row (modulo the clock's wrap).
+  const uint32_t step = rows[1].time_us - rows[0].time_us;
+  if (step != 1000 && step != 2000) {
+    return error.at(rows[1].line, "time step " + std::to_string(step) +
+                                      " us: the chain runs at 1000 Hz (1000 us) or 500 Hz (2000 us)");
+  }
+  for (size_t i = 1; i < rows.size(); ++i) {
+    const uint32_t d = rows[i].time_us - rows[i - 1].time_us;
+    if (d != step) {
+      return error.at(rows[i].line, "time step " + std::to_string(d) + " us differs from the first, " +
+                                        std::to_string(step) + " us: one row per control period");
+    }
+  }
+  const int rc = step == 1000 ? fly_at<1000>(rows, out, options) : fly_at<500>(rows, out, options);
+  if (rc != 0) errors << "replay: cannot write the output\n";
+  return rc;
+}
+
+int run_replay(const char* in_csv, const char* out_csv, std::ostream& errors, const ReplayOptions& options) {
+  std::ifstream in(in_csv);
+  if (!in) {
+    errors << "replay: cannot open " << in_csv << " for reading\n";
+    return 1;
+  }
+  // Checked and run into memory first: bad input leaves no output file behind.
+  std::ostringstream buffer;
+  if (const int rc = run_replay(in, in_csv, buffer, errors, options); rc != 0) return rc;
+  std::ofstream out(out_csv, std::ios::binary);
+  if (!out || !(out << buffer.str()) || !out.flush()) {
+    errors << "replay: cannot write " << out_csv << "\n";
+    return 2;
+  }
+  return 0;
+}
+
+int run_replay(const char* in_csv, const char* out_csv) { return run_replay(in_csv, out_csv, std::cerr); }
+
+}  // namespace qr::tools

@@ -1,0 +1,207 @@
+// Test mode (qr/tools/replay.hpp): the committed recording replays to the same bytes every time,
+// to the very values the devboard computes (the host/devboard checksum), and to the double
+// reference within stated bounds; bad input fails with its line number and leaves no output.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <qr/core/chain/flight_chain.hpp>
+#include <qr/tools/replay.hpp>
+
+#include "chain_checksum.hpp"
+#include "recording.hpp"
+
+namespace qr::tools {
+namespace {
+
+namespace fs = std::filesystem;
+const fs::path kRecording = fs::path(QR_TEST_DATA_DIR) / "synthetic_flight.csv";
+
+std::string read_file(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+fs::path temp_dir() {
+  const fs::path d = fs::temp_directory_path() /
+                     ("qr-replay-test-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "-" +
+                      ::testing::UnitTest::GetInstance()->current_test_info()->name());
+  fs::create_directories(d);
+  return d;
+}
+
+std::vector<std::vector<int64_t>> parse_output(const std::string& csv) {
+  std::vector<std::vector<int64_t>> rows;
+  std::istringstream in(csv);
+  std::string line;
+  std::getline(in, line);  // header
+  while (std::getline(in, line)) {
+    std::vector<int64_t> row;
+    std::istringstream fields(line);
+    std::string f;
+    while (std::getline(fields, f, ',')) row.push_back(std::stoll(f));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+std::string replay_text(const std::string& input, const ReplayOptions& options = {}) {
+  std::istringstream in(input);
+  std::ostringstream out, errors;
+  EXPECT_EQ(run_replay(in, "input", out, errors, options), 0) << errors.str();
+  return out.str();
+}
+
+TEST(Replay, CommittedRecordingIsTheGeneratorsOutput) {
+  const std::string committed = read_file(kRecording);
+  EXPECT_EQ(committed, chain::test::synthetic_recording_csv<1000>())
+      << "regenerate: build/<dir>/tests/chain/make-recording > tests/data/synthetic_flight.csv";
+  EXPECT_LT(committed.size(), 200u * 1024u);
+}
+
+TEST(Replay, SameRecordingSameBytes) {
+  const fs::path dir = temp_dir();
+  ASSERT_EQ(run_replay(kRecording.c_str(), (dir / "a.csv").c_str()), 0);
+  ASSERT_EQ(run_replay(kRecording.c_str(), (dir / "b.csv").c_str()), 0);
+  const std::string a = read_file(dir / "a.csv"), b = read_file(dir / "b.csv");
+  EXPECT_GT(a.size(), 100000u);
+  EXPECT_EQ(a, b);
+  fs::remove_all(dir);
+}
+
+// The replay's columns after time_us and mode are the read-outs the host/devboard checksum folds,
+// in its order: folding them must give the checksum the devboard program asserts, so the replay
+// of the committed recording is bit for bit what the RV32 build computes.
+TEST(Replay, OutputIsWhatTheDevboardComputes) {
+  const std::string output = replay_text(read_file(kRecording));
+  const auto rows = parse_output(output);
+  ASSERT_EQ(rows.size(), chain::synthetic::Flight<1000>::kTicks);
+  chain::checksum::Fnv1a h;
+  for (const auto& row : rows) {
+    for (size_t i = 2; i < row.size(); ++i) h.add(static_cast<int32_t>(row[i]));
+  }
+  EXPECT_EQ(h.value(), chain::checksum::kExpected);
+}
+
+TEST(Replay, Recordings500HzRunTheChainAt500Hz) {
+  const auto rows = parse_output(replay_text(chain::test::synthetic_recording_csv<500>()));
+  chain::checksum::Fnv1a h;
+  for (const auto& row : rows) {
+    for (size_t i = 2; i < row.size(); ++i) h.add(static_cast<int32_t>(row[i]));
+  }
+  FlightChain<chain::FixedNumbers, 500> direct;
+  EXPECT_EQ(h.value(), chain::checksum::fly(direct));
+}
+
+// The flight build against the double chain over the recording, column by column, in the
+// read-outs' own units. Bounds: the measured worst differences.
+TEST(Replay, FixedMatchesTheDoubleReference) {
+  const std::string input = read_file(kRecording);
+  const auto fixed = parse_output(replay_text(input));
+  const auto reference = parse_output(replay_text(input, {ReplayArithmetic::reference_double}));
+  ASSERT_EQ(fixed.size(), reference.size());
+  std::istringstream header(replay_output_header());
+  std::vector<std::string> names;
+  for (std::string n; std::getline(header, n, ',');) names.push_back(n);
+  std::vector<int64_t> worst(names.size(), 0);
+  for (size_t r = 0; r < fixed.size(); ++r) {
+    for (size_t c = 0; c < names.size(); ++c) worst[c] = std::max<int64_t>(worst[c], std::llabs(fixed[r][c] - reference[r][c]));
+  }
+  std::string figures;
+  for (size_t c = 0; c < names.size(); ++c) {
+    if (worst[c] != 0) figures += " " + names[c] + "=" + std::to_string(worst[c]);
+  }
+  std::printf("  columns that differ (worst, in the column's unit):%s\n", figures.empty() ? " none" : figures.c_str());
+  for (size_t c = 0; c < names.size(); ++c) {
+    // The moments in 1e-3 thrust units: 1 is the read-out's rounding. Everything else: at most
+    // one unit of its read-out (rounding of a value that differs by far less).
+    EXPECT_LE(worst[c], 1) << names[c];
+  }
+}
+
+// ---- bad input ----
+
+struct Failure {
+  int rc;
+  std::string message;
+};
+
+Failure replay_failure(const std::string& input) {
+  std::istringstream in(input);
+  std::ostringstream out, errors;
+  const int rc = run_replay(in, "in.csv", out, errors);
+  return {rc, errors.str()};
+}
+
+std::string recording_with(size_t line, const std::string& replacement) {
+  std::istringstream in(read_file(kRecording));
+  std::string text, l;
+  for (size_t n = 1; std::getline(in, l); ++n) text += (n == line ? replacement : l) + "\n";
+  return text;
+}
+
+TEST(Replay, BadInputFailsWithItsLineNumber) {
+  const struct {
+    std::string input;
+    std::string message;
+  } cases[] = {
+      {"", "in.csv:1: empty"},
+      {"time_us,gyro_x\n1,2\n", "in.csv:1: header must be 'time_us,gyro_x,gyro_y,gyro_z,accel_x,accel_y,accel_z,"
+                                "battery_mv,lift,roll,pitch,yaw', got 'time_us,gyro_x'"},
+      {recording_with(5, "1004000,1,2,3,4,5,6,7,8,9,10"), "in.csv:5: expected 12 fields, got 11"},
+      {recording_with(7, "1006000,1,2,3,4,x5,6,7,8,9,10,11"), "in.csv:7: accel_y: 'x5' is not an integer"},
+      {recording_with(7, "1006000,1,2,3,4,5.5,6,7,8,9,10,11"), "in.csv:7: accel_y: '5.5' is not an integer"},
+      {recording_with(9, "1008000,1,2,3,4,5,6,7,1200,9,10,11"), "in.csv:9: lift: 1200 is outside 0..1000"},
+      {recording_with(9, "1008000,40000,2,3,4,5,6,7,8,9,10,11"), "in.csv:9: gyro_x: 40000 is outside -32768..32767"},
+      {recording_with(9, "1008000,1,2,3,4,5,6,7,8,9,10,"), "in.csv:9: yaw: '' is not an integer"},
+      {recording_with(11, "1009500,1,2,3,4,5,6,7,8,9,10,11"), "in.csv:11: time step 1500 us differs from the first, 1000 us"},
+      {recording_with(3, "1003000,1,2,3,4,5,6,7,8,9,10,11"), "in.csv:3: time step 3000 us: the chain runs at"},
+      {replay_input_header() + "\n1000,0,0,0,0,0,-8192,12000,0,0,0,0\n", "in.csv: has 1 rows; the first 512"},
+  };
+  for (const auto& c : cases) {
+    const Failure f = replay_failure(c.input);
+    EXPECT_EQ(f.rc, 1) << c.message;
+    EXPECT_NE(f.message.find("replay: " + c.message), std::string::npos) << "got: " << f.message;
+  }
+}
+
+TEST(Replay, MissingInputAndUnwritableOutputFail) {
+  const fs::path dir = temp_dir();
+  std::ostringstream errors;
+  EXPECT_EQ(run_replay((dir / "missing.csv").c_str(), (dir / "out.csv").c_str(), errors), 1);
+  EXPECT_NE(errors.str().find("cannot open"), std::string::npos) << errors.str();
+  EXPECT_FALSE(fs::exists(dir / "out.csv"));
+  errors.str("");
+  EXPECT_EQ(run_replay(kRecording.c_str(), (dir / "no" / "such" / "dir.csv").c_str(), errors), 2);
+  EXPECT_NE(errors.str().find("cannot write"), std::string::npos) << errors.str();
+  fs::remove_all(dir);
+}
+
+TEST(Replay, BadInputLeavesNoOutputFile) {
+  const fs::path dir = temp_dir();
+  {
+    std::ofstream bad(dir / "bad.csv");
+    bad << recording_with(600, "oops");
+  }
+  std::ostringstream errors;
+  EXPECT_EQ(run_replay((dir / "bad.csv").c_str(), (dir / "out.csv").c_str(), errors), 1);
+  EXPECT_NE(errors.str().find(":600: expected 12 fields, got 1"), std::string::npos) << errors.str();
+  EXPECT_FALSE(fs::exists(dir / "out.csv"));
+  fs::remove_all(dir);
+}
+
+TEST(Replay, HeaderMayEndInCarriageReturnAndBlankLinesAreSkipped) {
+  std::string input = read_file(kRecording);
+  input.insert(input.find('\n'), "\r");
+  input += "\n\n";
+  EXPECT_EQ(replay_text(input), replay_text(read_file(kRecording)));
+}
+
+}  // namespace
+}  // namespace qr::tools
