@@ -38,7 +38,7 @@ struct RequestText {
 constexpr RequestText kRequestTexts[] = {
     {wire::MessageType::mode_change, nullptr, "mode change"},
     {wire::MessageType::param_set, nullptr, "parameter"},
-    {wire::MessageType::param_get, "reading every parameter back", "parameter read"},
+    {wire::MessageType::param_get, nullptr, "parameter read"},  // the reports say it all
     {wire::MessageType::log_start, "QR logging (sensor + telemetry)", "log start"},
     {wire::MessageType::log_stop, "QR logs stopped", "log stop"},
     {wire::MessageType::log_download, nullptr, "log download"},
@@ -88,7 +88,15 @@ struct Console::Receiver {
   void operator()(const wire::ParamReport& report) {
     const wire::ParameterSpec* spec = wire::find_parameter(report.id);
     if (spec == nullptr) return;
-    console.reported_[report.id - 1] = report.value;
+    std::optional<int32_t>& reported = console.reported_[report.id - 1];
+    const bool news = reported != report.value;
+    reported = report.value;
+    const bool on_its_way = console.uploading_ == spec->id ||
+                            std::find(console.upload_.begin(), console.upload_.end(), spec->id) != console.upload_.end();
+    if (news && !on_its_way && report.value != console.params_.get(spec->id)) {
+      console.note(Severity::warning, "the QR has " + param_text(spec->id, report.value) + ", the console " +
+                                          format_real(*spec, console.params_.get(spec->id)));
+    }
   }
   void operator()(const wire::DebugText& text) {
     for (std::string& line : console.debug_text_.add(text)) console.note(Severity::qr, line);
@@ -398,13 +406,21 @@ void Console::tick(uint32_t now_ms) {
   if (state != LinkState::closed && link_.control_due(now_ms)) send_control();
   link_.poll(now_ms, [this](const wire::ResendEvent& event) { on_gave_up(event); });
 
-  if (state == LinkState::up && exit_ == ExitState::running && !upload_.empty() &&
-      !link_.pending(wire::MessageType::param_set)) {
-    if (!upload_announced_ && upload_.size() > 1) note(Severity::info, "sending " + std::to_string(upload_.size()) + " parameters");
-    upload_announced_ = true;
-    const wire::ParamId id = upload_.front();
-    upload_.pop_front();
-    link_.request(wire::ParamSet{0, id_byte(id), params_.get(id)}, now_ms);
+  if (!link_.pending(wire::MessageType::param_set)) uploading_.reset();
+  if (state == LinkState::up && exit_ == ExitState::running && !uploading_) {
+    if (!upload_.empty()) {
+      if (!upload_announced_ && upload_.size() > 1) note(Severity::info, "sending " + std::to_string(upload_.size()) + " parameters");
+      upload_announced_ = true;
+      uploading_ = upload_.front();
+      upload_.pop_front();
+      link_.request(wire::ParamSet{0, id_byte(*uploading_), params_.get(*uploading_)}, now_ms);
+      readback_owed_ = true;
+    } else if (readback_owed_) {
+      // The QR's reports are what the screen shows as confirmed; asking for all of them once
+      // the upload is done checks every value, whether or not the QR reports after each set.
+      readback_owed_ = false;
+      link_.request(wire::ParamGet{0, wire::kAllParameters}, now_ms);
+    }
   }
 
   downloader_.tick(now_ms);

@@ -127,7 +127,9 @@ class Console {
   wire::ParameterValues params_;
   std::optional<int32_t> reported_[wire::kParameterCount];
   std::deque<wire::ParamId> upload_;
+  std::optional<wire::ParamId> uploading_;  // the param_set waiting for its answer
   bool upload_announced_ = false;
+  bool readback_owed_ = false;  // parameters went up: read them all back to check
   LogDownloader downloader_;
   JoystickState joystick_;
   bool joystick_known_ = false;

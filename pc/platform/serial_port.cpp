@@ -75,7 +75,11 @@ SerialPort::SerialPort(const std::string& path, uint32_t baud) : path_(path) {
 }
 
 SerialPort::~SerialPort() {
-  if (fd_ >= 0) ::close(fd_);
+  if (fd_ < 0) return;
+  // Exclusive mode belongs to the device, not to our descriptor: a pty that the simulator or QEMU
+  // keeps open would stay locked for the next console after we are gone.
+  ::ioctl(fd_, TIOCNXCL);
+  ::close(fd_);
 }
 
 SerialPort::Io SerialPort::read_available(std::vector<uint8_t>& into, std::string& why) {

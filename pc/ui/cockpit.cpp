@@ -222,7 +222,7 @@ void Cockpit::draw_pilot(const Console& console, int width) {
     put(11, column, s, confirmed ? 0 : kWarning);
     column += static_cast<int>(s.size()) + 2;
   }
-  if (unconfirmed) put(11, column, "(* not confirmed by the QR)", kDim);
+  if (unconfirmed) put(11, column, "*unconfirmed", kDim);
 
   const LinkFigures& f = console.link().figures();
   put(12, 0, "link", 0, A_BOLD);

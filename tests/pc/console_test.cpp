@@ -101,6 +101,32 @@ TEST(Console, SendsEveryParameterAtConnectOneAtATime) {
   EXPECT_EQ(b.console.parameters_to_send(), 0u);
 }
 
+TEST(Console, ParametersAreReadBackAfterAnUpload) {
+  Bench b;
+  b.qr.report_after_set = false;
+  b.connect();
+  EXPECT_EQ(count_requests(b, wire::MessageType::param_get), 1u);
+  for (const wire::ParameterSpec& spec : wire::kParameterTable) {
+    EXPECT_EQ(b.console.reported(spec.id), spec.default_value) << spec.name;
+  }
+  b.key('i');
+  b.run(100);
+  EXPECT_EQ(count_requests(b, wire::MessageType::param_get), 2u);
+  EXPECT_EQ(b.console.reported(wire::ParamId::roll_pitch_p1), 1024 + 64);
+  EXPECT_FALSE(b.logged("the QR has"));
+}
+
+TEST(Console, AValueTheQrDoesNotHoldIsAWarning) {
+  Bench b;
+  b.connect();
+  b.qr.params.set(static_cast<uint8_t>(wire::ParamId::roll_pitch_p2), 480);  // the QR changed it by itself
+  b.key('p');
+  b.run(50);
+  const qrterm::LogLine* line = b.log.find_last("the QR has p2 = 30, the console 50");
+  ASSERT_NE(line, nullptr);
+  EXPECT_EQ(line->severity, Severity::warning);
+}
+
 TEST(Console, ParametersGoUpAgainWhenTheLinkComesBack) {
   Bench b;
   b.connect();

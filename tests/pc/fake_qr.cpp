@@ -27,7 +27,7 @@ struct FakeQr::Handler {
   void operator()(const wire::ModeChange& m) { answer = qr.change_mode(m.mode); }
   void operator()(const wire::ParamSet& p) {
     answer = qr.params.set(p.id, p.value);
-    if (answer == wire::NackReason::none) qr.send(wire::encode(wire::ParamReport{p.id, p.value}));
+    if (answer == wire::NackReason::none && qr.report_after_set) qr.send(wire::encode(wire::ParamReport{p.id, p.value}));
   }
   void operator()(const wire::ParamGet& g) {
     for (const wire::ParameterSpec& spec : wire::kParameterTable) {
