@@ -16,10 +16,16 @@ constexpr uint32_t kChildCheckMs = 100;
 void read_joystick(Session& s, uint32_t now) {
   JoystickDevice& joystick = *s.joystick;
   if (!joystick.read()) {
-    s.console.joystick_lost(now);
+    s.console.joystick_lost(now);  // once: the console knows it is lost already after that
     return;
   }
   JoystickReader& reader = joystick.reader();
+  // A device opened again counts as back once it has said where the stick is: one that opens but
+  // delivers nothing (a half-gone USB device) is not a joystick.
+  if (s.console.joystick_state() == JoystickState::lost) {
+    if (!reader.position_known()) return;
+    s.console.joystick_back(now);
+  }
   if (reader.take_abort()) s.console.joystick_fire(now);
   s.console.joystick_moved(reader.sticks(), reader.position_known(), now);
 }
@@ -70,7 +76,7 @@ void run_main_loop(Session& s) {
         read_joystick(s, now);
       } else if (s.joystick->fd() < 0 && now - last_joystick_retry >= kJoystickRetryMs) {
         last_joystick_retry = now;
-        if (s.joystick->reopen()) console.joystick_back(now);
+        s.joystick->reopen();
       }
     }
     if (sim_out_open && fds[kSimOut].revents != 0) read_sim_output(s, s.sim->out(), sim_out_open, Severity::info);
