@@ -119,6 +119,9 @@ std::string parse(int argc, const char* const* argv, Arguments& a) {
   return {};
 }
 
+// Six decimals, with -0.000000 printed as 0.000000.
+std::string decimals6(double v) { return number(std::fabs(v) < 5e-7 ? 0.0 : v, "%.6f"); }
+
 template <class T>
 std::string json_list(const T* values, int count, const char* format) {
   std::string s = "[";
@@ -172,12 +175,11 @@ int run_qrfilter(int argc, const char* const* argv, std::ostream& out, std::ostr
     const chain::Response designed = chain::response_of(d, f, a.fs);
     const chain::Response quantised = chain::response_of(q, f, a.fs);
     out << (i ? ",\n    " : "\n    ");
-    out << "{\"hz\": " << number(f, "%.17g") << ", \"gain_db\": " << number(designed.gain_db, "%.6f")
-        << ", \"phase_deg\": " << number(designed.phase_deg, "%.6f")
-        << ", \"gain_db_quantised\": " << number(quantised.gain_db, "%.6f")
-        << ", \"phase_deg_quantised\": " << number(quantised.phase_deg, "%.6f")
-        << ", \"gain_db_analytic\": " << number(chain::analytic_butterworth_gain_db(order, a.fc, a.fs, f), "%.6f")
-        << "}";
+    out << "{\"hz\": " << number(f, "%.17g") << ", \"gain_db\": " << decimals6(designed.gain_db)
+        << ", \"phase_deg\": " << decimals6(designed.phase_deg)
+        << ", \"gain_db_quantised\": " << decimals6(quantised.gain_db)
+        << ", \"phase_deg_quantised\": " << decimals6(quantised.phase_deg)
+        << ", \"gain_db_analytic\": " << decimals6(chain::analytic_butterworth_gain_db(order, a.fc, a.fs, f)) << "}";
   }
   out << "\n  ]\n}\n";
   return 0;
