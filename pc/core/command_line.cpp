@@ -49,7 +49,7 @@ ParsedCommandLine parse_command_line(const std::vector<std::string>& arguments) 
     const size_t equals = name.find('=');
     if (name.rfind("--", 0) == 0 && equals != std::string::npos) {  // --port=/dev/ttyUSB0
       value = name.substr(equals + 1);
-      name = name.substr(0, equals);
+      name.resize(equals);
       has_value = true;
     }
     const OptionSpec* spec = nullptr;

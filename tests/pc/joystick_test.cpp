@@ -139,7 +139,7 @@ TEST(Joystick, EndOfTheStreamMeansTheJoystickIsGone) {
 TEST(Joystick, MapFileSetsAxesInversionDeadbandAndButton) {
   const qrterm::JoystickMapFile file = qrterm::parse_joystick_map(
       "# my stick\nlift_axis = 2\nlift_invert = no\nyaw_axis = 3\nroll_invert = yes\nabort_button = 1\ndeadband = 80\n");
-  ASSERT_TRUE(file.errors.empty()) << file.errors[0].message;
+  ASSERT_TRUE(file.errors.empty()) << qrterm::describe("text", file.errors);
   EXPECT_EQ(file.map.lift.axis, 2);
   EXPECT_FALSE(file.map.lift.invert);
   EXPECT_EQ(file.map.yaw.axis, 3);

@@ -28,7 +28,7 @@ TEST(ParamFile, RoundTripOfEveryParameterIsExact) {
       ASSERT_EQ(values.set(static_cast<uint8_t>(spec.id), raw), wire::NackReason::none);
     }
     const qrterm::ParamFileContents back = parse_param_file(qrterm::format_param_file(values));
-    ASSERT_TRUE(back.errors.empty()) << back.errors[0].message;
+    ASSERT_TRUE(back.errors.empty()) << qrterm::describe("text", back.errors);
     for (const wire::ParameterSpec& spec : wire::kParameterTable) {
       ASSERT_EQ(back.values.get(spec.id), values.get(spec.id)) << spec.name;
     }
