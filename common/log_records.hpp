@@ -77,6 +77,32 @@ struct TelemetryLogRecord {
   }
 };
 
+// LogStatus::flags bits
+inline constexpr uint8_t kLogStatusSensorOn = 0x01;
+inline constexpr uint8_t kLogStatusTelemetryOn = 0x02;
+inline constexpr uint8_t kLogStatusFull = 0x04;  // a log filled up and stopped keeping lines
+
+// The QR's logs as they stand: sent in the telemetry rotation and after every log request, so the
+// console knows how many lines a download must bring (lines lost at the end are noticed too).
+struct LogStatus {
+  static constexpr MessageType kType = MessageType::log_status;
+  uint8_t flags = 0;             // kLogStatus* bits
+  uint16_t sensor_lines = 0;     // lines 0..sensor_lines-1 exist
+  uint16_t telemetry_lines = 0;
+  uint16_t capacity_lines = 0;   // lines each log can hold
+
+  constexpr bool operator==(const LogStatus&) const = default;
+
+  template <class Self, class Visit>
+  static constexpr void fields(Self& m, Visit& v) {
+    v(m.flags); v(m.sensor_lines); v(m.telemetry_lines); v(m.capacity_lines);
+  }
+  constexpr bool valid() const {
+    return (flags & ~(kLogStatusSensorOn | kLogStatusTelemetryOn | kLogStatusFull)) == 0 &&
+           sensor_lines <= capacity_lines && telemetry_lines <= capacity_lines;
+  }
+};
+
 template <class Record>
 concept LogRecord = requires { Record::kPartType; Record::kParts; } &&
                     wire_size<Record>() == size_t{Record::kParts} * kLogPartDataBytes;

@@ -43,6 +43,7 @@ enum class MessageType : uint8_t {
   sensor_log_part = 0x95,
   telemetry_log_part = 0x96,
   telemetry_task = 0x99,
+  log_status = 0x9C,
 };
 
 enum class Direction : uint8_t { pc_to_qr = 1, qr_to_pc = 2 };
@@ -85,6 +86,7 @@ inline constexpr MessageSpec kMessageTable[] = {
     {MessageType::sensor_log_part, 9, false, Direction::qr_to_pc, "sensor_log_part"},
     {MessageType::telemetry_log_part, 9, false, Direction::qr_to_pc, "telemetry_log_part"},
     {MessageType::telemetry_task, 7, false, Direction::qr_to_pc, "telemetry_task"},
+    {MessageType::log_status, 7, false, Direction::qr_to_pc, "log_status"},
 };
 
 inline constexpr size_t kMessageCount = sizeof(kMessageTable) / sizeof(kMessageTable[0]);

@@ -21,7 +21,7 @@ struct MessageList {
 using AllMessages = MessageList<Control, ModeChange, ParamSet, ParamGet, LogStart, LogStop, LogDownload, Exit,
                                 Ack, Nack, ParamReport, DebugText, TelemetryAttitude, TelemetryRates,
                                 TelemetryEngines, TelemetrySetpoints, TelemetrySystem, TelemetryLink,
-                                SensorLogPart, TelemetryLogPart, TelemetryTask>;
+                                SensorLogPart, TelemetryLogPart, TelemetryTask, LogStatus>;
 
 template <class... Msgs>
 constexpr bool covers_table(MessageList<Msgs...>) {

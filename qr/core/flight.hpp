@@ -19,6 +19,7 @@
 #include <common/parameter_table.hpp>
 #include <common/request_dedup.hpp>
 #include <qr/core/board.hpp>
+#include <qr/core/flight_log.hpp>
 #include <qr/core/flight_tasks.hpp>
 #include <qr/core/rate.hpp>
 #include <qr/core/safety.hpp>
@@ -33,7 +34,11 @@ class Flight {
   static constexpr uint8_t kTaskCount = kFlightTaskCount;
   static const Task<Flight> kTasks[kTaskCount];
 
-  Flight() { apply_parameters(); }
+  // `log_memory`: where the loggers keep their lines (none: logging is refused).
+  explicit Flight(LogArea log_memory = {}) {
+    log_.attach(log_memory);
+    apply_parameters();
+  }
 
   // ---- the scheduler's side ----
   TaskSet task_set() const { return kFlightTaskSets[index(safety_.mode())]; }
@@ -54,6 +59,7 @@ class Flight {
   // Stops once the exit has been carried out and its last bytes are out.
   bool running() const { return !(safety_.stopped() && tx_.empty()); }
   void account(const TickReport& report, const SchedulerStats<kTaskCount>& stats) {
+    last_busy_us_ = report.busy_us;
     if (report.busy_us > loop_time_us_) loop_time_us_ = report.busy_us;
     deadline_misses_ = report.deadline_misses;
     cpu_load_permille_ = report.cpu_load_permille;
@@ -67,6 +73,7 @@ class Flight {
   Chain& chain() { return chain_; }
   const wire::LinkCounters& link_counters() const { return parser_.counters(); }
   const wire::ParameterValues& parameters() const { return params_; }
+  const FlightLog& log() const { return log_; }
   uint32_t tx_dropped_frames() const { return tx_dropped_; }
 
  private:
@@ -85,12 +92,15 @@ class Flight {
   void run_manual_mixer() { wanted_ = chain_.mix_manual(); }
   void run_safety();
   void run_telemetry();
+  void run_logger();
 
   void on_frame(const wire::Frame& frame);
   void apply_parameters();
   void send(const wire::FrameBytes& frame);
   void say(const char* text);
   void send_slow_group();
+  uint8_t telemetry_flags() const;
+  static uint16_t saturate_u16(uint32_t v) { return v > 0xFFFFu ? uint16_t{0xFFFF} : static_cast<uint16_t>(v); }
   Situation situation() const {
     Situation s;
     s.now_us = tick_us_;
@@ -129,11 +139,15 @@ class Flight {
   uint8_t telemetry_seq_ = 0;
   uint8_t slow_group_ = 0;
   uint32_t loop_time_us_ = 0;     // longest tick since the last system report
+  uint32_t last_busy_us_ = 0;
   uint32_t deadline_misses_ = 0;
   uint16_t cpu_load_permille_ = 0;
   uint32_t tx_dropped_ = 0;
   const SchedulerStats<kTaskCount>* task_stats_ = nullptr;  // the scheduler's, once it ran
   uint8_t stats_task_ = 0;  // whose figures the next telemetry_task carries
+
+  FlightLog log_;
+  bool log_status_owed_ = false;  // after a log request, its effect is reported at once
 
   // Parameter reports still owed after a param_get: table rows [report_next_, report_end_).
   uint8_t report_next_ = 0;

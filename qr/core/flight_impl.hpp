@@ -18,6 +18,7 @@ const Task<Flight<Chain>> Flight<Chain>::kTasks[kFlightTaskCount] = {
     {"manual", [](Flight& f) { f.run_manual_mixer(); }, 1},
     {"safety", [](Flight& f) { f.run_safety(); }, 1},
     {"telemetry", [](Flight& f) { f.run_telemetry(); }, 1},
+    {"logger", [](Flight& f) { f.run_logger(); }, 1},
 };
 
 namespace flight_text {
@@ -55,6 +56,15 @@ struct Flight<Chain>::RequestHandler {
     answer = NackReason::unknown_parameter;
   }
   void operator()(const wire::Exit&) { f.safety_.request_exit(f.situation()); }
+  void operator()(const wire::LogStart& l) { log(f.log_.start(l.logs)); }
+  void operator()(const wire::LogStop&) { log(f.log_.stop()); }
+  void operator()(const wire::LogDownload& d) { log(f.log_.download(d)); }
+
+ private:
+  void log(NackReason reason) {
+    answer = reason;
+    f.log_status_owed_ = true;
+  }
 };
 
 template <class Chain>
@@ -69,6 +79,11 @@ void Flight<Chain>::run_link() {
   if (parser_.buffered() != 0 && tick_us_ - last_byte_us_ > 50000u) parser_.line_idle();
 
   chain_.set_pilot(controls_);
+
+  if (log_status_owed_) {
+    log_status_owed_ = false;
+    send(wire::encode(log_.status()));
+  }
 
   // Parameter reports owed to a param_get: one per tick, so a full report never crowds out
   // telemetry or replies.
@@ -121,26 +136,33 @@ void Flight<Chain>::run_telemetry() {
   if (++telemetry_count_ < telemetry_divider_) return;
   telemetry_count_ = 0;
 
-  uint8_t flags = 0;
-  if (chain_.calibrated()) flags |= wire::kFlagCalibrated;
-  if (safety_.battery_warning()) flags |= wire::kFlagBatteryWarning;
-  send(wire::encode(wire::TelemetryAttitude{telemetry_seq_++, safety_.mode(), flags, chain_.roll_e4(),
+  send(wire::encode(wire::TelemetryAttitude{telemetry_seq_++, safety_.mode(), telemetry_flags(), chain_.roll_e4(),
                                             chain_.pitch_e4(), chain_.yaw_e4()}));
   send(wire::encode(wire::TelemetryRates{chain_.p_e3(), chain_.q_e3(), chain_.r_e3()}));
   send_slow_group();
   if (task_stats_ != nullptr) {
-    const auto sat = [](uint32_t v) { return v > 0xFFFFu ? uint16_t{0xFFFF} : static_cast<uint16_t>(v); };
     const CycleStats& c = task_stats_->task[stats_task_];
-    send(wire::encode(wire::TelemetryTask{stats_task_, sat(c.min), sat(c.mean()), sat(c.max)}));
+    send(wire::encode(wire::TelemetryTask{stats_task_, saturate_u16(c.min), saturate_u16(c.mean()), saturate_u16(c.max)}));
     stats_task_ = static_cast<uint8_t>((stats_task_ + 1) % kTaskCount);
   }
 }
 
-// Engines, set-points, system and link take turns, each at a quarter of the telemetry rate.
+template <class Chain>
+uint8_t Flight<Chain>::telemetry_flags() const {
+  uint8_t flags = 0;
+  if (chain_.calibrated()) flags |= wire::kFlagCalibrated;
+  if (log_.logging()) flags |= wire::kFlagLogging;
+  if (safety_.battery_warning()) flags |= wire::kFlagBatteryWarning;
+  if (log_.full()) flags |= wire::kFlagLogFull;
+  return flags;
+}
+
+// Engines, set-points, system, link and log status take turns, each at a fifth of the
+// telemetry rate.
 template <class Chain>
 void Flight<Chain>::send_slow_group() {
   const uint8_t group = slow_group_;
-  slow_group_ = static_cast<uint8_t>((slow_group_ + 1) & 3u);
+  slow_group_ = static_cast<uint8_t>(slow_group_ == 4 ? 0 : slow_group_ + 1);
   if (group == 0) {
     wire::TelemetryEngines m;
     for (int i = 0; i < 4; ++i) m.engine[i] = engines_.value[i];
@@ -149,10 +171,12 @@ void Flight<Chain>::send_slow_group() {
     send(wire::encode(wire::TelemetrySetpoints{controls_.lift, chain_.roll_setpoint_e4(),
                                                chain_.pitch_setpoint_e4(), chain_.yaw_rate_setpoint_e3()}));
   } else if (group == 2) {
-    const uint16_t loop = loop_time_us_ > 0xFFFFu ? uint16_t{0xFFFF} : static_cast<uint16_t>(loop_time_us_);
+    const uint16_t loop = saturate_u16(loop_time_us_);
     loop_time_us_ = 0;
     send(wire::encode(wire::TelemetrySystem{sample_.battery_mv, cpu_load_permille_, loop,
                                             static_cast<uint16_t>(deadline_misses_)}));
+  } else if (group == 4) {
+    send(wire::encode(log_.status()));
   } else {
     const wire::LinkCounters& c = parser_.counters();
     send(wire::encode(wire::TelemetryLink{static_cast<uint16_t>(c.frames_ok), static_cast<uint16_t>(c.check_failures),
@@ -175,7 +199,54 @@ void Flight<Chain>::apply_parameters() {
   l.panic_ramp_us = get(ParamId::panic_ramp_ms) * 1000u;
   l.idle = static_cast<uint16_t>(get(ParamId::idle_level));
   telemetry_divider_ = divider_for(get(ParamId::telemetry_rate_hz));
+  log_.set_divider(static_cast<uint16_t>(get(ParamId::log_divider)));
   chain_.set_parameters(params_);
+}
+
+// A line in each running log every log_divider ticks; otherwise, parts of a download while the
+// link has room for them next to a telemetry period's frames.
+template <class Chain>
+void Flight<Chain>::run_logger() {
+  if (log_.due()) {
+    wire::SensorLogRecord s;
+    s.time_us = tick_us_;
+    for (int axis = 0; axis < 3; ++axis) {
+      s.gyro[axis] = sample_.gyro[axis];
+      s.accel[axis] = sample_.accel[axis];
+      s.gyro_filtered[axis] = chain_.gyro_filtered(axis);
+      s.accel_filtered[axis] = chain_.accel_filtered(axis);
+    }
+    s.battery_mv = sample_.battery_mv;
+
+    wire::TelemetryLogRecord t;
+    t.time_us = tick_us_;
+    t.mode = safety_.mode();
+    t.flags = telemetry_flags();
+    t.lift = controls_.lift;
+    t.roll = chain_.roll_setpoint_e4();
+    t.pitch = chain_.pitch_setpoint_e4();
+    t.yaw_rate = chain_.yaw_rate_setpoint_e3();
+    t.phi = chain_.roll_e4();
+    t.theta = chain_.pitch_e4();
+    t.psi = chain_.yaw_e4();
+    t.p = chain_.p_e3();
+    t.q = chain_.q_e3();
+    t.r = chain_.r_e3();
+    for (int i = 0; i < 4; ++i) t.engine[i] = engines_.value[i];
+    t.loop_time_us = saturate_u16(last_busy_us_);
+    t.battery_mv = sample_.battery_mv;
+    t.cpu_load = cpu_load_permille_;
+    t.deadline_misses = static_cast<uint16_t>(deadline_misses_);
+    log_.write(s, t);
+    return;
+  }
+  // Room is kept for a telemetry period (attitude, rates, a slow group, a task figure) and a reply.
+  constexpr size_t kTxReserve = 64;
+  log_.send_parts(4, [this](const wire::FrameBytes& frame) {
+    if (tx_.space() < size_t{frame.size} + kTxReserve) return false;
+    send(frame);
+    return true;
+  });
 }
 
 template <class Chain>

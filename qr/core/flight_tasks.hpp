@@ -20,18 +20,20 @@ enum FlightTask : uint8_t {
   kManualMixerTask,
   kSafetyTask,
   kTelemetryTask,
+  kLoggerTask,
   kFlightTaskCount,
 };
 
 namespace task_sets {
 // The filter and estimator also run in safe and panic, so the pilot sees attitude on the bench
-// and the filters are settled when a flight mode starts.
-inline constexpr uint8_t kSafe[] = {kLinkTask, kFilterTask, kEstimatorTask, kSafetyTask, kTelemetryTask};
-inline constexpr uint8_t kPanic[] = {kLinkTask, kFilterTask, kEstimatorTask, kSafetyTask, kTelemetryTask};
-inline constexpr uint8_t kManual[] = {kLinkTask, kFilterTask, kEstimatorTask, kManualMixerTask, kSafetyTask, kTelemetryTask};
-inline constexpr uint8_t kCalibration[] = {kLinkTask, kFilterTask, kCalibrationTask, kSafetyTask, kTelemetryTask};
-inline constexpr uint8_t kYawControl[] = {kLinkTask, kFilterTask, kEstimatorTask, kYawControlTask, kMixerTask, kSafetyTask, kTelemetryTask};
-inline constexpr uint8_t kFullControl[] = {kLinkTask, kFilterTask, kEstimatorTask, kAttitudeControlTask, kYawControlTask, kMixerTask, kSafetyTask, kTelemetryTask};
+// and the filters are settled when a flight mode starts. The logger runs in every mode: a log
+// covers the whole flight, panic included.
+inline constexpr uint8_t kSafe[] = {kLinkTask, kFilterTask, kEstimatorTask, kSafetyTask, kTelemetryTask, kLoggerTask};
+inline constexpr uint8_t kPanic[] = {kLinkTask, kFilterTask, kEstimatorTask, kSafetyTask, kTelemetryTask, kLoggerTask};
+inline constexpr uint8_t kManual[] = {kLinkTask, kFilterTask, kEstimatorTask, kManualMixerTask, kSafetyTask, kTelemetryTask, kLoggerTask};
+inline constexpr uint8_t kCalibration[] = {kLinkTask, kFilterTask, kCalibrationTask, kSafetyTask, kTelemetryTask, kLoggerTask};
+inline constexpr uint8_t kYawControl[] = {kLinkTask, kFilterTask, kEstimatorTask, kYawControlTask, kMixerTask, kSafetyTask, kTelemetryTask, kLoggerTask};
+inline constexpr uint8_t kFullControl[] = {kLinkTask, kFilterTask, kEstimatorTask, kAttitudeControlTask, kYawControlTask, kMixerTask, kSafetyTask, kTelemetryTask, kLoggerTask};
 
 template <size_t N>
 constexpr TaskSet set(const uint8_t (&ids)[N]) {

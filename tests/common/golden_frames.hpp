@@ -84,6 +84,7 @@ inline std::vector<GoldenFrame> golden_frames() {
       golden("G21", make_log_part(golden_telemetry_record(), 0), "4D 96 11 00 00 40 4B 4C 00 05 03 AC"),
       golden("G22", make_log_part(golden_telemetry_record(), 6), "4D 96 11 00 06 4A 2E 6F 02 03 00 84"),
       golden("G23", TelemetryTask{6, 180, 212, 530}, "4D 99 06 B4 00 D4 00 12 02 32"),
+      golden("G24", LogStatus{0x03, 1200, 1190, 2340}, "4D 9C 03 B0 04 A6 04 24 09 0E"),
   };
 }
 

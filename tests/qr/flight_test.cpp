@@ -83,7 +83,8 @@ TEST_F(FlightTest, StartsInSafeAndStreamsTelemetryAtTheParameterRate) {
   EXPECT_EQ(attitude.back().mode, Mode::safe);
   // The rates frame follows the attitude frame; the last one may still be on its way.
   EXPECT_NEAR(static_cast<double>(got<wire::TelemetryRates>().size()), static_cast<double>(attitude.size()), 1.0);
-  EXPECT_NEAR(static_cast<double>(got<wire::TelemetrySystem>().size()), rate / 4.0, 1.0);
+  EXPECT_NEAR(static_cast<double>(got<wire::TelemetrySystem>().size()), rate / 5.0, 1.0);  // a fifth: 5 slow groups
+  EXPECT_NEAR(static_cast<double>(got<wire::LogStatus>().size()), rate / 5.0, 1.0);
   EXPECT_EQ(got<wire::TelemetrySystem>().back().battery_mv, 12000);
   EXPECT_EQ(flight.tx_dropped_frames(), 0u);
 
@@ -228,15 +229,6 @@ TEST_F(FlightTest, ParameterSetIsRangeCheckedAppliedAndReported) {
   }
 }
 
-TEST_F(FlightTest, RequestsThisFirmwareDoesNotCarryOutAreNackedNotIgnored) {
-  send(wire::LogStart{++seq, wire::kLogSensor});
-  run_ms(5);
-  const auto nacks = got<wire::Nack>();
-  ASSERT_EQ(nacks.size(), 1u);
-  EXPECT_EQ(nacks[0].type, wire::MessageType::log_start);
-  EXPECT_EQ(nacks[0].reason, wire::NackReason::not_supported);
-}
-
 TEST_F(FlightTest, ExitIsConfirmedThenTheFirmwareStops) {
   send(wire::Exit{++seq});
   for (int i = 0; i < 100 && flight.running(); ++i) run_ms(1);
@@ -253,6 +245,107 @@ TEST_F(FlightTest, GarbageOnTheLineIsCountedAndTheNextFrameStillWorks) {
   run_ms(30);
   EXPECT_EQ(flight.mode(), Mode::manual);
   EXPECT_GT(flight.link_counters().bytes_skipped, 0u);
+}
+
+}  // namespace
+}  // namespace qr
+
+namespace qr {
+namespace {
+
+// The loggers through the link, on the fake board's log memory.
+struct FlightLogTest : FlightTest {
+  FlightLogTest() { flight = Firmware(board.log_area()); }
+
+  wire::LogStatus status() const { return got<wire::LogStatus>().back(); }
+  template <class Record>
+  std::vector<Record> lines() const {
+    wire::LogLineAssembler<Record> assembler;
+    std::vector<Record> out;
+    for (const auto& part : got<wire::LogPart<Record>>()) {
+      Record r;
+      if (assembler.add(part, r) == wire::LogLineAssembler<Record>::Result::complete) out.push_back(r);
+    }
+    return out;
+  }
+};
+
+TEST_F(FlightLogTest, StartWritesALineEveryDividerTicksStopEndsIt) {
+  send(wire::LogStart{++seq, wire::kLogSensor | wire::kLogTelemetry});
+  run_ms(1000);
+  send(wire::LogStop{++seq});
+  run_ms(20);
+  ASSERT_EQ(got<wire::Ack>().size(), 2u);
+  const auto divider = wire::kParameterTable[static_cast<int>(wire::ParamId::log_divider) - 1].default_value;
+  const double expected = 1000.0 * 1000 / kPeriodUs / divider;
+  EXPECT_NEAR(status().sensor_lines, expected, 2.0);
+  EXPECT_EQ(status().sensor_lines, status().telemetry_lines);
+  EXPECT_EQ(status().flags, 0) << "stopped";
+  const uint16_t lines = status().sensor_lines;
+  run_ms(200);
+  EXPECT_EQ(status().sensor_lines, lines);
+}
+
+TEST_F(FlightLogTest, DownloadWhileLoggingIsRefusedAsBusy) {
+  send(wire::LogStart{++seq, wire::kLogSensor});
+  run_ms(50);
+  send(wire::LogDownload{++seq, wire::LogKind::sensor, 0, 0});
+  run_ms(5);
+  ASSERT_EQ(got<wire::Nack>().size(), 1u);
+  EXPECT_EQ(got<wire::Nack>()[0].reason, wire::NackReason::busy);
+}
+
+TEST_F(FlightLogTest, DownloadSendsEveryLineOfTheRangeWithItsRecord) {
+  send(wire::LogStart{++seq, wire::kLogSensor | wire::kLogTelemetry});
+  run_ms(600);  // 30 lines at 500 Hz, 60 at 1 kHz
+  send(wire::LogStop{++seq});
+  run_ms(20);
+  const uint16_t total = status().telemetry_lines;
+  ASSERT_GT(total, 20);
+  send(wire::LogDownload{++seq, wire::LogKind::telemetry, 5, 10});
+  run_ms(300);
+  const auto telemetry = lines<wire::TelemetryLogRecord>();
+  ASSERT_EQ(telemetry.size(), 10u);
+  for (size_t i = 0; i < telemetry.size(); ++i) {
+    EXPECT_EQ(telemetry[i].line, 5 + i);
+    EXPECT_EQ(telemetry[i].phi, 123) << "the estimate at the time";
+    EXPECT_EQ(telemetry[i].battery_mv, 12000);
+  }
+  EXPECT_LT(telemetry[0].time_us, telemetry[9].time_us);
+
+  send(wire::LogDownload{++seq, wire::LogKind::sensor, 0, 0});  // to the end
+  run_ms(1000);
+  const auto sensor = lines<wire::SensorLogRecord>();
+  ASSERT_EQ(sensor.size(), status().sensor_lines);
+  EXPECT_EQ(sensor.back().gyro_filtered[2], 12);
+  EXPECT_EQ(sensor.back().accel_filtered[0], -20);
+  EXPECT_EQ(sensor.back().accel[2], 0);
+}
+
+TEST_F(FlightLogTest, DownloadOfLinesThatDoNotExistIsRefused) {
+  send(wire::LogDownload{++seq, wire::LogKind::sensor, 0, 0});
+  run_ms(5);
+  ASSERT_EQ(got<wire::Nack>().size(), 1u);
+  EXPECT_EQ(got<wire::Nack>()[0].reason, wire::NackReason::bad_value);
+}
+
+TEST_F(FlightLogTest, AFullLogStopsKeepingLinesAndSaysSo) {
+  send(wire::ParamSet{++seq, static_cast<uint8_t>(wire::ParamId::log_divider), 1});
+  send(wire::LogStart{++seq, wire::kLogSensor | wire::kLogTelemetry});
+  run_ms(2000);  // more lines than the fake board's memory holds
+  const wire::LogStatus s = status();
+  EXPECT_EQ(s.sensor_lines, s.capacity_lines);
+  EXPECT_NE(s.flags & wire::kLogStatusFull, 0);
+  EXPECT_NE(got<wire::TelemetryAttitude>().back().flags & wire::kFlagLogFull, 0) << "the pilot sees it";
+}
+
+TEST_F(FlightLogTest, WithoutLogMemoryLoggingIsRefused) {
+  Firmware without;
+  flight = without;
+  send(wire::LogStart{++seq, wire::kLogSensor});
+  run_ms(5);
+  ASSERT_EQ(got<wire::Nack>().size(), 1u);
+  EXPECT_EQ(got<wire::Nack>()[0].reason, wire::NackReason::not_supported);
 }
 
 }  // namespace

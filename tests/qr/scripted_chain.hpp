@@ -53,6 +53,8 @@ struct ScriptedChain {
   int16_t pitch_setpoint_e4() const { return 0; }
   int16_t yaw_rate_setpoint_e3() const { return 0; }
   int32_t tilt_mrad() const { return tilt; }
+  int16_t gyro_filtered(int axis) const { return static_cast<int16_t>(10 + axis); }
+  int16_t accel_filtered(int axis) const { return static_cast<int16_t>(-20 - axis); }
 
  private:
   static EngineCommand all(uint16_t v) { return EngineCommand{{v, v, v, v}}; }

@@ -52,7 +52,7 @@ class FakeBoard {
   std::vector<uint8_t> tx;
   size_t tx_capacity = 1u << 20;
   std::vector<uint32_t> kick_times_us;  // when each tick's kick was taken
-  uint8_t log_memory[4096] = {};
+  uint8_t log_memory[16 * 1024] = {};
 
  private:
   uint32_t now_us_ = 0;

@@ -12,8 +12,8 @@ namespace rv32virt {
 template <class Chain>
 int run_firmware() {
   // Static: the flight context is large and must not live on the 8 KiB stack.
-  static qr::Flight<Chain> flight;
   static VirtBoard board(qr::kControlHz);
+  static qr::Flight<Chain> flight(board.log_area());
   static qr::Scheduler<VirtBoard, qr::Flight<Chain>> scheduler(board, flight);
   scheduler.run_until_stopped();
   return 0;
