@@ -134,7 +134,7 @@ void check_table(const ResponseLimits& limits) {
   std::printf("  order %d at %u Hz, %zu cut-offs: design vs analytic %.2e dB; Q<30>: DC %.1e dB, "
               "fc/10..2fc within %.2e dB of analytic (worst at fc = %g Hz), at fc -3.0103 dB within %.2e dB, "
               "|H| at 0.45 fs within %.2e\n",
-              Order, Fs, Range::kSize, worst_design_db, worst_dc, worst_pass, worst_pass_fc, worst_at_fc, worst_stop);
+              Order, static_cast<unsigned>(Fs), Range::kSize, worst_design_db, worst_dc, worst_pass, worst_pass_fc, worst_at_fc, worst_stop);
   EXPECT_LE(worst_design_db, 1e-9);
   EXPECT_LE(worst_dc, 1e-12);
   EXPECT_LE(worst_pass, limits.pass_db);

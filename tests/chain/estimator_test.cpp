@@ -47,13 +47,11 @@ struct Rig {
   double p() const { return test::as_double(e.p()); }
 };
 
-template <class N>
-class Estimator : public ::testing::Test {};
-using NumberTypes = ::testing::Types<FixedNumbers, DoubleNumbers>;
-TYPED_TEST_SUITE(Estimator, NumberTypes);
+// Each check below runs in the flight's Q formats and in double.
 
 // docs/conventions.md: roll positive = right side down, pitch positive = nose up.
-TYPED_TEST(Estimator, TiltingRightGivesPositiveRollAndNoseUpPositivePitch) {
+template <class TypeParam>
+void TiltingRightGivesPositiveRollAndNoseUpPositivePitch() {
   Rig<TypeParam> right;
   right.step(0.2, 0, 0, 0, 0);
   EXPECT_NEAR(test::as_double(right.e.roll_from_accel()), 0.2, 1e-6);
@@ -73,10 +71,13 @@ TYPED_TEST(Estimator, TiltingRightGivesPositiveRollAndNoseUpPositivePitch) {
   for (int n = 0; n < 100; ++n) rolling.step(0, 0, 0, 0, 0.5);
   EXPECT_NEAR(rolling.yaw(), 0.05, 1e-6);
 }
+TEST(Estimator, TiltingRightGivesPositiveRollAndNoseUpPositivePitchInFixedPoint) { TiltingRightGivesPositiveRollAndNoseUpPositivePitch<FixedNumbers>(); }
+TEST(Estimator, TiltingRightGivesPositiveRollAndNoseUpPositivePitchInDouble) { TiltingRightGivesPositiveRollAndNoseUpPositivePitch<DoubleNumbers>(); }
 
 // With the gyro still, the angle follows a new accelerometer angle (the bias loop takes part:
 // it reads the disagreement as drift for a while, then gives it back).
-TYPED_TEST(Estimator, ConvergesToTheAccelerometerAngle) {
+template <class TypeParam>
+void ConvergesToTheAccelerometerAngle() {
   Rig<TypeParam> rig;
   rig.step(0, 0, 0, 0, 0);
   for (int n = 0; n < 30000; ++n) rig.step(0.3, -0.2, 0, 0, 0);
@@ -86,10 +87,13 @@ TYPED_TEST(Estimator, ConvergesToTheAccelerometerAngle) {
   EXPECT_NEAR(rig.pitch(), -0.2, 1e-4);
   EXPECT_NEAR(rig.p_bias(), 0.0, 1e-4);
 }
+TEST(Estimator, ConvergesToTheAccelerometerAngleInFixedPoint) { ConvergesToTheAccelerometerAngle<FixedNumbers>(); }
+TEST(Estimator, ConvergesToTheAccelerometerAngleInDouble) { ConvergesToTheAccelerometerAngle<DoubleNumbers>(); }
 
 // The angle follows the gyro through a fast manoeuvre while the accelerometer is noisy
 // (vibration of +-0.1 g), better than the accelerometer alone.
-TYPED_TEST(Estimator, TracksAGyroRateThroughAccelerometerNoise) {
+template <class TypeParam>
+void TracksAGyroRateThroughAccelerometerNoise() {
   Rig<TypeParam> rig;
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> vibration(-0.1, 0.1);
@@ -107,10 +111,13 @@ TYPED_TEST(Estimator, TracksAGyroRateThroughAccelerometerNoise) {
               worst_accel);
   EXPECT_LT(worst, 0.02);
 }
+TEST(Estimator, TracksAGyroRateThroughAccelerometerNoiseInFixedPoint) { TracksAGyroRateThroughAccelerometerNoise<FixedNumbers>(); }
+TEST(Estimator, TracksAGyroRateThroughAccelerometerNoiseInDouble) { TracksAGyroRateThroughAccelerometerNoise<DoubleNumbers>(); }
 
 // An injected gyro bias is found: rate = gyro - bias goes to zero at rest, and the angle stays
 // level. Time constant about C2 / C1 = 3.9 s; after 40 s it is gone to 1e-4 of itself.
-TYPED_TEST(Estimator, BiasConvergesToAnInjectedGyroBias) {
+template <class TypeParam>
+void BiasConvergesToAnInjectedGyroBias() {
   for (const double bias : {0.02, -0.05, 2e-6}) {
     Rig<TypeParam> rig;
     rig.step(0, 0, 0, 0, 0);
@@ -123,6 +130,8 @@ TYPED_TEST(Estimator, BiasConvergesToAnInjectedGyroBias) {
     EXPECT_NEAR(rig.roll(), 0.0, 1e-5);
   }
 }
+TEST(Estimator, BiasConvergesToAnInjectedGyroBiasInFixedPoint) { BiasConvergesToAnInjectedGyroBias<FixedNumbers>(); }
+TEST(Estimator, BiasConvergesToAnInjectedGyroBiasInDouble) { BiasConvergesToAnInjectedGyroBias<DoubleNumbers>(); }
 
 // Where rounding to zero would show (the 2e-6 rad/s case above): a bias error of 1e-6 rad/s
 // (0.004 gyro counts) integrates to 1e-9 rad per step, and leaves a steady angle error
@@ -141,25 +150,32 @@ TEST(Estimator, SmallIncrementsWouldRoundToZeroInTheSignalFormats) {
   EXPECT_NE(fx::mul_wide(e, k2).raw(), 0);
 }
 
-TYPED_TEST(Estimator, BiasConvergesAt500Hz) {
+template <class TypeParam>
+void BiasConvergesAt500Hz() {
   Rig<TypeParam, 500> rig;
   rig.step(0, 0, 0, 0, 0);
   for (int n = 0; n < 30000; ++n) rig.step(0, 0, 0, 0, 0, 0.03, 0);  // 60 s: C2/C1 samples is 7.8 s
   std::printf("  500 Hz: injected 0.03 rad/s, estimated %.6e\n", rig.p_bias());
   EXPECT_NEAR(rig.p_bias(), 0.03, 3e-5);
 }
+TEST(Estimator, BiasConvergesAt500HzInFixedPoint) { BiasConvergesAt500Hz<FixedNumbers>(); }
+TEST(Estimator, BiasConvergesAt500HzInDouble) { BiasConvergesAt500Hz<DoubleNumbers>(); }
 
-TYPED_TEST(Estimator, CorrectsInOneStepWithC1OfOne) {
+template <class TypeParam>
+void CorrectsInOneStepWithC1OfOne() {
   Rig<TypeParam> rig(1, 1000000);
   rig.step(0, 0, 0, 0, 0);
   rig.step(0.25, 0.1, 3.0, 0, 0);  // the gyro says otherwise; C1 = 1 believes the accelerometer
   EXPECT_NEAR(rig.roll(), 0.25, 1e-6);
   EXPECT_NEAR(rig.pitch(), 0.1, 1e-6);
 }
+TEST(Estimator, CorrectsInOneStepWithC1OfOneInFixedPoint) { CorrectsInOneStepWithC1OfOne<FixedNumbers>(); }
+TEST(Estimator, CorrectsInOneStepWithC1OfOneInDouble) { CorrectsInOneStepWithC1OfOne<DoubleNumbers>(); }
 
 // Rolling through 180 degrees wraps to -180, and the accelerometer correction takes the short
 // way round instead of pulling the estimate back through zero.
-TYPED_TEST(Estimator, AnglesWrapThroughPi) {
+template <class TypeParam>
+void AnglesWrapThroughPi() {
   Rig<TypeParam> rig;
   const double rate = 2.0;
   double roll = 2.9;
@@ -177,9 +193,12 @@ TYPED_TEST(Estimator, AnglesWrapThroughPi) {
   }
   EXPECT_LT(roll, 0);  // went through pi
 }
+TEST(Estimator, AnglesWrapThroughPiInFixedPoint) { AnglesWrapThroughPi<FixedNumbers>(); }
+TEST(Estimator, AnglesWrapThroughPiInDouble) { AnglesWrapThroughPi<DoubleNumbers>(); }
 
 // A broken gyro (stuck at full scale) cannot run the bias or its accumulator away.
-TYPED_TEST(Estimator, BiasIsClampedForABrokenGyro) {
+template <class TypeParam>
+void BiasIsClampedForABrokenGyro() {
   Rig<TypeParam> rig(256, 1000);
   rig.step(0, 0, 0, 0, 0);
   for (int n = 0; n < 200000; ++n) rig.step(0, 0, 8.7, 0, 0);
@@ -187,6 +206,8 @@ TYPED_TEST(Estimator, BiasIsClampedForABrokenGyro) {
   for (int n = 0; n < 200000; ++n) rig.step(0, 0, -8.7, 0, 0);
   EXPECT_NEAR(rig.p_bias(), -0.5, 1e-9);
 }
+TEST(Estimator, BiasIsClampedForABrokenGyroInFixedPoint) { BiasIsClampedForABrokenGyro<FixedNumbers>(); }
+TEST(Estimator, BiasIsClampedForABrokenGyroInDouble) { BiasIsClampedForABrokenGyro<DoubleNumbers>(); }
 
 }  // namespace
 }  // namespace qr::chain

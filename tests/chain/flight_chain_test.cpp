@@ -233,6 +233,42 @@ TEST(FlightChain, FixedFollowsDoubleOverTheSyntheticFlight) {
   EXPECT_LE(readout, 1);
 }
 
+// The float instantiation (the RV32 speed comparison's number type) is the same code: it runs,
+// and lands near the double reference (float's 24-bit mantissa, not the algorithm, sets the gap).
+TEST(FlightChain, FloatInstantiationFollowsDouble) {
+  FlightChain<chain::FloatNumbers> f;
+  DoubleChain d;
+  chain::synthetic::Flight<1000> flight;
+  bool calibrated = false;
+  double angle = 0;
+  int engine = 0;
+  for (uint32_t n = 0; n < chain::synthetic::Flight<1000>::kTicks; ++n) {
+    const auto t = flight.next();
+    f.set_pilot(t.sticks);
+    d.set_pilot(t.sticks);
+    f.filter(t.sample);
+    d.filter(t.sample);
+    if (!calibrated) {
+      calibrated = f.calibrate();
+      ASSERT_EQ(calibrated, d.calibrate());
+      continue;
+    }
+    f.estimate();
+    d.estimate();
+    f.control_attitude();
+    d.control_attitude();
+    f.control_yaw();
+    d.control_yaw();
+    const EngineCommand ef = f.mix(), ed = d.mix();
+    angle = std::max({angle, std::fabs(double(f.estimator().roll()) - d.estimator().roll()),
+                      std::fabs(double(f.estimator().pitch()) - d.estimator().pitch())});
+    for (int k = 0; k < 4; ++k) engine = std::max(engine, std::abs(ef.value[k] - ed.value[k]));
+  }
+  std::printf("  float vs double over the synthetic flight: angles %.2e rad, engines %d unit\n", angle, engine);
+  EXPECT_LE(angle, 1e-6);
+  EXPECT_LE(engine, 1);
+}
+
 // The estimate against the script's truth: filter lag, accelerometer noise, and the estimator's
 // small-angle kinematics (it integrates body rates as Euler rates), not arithmetic. The worst
 // error is in pitch during the yaw turn with the roll swinging: q then holds psi' sin(phi) of up to
@@ -256,7 +292,7 @@ void check_truth(double bound) {
     worst = std::max({worst, std::fabs(c.estimator().roll().to_double() - t.truth.roll.to_double()),
                       std::fabs(c.estimator().pitch().to_double() - t.truth.pitch.to_double())});
   }
-  std::printf("  %u Hz: roll/pitch estimate within %.4f rad of the truth over the synthetic flight\n", Hz, worst);
+  std::printf("  %u Hz: roll/pitch estimate within %.4f rad of the truth over the synthetic flight\n", static_cast<unsigned>(Hz), worst);
   EXPECT_LE(worst, bound);
 }
 

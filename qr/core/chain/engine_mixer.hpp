@@ -46,7 +46,9 @@ class EngineMixer {
 
   // idle_level parameter (engine units): one division, at parameter changes only.
   void set_idle(int32_t idle) {
-    idle_ = static_cast<uint16_t>(idle < 0 ? 0 : idle > wire::kEngineMax ? wire::kEngineMax : idle);
+    if (idle < 0) idle = 0;
+    if (idle > int32_t{wire::kEngineMax}) idle = wire::kEngineMax;
+    idle_ = static_cast<uint16_t>(idle);
     idle_thrust_ = N::template ratio<Thrust>(int32_t{idle_} * idle_, wire::kEngineMax);
   }
   uint16_t idle() const { return idle_; }

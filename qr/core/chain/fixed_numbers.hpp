@@ -43,10 +43,10 @@ struct FixedNumbers {
   template <class T>
   static constexpr T ratio(int32_t num, int32_t den) {
     constexpr int F = T::frac_bits;
-    if (den == 0) return num > 0 ? T::max() : num < 0 ? T::min() : T{};
     const bool negative = (num < 0) != (den < 0);
     const uint64_t n = static_cast<uint64_t>(num < 0 ? -static_cast<int64_t>(num) : num) << F;
     const uint64_t d = static_cast<uint64_t>(den < 0 ? -static_cast<int64_t>(den) : den);
+    if (d == 0) return num > 0 ? T::max() : num < 0 ? T::min() : T{};
     const uint64_t q = (2 * n + d) / (2 * d);  // |num| < 2^31 and F < 32: 2n < 2^64
     const uint64_t limit = static_cast<uint64_t>(INT32_MAX);
     if (negative) return q > limit + 1 ? T::min() : T::from_raw(static_cast<int32_t>(-static_cast<int64_t>(q)));
