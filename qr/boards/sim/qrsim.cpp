@@ -18,7 +18,7 @@ namespace {
 constexpr const char* kUsage = R"(usage:
   qrsim --serve [--stdio] [--seed N] [--vehicle FILE] [--seconds S] [--status]
   qrsim --scenario NAME [--seconds S] [--seed N] [--vehicle FILE] [--param NAME=VALUE]...
-        [--no-noise] [--json]
+        [--no-noise] [--trace FILE.csv] [--json]
   qrsim --list
   qrsim --help
 
@@ -40,6 +40,8 @@ rate) flying in a simulated IN4073-class quadrotor.
   --param N=V      scenario: the pilot uploads parameter N (a name from docs/protocol.md,
                    section 9) with value V in the parameter's unit before flying
   --no-noise       scenario: perfect sensors (no noise, bias, scale error or vibration)
+  --trace FILE     scenario: write every control period to FILE as CSV (truth and estimated
+                   attitude and rates, set-points, engines, position, battery)
   --json           scenario: print the figures as one JSON object on one line
   --list           the scenarios and what they do
 
@@ -112,6 +114,10 @@ int main(int argc, char** argv) {
       std::string error;
       if (!sim::load_vehicle_file(v, vehicle, error)) return usage_error(error);
       vehicle_name = v;
+    } else if (arg == "--trace") {
+      const char* v = value("FILE");
+      if (v == nullptr) return usage_error("--trace needs a file");
+      scenario.trace_path = v;
     } else if (arg == "--param") {
       const char* v = value("NAME=VALUE");
       const char* eq = v == nullptr ? nullptr : std::strchr(v, '=');

@@ -6,58 +6,15 @@
 #include <cstdio>
 #include <numbers>
 
+#include <qr/boards/sim/manoeuvres.hpp>
 #include <qr/boards/sim/pilot.hpp>
 #include <qr/boards/sim/scoring.hpp>
 #include <qr/boards/sim/sim_qr.hpp>
-#include <qr/core/chain/pilot_setpoints.hpp>
 
 namespace qrsim {
 namespace {
 
 constexpr double kDeg = 180 / std::numbers::pi;
-constexpr double kRad = std::numbers::pi / 180;
-
-// ---- the table ------------------------------------------------------------------------------
-// Bands from the brief of issue 6. Every flying scenario must also end where it flew: in full
-// control (a tilt panic or a refused mode fails it); the stops must end in safe, engines still.
-constexpr double kFull = 5, kSafe = 0;
-
-const std::vector<ScenarioSpec> kScenarios = {
-    {"hover", "hover with sensor noise and vibration", Manoeuvre::none, 0, 0, 30,
-     {{"att_rms_deg_truth", Compare::below, 1.0},
-      {"engine_saturation_pct", Compare::at_most, 0},
-      {"final_mode", Compare::equal, kFull}}},
-    {"step-roll", "10 deg roll step from hover, held 2 s", Manoeuvre::roll_step, 10, 2, 3,
-     {{"rise_s", Compare::below, 0.35},
-      {"overshoot_pct", Compare::below, 10},
-      {"settle_s", Compare::below, 1.0},
-      {"final_mode", Compare::equal, kFull}}},
-    {"step-pitch", "10 deg pitch step from hover, held 2 s", Manoeuvre::pitch_step, 10, 2, 3,
-     {{"rise_s", Compare::below, 0.35},
-      {"overshoot_pct", Compare::below, 10},
-      {"settle_s", Compare::below, 1.0},
-      {"final_mode", Compare::equal, kFull}}},
-    {"yaw-rate", "1 rad/s yaw-rate step from hover", Manoeuvre::yaw_rate_step, 1.0, 0, 5,
-     {{"yaw_rate_error_pct", Compare::below, 10},
-      {"max_tilt_deg", Compare::below, 2},
-      {"final_mode", Compare::equal, kFull}}},
-    {"disturbance", "0.15 N m roll and pitch torque for 50 ms in hover", Manoeuvre::torque_impulse, 0.15, 0.05, 3,
-     {{"recovery_s", Compare::below, 1.0},
-      {"final_mode", Compare::equal, kFull}}},
-    {"link-loss", "the pilot's link goes silent in hover", Manoeuvre::link_loss, 0, 0, 5,
-     {{"entered_panic", Compare::equal, 1},
-      {"final_mode", Compare::equal, kSafe},
-      {"engines_at_end_max", Compare::equal, 0}}},
-    {"panic", "the pilot hits the emergency stop in hover", Manoeuvre::panic_request, 0, 0, 4,
-     {{"entered_panic", Compare::equal, 1},
-      {"final_mode", Compare::equal, kSafe},
-      {"engines_at_end_max", Compare::equal, 0}}},
-};
-
-const char* mode_name(uint8_t mode) {
-  static const char* const kNames[] = {"safe", "panic", "manual", "calibration", "yaw", "full"};
-  return mode < 6 ? kNames[mode] : "unknown";
-}
 
 // ---- the flight plan ------------------------------------------------------------------------
 // What the pilot does before the manoeuvre, one phase after the other. Each phase has a time
@@ -82,8 +39,6 @@ uint16_t lift_for_height(const sim::Quadrotor& plant, double target, double ramp
   return static_cast<uint16_t>(std::clamp(std::lround(lift), 0L, 1000L));
 }
 
-int16_t stick(double value) { return static_cast<int16_t>(std::clamp(std::lround(value), -1000L, 1000L)); }
-
 // What is recorded every control period.
 struct Record {
   Trace roll_est, pitch_est, roll_true, pitch_true, roll_sp, pitch_sp;  // degrees
@@ -94,15 +49,6 @@ struct Record {
 };
 
 }  // namespace
-
-const std::vector<ScenarioSpec>& scenarios() { return kScenarios; }
-
-const ScenarioSpec* find_scenario(const std::string& name) {
-  for (const ScenarioSpec& s : kScenarios) {
-    if (name == s.name) return &s;
-  }
-  return nullptr;
-}
 
 double ScenarioResult::figure(const std::string& name) const {
   for (const Figure& f : figures) {
@@ -138,10 +84,17 @@ ScenarioResult run_scenario(const ScenarioOptions& options) {
   double phase_start = 0, t0 = -1, t_end = 1e9;
   double yaw_p = 0, yaw_steady_from = 0;
   bool entered_panic = false;
-  bool stopped = false;  // the emergency stop has been pressed
+  bool manoeuvre_started = false;
   double panic_at = kNotMeasured, safe_at = kNotMeasured;
   int calibration_requests = 0;
   Record rec;
+  FILE* trace = options.trace_path.empty() ? nullptr : std::fopen(options.trace_path.c_str(), "w");
+  if (trace != nullptr) {
+    std::fprintf(trace,
+                 "t_s,mode,roll_deg,pitch_deg,yaw_deg,roll_est_deg,pitch_est_deg,yaw_est_deg,roll_sp_deg,pitch_sp_deg,"
+                 "p_rad_s,q_rad_s,r_rad_s,p_est_rad_s,q_est_rad_s,r_est_rad_s,engine0,engine1,engine2,engine3,"
+                 "height_m,north_m,east_m,battery_v\n");
+  }
   const auto idle = static_cast<uint16_t>(qr->firmware.parameters().get(wire::ParamId::idle_level));
 
   for (;;) {
@@ -193,36 +146,9 @@ ScenarioResult run_scenario(const ScenarioOptions& options) {
       case Phase::manoeuvre: {
         const double since = t - t0;
         Sticks s{lift_for_height(plant, kHoverHeight, 1), 0, 0, 0};
-        const double per_rad = 1000 / qr::chain::kMaxTiltSetpointRad;
-        const bool holding = since < spec->hold_s;
-        switch (spec->manoeuvre) {
-          case Manoeuvre::roll_step:
-            if (holding) s.roll = stick(spec->amount * kRad * per_rad);
-            break;
-          case Manoeuvre::pitch_step:
-            if (holding) s.pitch = stick(spec->amount * kRad * per_rad);
-            break;
-          case Manoeuvre::yaw_rate_step: {
-            const double max_rate = qr->firmware.parameters().get(wire::ParamId::max_yaw_rate) / 1024.0;
-            s.yaw = stick(spec->amount / max_rate * 1000);
-            break;
-          }
-          case Manoeuvre::torque_impulse: {
-            const double m = holding ? spec->amount : 0;
-            plant.set_disturbance({m, m, 0}, {});
-            break;
-          }
-          case Manoeuvre::link_loss:
-            pilot.go_silent(true);
-            break;
-          case Manoeuvre::panic_request:
-            if (!stopped) pilot.request_mode(wire::Mode::panic);
-            stopped = true;
-            s.lift = 0;  // the pilot lets go of the lift after the emergency stop
-            break;
-          case Manoeuvre::none:
-            break;
-        }
+        ManoeuvreStep step{*spec, since, !manoeuvre_started, s, pilot, plant, qr->firmware.parameters()};
+        fly_manoeuvre(step);
+        manoeuvre_started = true;
         pilot.set_sticks(s);
         break;
       }
@@ -270,9 +196,23 @@ ScenarioResult run_scenario(const ScenarioOptions& options) {
       if (entered_panic && mode == static_cast<uint8_t>(wire::Mode::safe) && std::isnan(safe_at)) safe_at = t;
     }
 
+    if (trace != nullptr) {
+      const sim::PlantState& ps = plant.state();
+      const sim::Euler e = sim::to_euler(ps.attitude);
+      const auto& ch = qr->firmware.chain();
+      const qr::EngineCommand& eng = qr->board.engines();
+      std::fprintf(trace, "%.3f,%u,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%u,%u,%u,%u,%.3f,%.3f,%.3f,%.3f\n",
+                   t, mode, e.roll * kDeg, e.pitch * kDeg, e.yaw * kDeg, ch.roll_e4() * 1e-4 * kDeg,
+                   ch.pitch_e4() * 1e-4 * kDeg, ch.yaw_e4() * 1e-4 * kDeg, ch.roll_setpoint_e4() * 1e-4 * kDeg,
+                   ch.pitch_setpoint_e4() * 1e-4 * kDeg, ps.rate.x, ps.rate.y, ps.rate.z, ch.p_e3() * 1e-3,
+                   ch.q_e3() * 1e-3, ch.r_e3() * 1e-3, eng.value[0], eng.value[1], eng.value[2], eng.value[3],
+                   -ps.position.z, ps.position.x, ps.position.y, plant.battery_volts());
+    }
     if (t >= t_end) break;
     if (!qr->tick()) break;  // the firmware stopped
   }
+
+  if (trace != nullptr) std::fclose(trace);
 
   // ---- figures ----
   const double sim_seconds = static_cast<double>(qr->world.now_us()) * 1e-6;
@@ -366,6 +306,8 @@ ScenarioResult run_scenario(const ScenarioOptions& options) {
   f.push_back({"final_mode", static_cast<double>(final_mode)});
   f.push_back({"battery_v_end", plant.battery_volts()});
   f.push_back({"height_m_end", -plant.state().position.z});
+  f.push_back({"drift_m_end", std::hypot(plant.state().position.x, plant.state().position.y)});
+  f.push_back({"speed_m_s_end", sim::norm(plant.state().velocity)});
   f.push_back({"requests_given_up", static_cast<double>(pilot.view().requests_given_up)});
   f.push_back({"nacks", static_cast<double>(pilot.view().nacks)});
 
@@ -400,32 +342,6 @@ ScenarioResult run_scenario(const ScenarioOptions& options) {
     result.pass = result.pass && ok;
   }
   return result;
-}
-
-std::string to_json(const ScenarioResult& r) {
-  std::string out = "{\"scenario\": \"" + r.scenario + "\", \"vehicle\": \"" + r.vehicle + "\"";
-  char buffer[64];
-  for (const Figure& f : r.figures) {
-    if (f.name == "final_mode") {
-      out += ", \"final_mode\": \"" + r.final_mode + "\"";
-      continue;
-    }
-    if (std::isnan(f.value) || std::isinf(f.value)) {
-      std::snprintf(buffer, sizeof buffer, "null");
-    } else if (f.value == std::floor(f.value) && std::abs(f.value) < 1e15) {
-      std::snprintf(buffer, sizeof buffer, "%.0f", f.value);
-    } else {
-      std::snprintf(buffer, sizeof buffer, "%.4g", f.value);
-    }
-    out += ", \"" + f.name + "\": " + buffer;
-  }
-  if (!r.error.empty()) out += ", \"error\": \"" + r.error + "\"";
-  out += ", \"bands\": {";
-  for (size_t i = 0; i < r.checks.size(); ++i) {
-    out += (i == 0 ? "\"" : ", \"") + r.checks[i].band + "\": " + (r.checks[i].pass ? "true" : "false");
-  }
-  out += std::string("}, \"pass\": ") + (r.pass ? "true" : "false") + "}";
-  return out;
 }
 
 }  // namespace qrsim

@@ -48,6 +48,7 @@ struct ScenarioSpec {
 
 const std::vector<ScenarioSpec>& scenarios();
 const ScenarioSpec* find_scenario(const std::string& name);
+const char* mode_name(uint8_t mode);  // "safe", "panic", ... as the figures name them
 
 struct ScenarioOptions {
   std::string name = "hover";
@@ -57,6 +58,7 @@ struct ScenarioOptions {
   std::string vehicle_name = sim::default_vehicle_name();
   bool sensor_noise = true;  // false: perfect IMU (no noise, bias, scale error or vibration)
   std::vector<std::pair<wire::ParamId, int32_t>> parameters;  // uploaded by the pilot before flight
+  std::string trace_path;  // non-empty: every control period as a CSV line (truth, estimate, engines)
 };
 
 struct Figure {
