@@ -24,11 +24,16 @@
 
 namespace qr {
 
+// What the serial line carries in one control period: 115200 baud, 10 bits a byte (8N1).
+inline constexpr uint32_t kLineBytesPerSecond = 115200 / 10;
+inline constexpr uint16_t kLineBytesPerTick = static_cast<uint16_t>((kLineBytesPerSecond + kControlHz - 1) / kControlHz);
+
 struct SchedulerLimits {
-  // Per-tick I/O bounds. At 115200 baud the line moves 11.52 bytes per ms, so 32 in and 16 out
-  // per tick keep up at 1 kHz and 500 Hz while no tick ever sees a burst of link work.
-  uint16_t rx_bytes_per_tick = 32;
-  uint16_t tx_bytes_per_tick = 16;
+  // Per-tick I/O bounds: a little more than the line can carry in a period (12 bytes at 1 kHz,
+  // 24 at 500 Hz), so the link keeps up while no tick ever sees a burst of link work. Receiving
+  // gets twice that, to catch up after a late tick.
+  uint16_t rx_bytes_per_tick = static_cast<uint16_t>(2 * kLineBytesPerTick + 8);
+  uint16_t tx_bytes_per_tick = static_cast<uint16_t>(kLineBytesPerTick + 4);
 };
 
 // What the context learns about each finished tick (for telemetry).

@@ -74,7 +74,7 @@ TEST(LogDownload, TenThousandLinesOverALossyLineArriveWholeOnceAndInOrder) {
 
   uint32_t now_ms = 0;
   uint64_t ticked_us = 0;  // firmware periods run so far on the download's clock
-  for (; now_ms < 600000 && !downloader.done(); ++now_ms) {
+  for (; now_ms < 1200000 && !downloader.done(); ++now_ms) {
     uint16_t first = 0, count = 0;
     if (downloader.next_request(now_ms, first, count)) {
       up.send(requests.submit(wire::LogDownload{0, wire::LogKind::telemetry, first, count}, now_ms));
