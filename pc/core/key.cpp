@@ -9,7 +9,7 @@ struct NamedKey {
 };
 
 constexpr NamedKey kNamedKeys[] = {
-    {kKeyEscape, "ESC"}, {kKeyUp, "up"}, {kKeyDown, "down"}, {kKeyLeft, "left"}, {kKeyRight, "right"}, {' ', "space"},
+    {kKeyEscape, "ESC"}, {kKeyInterrupt, "^C"}, {kKeyUp, "up"}, {kKeyDown, "down"}, {kKeyLeft, "left"}, {kKeyRight, "right"}, {' ', "space"},
 };
 
 }  // namespace

@@ -13,6 +13,7 @@ using Key = int32_t;
 
 inline constexpr Key kKeyNone = -1;
 inline constexpr Key kKeyEscape = 27;
+inline constexpr Key kKeyInterrupt = 3;  // ^C: the terminal is raw, so it is a key, not a signal
 // Outside the range of characters, so they never collide with a typed letter.
 inline constexpr Key kKeyUp = 0x110000;
 inline constexpr Key kKeyDown = 0x110001;

@@ -17,6 +17,7 @@ struct KeyBinding {
 inline constexpr KeyBinding kKeyMap[] = {
     {kKeyEscape, Action::abort},
     {'x', Action::exit},
+    {kKeyInterrupt, Action::exit},
     {'0', Action::mode_safe},
     {'1', Action::mode_panic},
     {'2', Action::mode_manual},

@@ -254,7 +254,7 @@ void Cockpit::draw_log(const Console& console, int top, int rows, int width) {
 
 void Cockpit::draw_link_alarm(const Console& console, int width) {
   const LinkState state = console.link_state();
-  if (state != alarmed_ && (state == LinkState::lost || state == LinkState::closed)) beep();
+  if (state != alarmed_ && (state == LinkState::lost || state == LinkState::closed)) bell_ = true;
   alarmed_ = state;
   if (state != LinkState::lost && state != LinkState::closed) return;
   const int box = 40;
@@ -290,7 +290,13 @@ void Cockpit::draw_help(int rows, int width) {
   }
 }
 
-void Cockpit::draw(const Console& console) {
+void Cockpit::show() {
+  if (bell_) beep();
+  bell_ = false;
+  doupdate();
+}
+
+void Cockpit::compose(const Console& console) {
   erase();
   const int rows = LINES;
   const int width = COLS;
@@ -301,7 +307,7 @@ void Cockpit::draw(const Console& console) {
                    link_state_name(state)),
         state == LinkState::up ? kInfo : kAlarm);
     draw_log(console, 3, std::max(0, rows - 3), width);
-    refresh();
+    wnoutrefresh(stdscr);
     return;
   }
   draw_title(console, width);
@@ -312,7 +318,7 @@ void Cockpit::draw(const Console& console) {
   draw_log(console, 14, rows - 14, width);
   draw_link_alarm(console, width);
   if (console.help_visible()) draw_help(rows, width);
-  refresh();
+  wnoutrefresh(stdscr);
 }
 
 }  // namespace qrterm

@@ -1,7 +1,9 @@
 // The screen: status on top (mode, link, battery, engines, attitude, set-points, trims, gains),
 // the scrolling log below, LINK LOST across it when the QR is silent, the key help over it on
 // request. 80x24 is enough; more rows go to the log, more columns to the bars and log lines.
-// It only reads the Console; drawing never waits for anything but the terminal.
+// Two steps, so the terminal never holds up the link: compose() reads the Console and builds the
+// screen in memory (under the lock the link thread shares); show() writes it to the terminal,
+// which may block (a slow or frozen terminal), with the lock released.
 #pragma once
 
 #include <string>
@@ -20,7 +22,8 @@ class Cockpit {
  public:
   explicit Cockpit(CockpitLabels labels) : labels_(std::move(labels)) {}
 
-  void draw(const Console& console);
+  void compose(const Console& console);
+  void show();
 
   static constexpr int kMinRows = 24;
   static constexpr int kMinColumns = 80;
@@ -37,6 +40,7 @@ class Cockpit {
 
   CockpitLabels labels_;
   LinkState alarmed_ = LinkState::waiting;
+  bool bell_ = false;  // the link was just lost: ring once
 };
 
 }  // namespace qrterm

@@ -3,6 +3,11 @@
 #include <poll.h>
 #include <unistd.h>
 
+#include <atomic>
+#include <mutex>
+#include <thread>
+#include <vector>
+
 #include <pc/platform/clock.hpp>
 #include <pc/platform/signals.hpp>
 
@@ -13,98 +18,137 @@ namespace {
 constexpr uint32_t kJoystickRetryMs = 1000;
 constexpr uint32_t kChildCheckMs = 100;
 
-void read_joystick(Session& s, uint32_t now) {
-  JoystickDevice& joystick = *s.joystick;
-  if (!joystick.read()) {
-    s.console.joystick_lost(now);  // once: the console knows it is lost already after that
-    return;
+void run_link(Session& s, std::mutex& lock, const std::atomic<bool>& stop) {
+  bool serial_open = true;
+  std::vector<uint8_t> received;
+  std::string why;
+  while (!stop) {
+    pollfd fd{serial_open ? s.serial.fd() : -1, POLLIN, 0};
+    ::poll(&fd, 1, kLinkPollMs);
+    const uint32_t now = monotonic_ms();
+    received.clear();
+    const SerialPort::Io io = serial_open && fd.revents != 0 ? s.serial.read_available(received, why) : SerialPort::Io::ok;
+
+    const std::lock_guard<std::mutex> hold(lock);
+    s.console.receive(received.data(), received.size(), now);
+    if (io == SerialPort::Io::closed) {
+      serial_open = false;
+      s.console.line_closed(why, now);
+    }
+    s.console.tick(now);
+    // Non-blocking: what the line does not take now waits for the next pass.
+    if (serial_open && s.serial.write_some(s.console.output(), why) == SerialPort::Io::closed) {
+      serial_open = false;
+      s.console.line_closed(why, now);
+    }
+    if (!serial_open) s.console.output().clear();
   }
-  JoystickReader& reader = joystick.reader();
-  // A device opened again counts as back once it has said where the stick is: one that opens but
-  // delivers nothing (a half-gone USB device) is not a joystick.
-  if (s.console.joystick_state() == JoystickState::lost) {
-    if (!reader.position_known()) return;
-    s.console.joystick_back(now);
-  }
-  if (reader.take_abort()) s.console.joystick_fire(now);
-  s.console.joystick_moved(reader.sticks(), reader.position_known(), now);
 }
 
-void read_sim_output(Session& s, LineReader& reader, bool& open, Severity severity) {
-  for (const std::string& line : reader.read(open)) s.console.note(severity, "sim: " + line);
-}
+class Ui {
+ public:
+  explicit Ui(Session& s) : s_(s), sim_out_open_(s.sim != nullptr), sim_err_open_(s.sim != nullptr) {}
+
+  // One pass; false once the console has finished.
+  bool pass(std::mutex& lock) {
+    enum { kKeyboard, kJoystick, kSimOut, kSimErr, kCount };
+    pollfd fds[kCount] = {};
+    fds[kKeyboard] = {STDIN_FILENO, POLLIN, 0};
+    fds[kJoystick] = {s_.joystick != nullptr ? s_.joystick->fd() : -1, POLLIN, 0};
+    fds[kSimOut] = {sim_out_open_ ? s_.sim->out().fd() : -1, POLLIN, 0};
+    fds[kSimErr] = {sim_err_open_ ? s_.sim->err().fd() : -1, POLLIN, 0};
+    ::poll(fds, kCount, kUiPollMs);
+
+    // Reading happens outside the lock: telling ESC from an arrow key waits a few ms.
+    keys_.clear();
+    for (Key key = s_.terminal.next_key(); key != kKeyNone; key = s_.terminal.next_key()) keys_.push_back({key, monotonic_ms()});
+    const bool joystick_read = s_.joystick != nullptr && fds[kJoystick].fd >= 0 && fds[kJoystick].revents != 0;
+    const bool joystick_alive = joystick_read && s_.joystick->read();
+    lines_.clear();
+    read_sim(fds[kSimOut].revents != 0, s_.sim != nullptr ? &s_.sim->out() : nullptr, sim_out_open_, Severity::info);
+    read_sim(fds[kSimErr].revents != 0, s_.sim != nullptr ? &s_.sim->err() : nullptr, sim_err_open_, Severity::warning);
+    const uint32_t now = monotonic_ms();
+    std::optional<std::string> sim_ended;
+    if (s_.sim != nullptr && !sim_ended_ && now - last_child_check_ >= kChildCheckMs) {
+      last_child_check_ = now;
+      sim_ended = s_.sim->ended();
+      sim_ended_ = sim_ended.has_value();
+    }
+    if (s_.joystick != nullptr && s_.joystick->fd() < 0 && now - last_joystick_retry_ >= kJoystickRetryMs) {
+      last_joystick_retry_ = now;
+      s_.joystick->reopen();
+    }
+
+    bool finished = false;
+    bool redraw = false;
+    {
+      const std::lock_guard<std::mutex> hold(lock);
+      Console& console = s_.console;
+      for (const auto& [key, at] : keys_) console.key(key, at);
+      if (joystick_read) joystick(joystick_alive, now);
+      for (const auto& [severity, line] : lines_) console.note(severity, "sim: " + line);
+      if (sim_ended) console.line_closed(*sim_ended, now);
+      for (; signals_handled_ < exit_signals(); ++signals_handled_) {
+        console.note(Severity::warning, "signal: exiting");
+        console.request_exit(now);
+      }
+      finished = console.finished();
+      if (finished || now - last_draw_ >= kRedrawMs) {
+        last_draw_ = now;
+        redraw = true;
+        s_.cockpit.compose(console);
+      }
+    }
+    if (redraw) s_.cockpit.show();  // may wait for the terminal; the link thread carries on
+    return !finished;
+  }
+
+ private:
+  void read_sim(bool readable, LineReader* reader, bool& open, Severity severity) {
+    if (!readable || reader == nullptr || !open) return;
+    for (std::string& line : reader->read(open)) lines_.push_back({severity, std::move(line)});
+  }
+
+  void joystick(bool alive, uint32_t now) {
+    Console& console = s_.console;
+    if (!alive) {
+      console.joystick_lost(now);  // once: the console knows it is lost after that
+      return;
+    }
+    JoystickReader& reader = s_.joystick->reader();
+    // A device opened again counts as back once it has said where the stick is: one that opens
+    // but delivers nothing (a half-gone USB device) is not a joystick.
+    if (console.joystick_state() == JoystickState::lost) {
+      if (!reader.position_known()) return;
+      console.joystick_back(now);
+    }
+    if (reader.take_abort()) console.joystick_fire(now);
+    console.joystick_moved(reader.sticks(), reader.position_known(), now);
+  }
+
+  Session& s_;
+  bool sim_out_open_;
+  bool sim_err_open_;
+  bool sim_ended_ = false;
+  int signals_handled_ = 0;
+  uint32_t last_draw_ = monotonic_ms() - kRedrawMs;
+  uint32_t last_child_check_ = monotonic_ms();
+  uint32_t last_joystick_retry_ = monotonic_ms();
+  std::vector<std::pair<Key, uint32_t>> keys_;
+  std::vector<std::pair<Severity, std::string>> lines_;
+};
 
 }  // namespace
 
 void run_main_loop(Session& s) {
-  Console& console = s.console;
-  bool serial_open = true;
-  bool sim_out_open = s.sim != nullptr;
-  bool sim_err_open = s.sim != nullptr;
-  bool sim_ended = false;
-  int signals_handled = 0;
-  uint32_t last_draw = monotonic_ms() - kRedrawMs;
-  uint32_t last_child_check = monotonic_ms();
-  uint32_t last_joystick_retry = monotonic_ms();
-  std::vector<uint8_t> received;
-  std::string why;
-
-  while (!console.finished()) {
-    enum { kSerial, kKeyboard, kJoystick, kSimOut, kSimErr, kCount };
-    pollfd fds[kCount] = {};
-    fds[kSerial] = {serial_open ? s.serial.fd() : -1, POLLIN, 0};
-    fds[kKeyboard] = {STDIN_FILENO, POLLIN, 0};
-    fds[kJoystick] = {s.joystick != nullptr ? s.joystick->fd() : -1, POLLIN, 0};
-    fds[kSimOut] = {sim_out_open ? s.sim->out().fd() : -1, POLLIN, 0};
-    fds[kSimErr] = {sim_err_open ? s.sim->err().fd() : -1, POLLIN, 0};
-    ::poll(fds, kCount, kPollMs);
-    const uint32_t now = monotonic_ms();
-
-    if (serial_open && fds[kSerial].revents != 0) {
-      received.clear();
-      const SerialPort::Io io = s.serial.read_available(received, why);
-      console.receive(received.data(), received.size(), now);
-      if (io == SerialPort::Io::closed) {
-        serial_open = false;
-        console.line_closed(why, now);
-      }
-    }
-    // Each key with its own time: telling ESC from an arrow key can take a few ms.
-    for (Key key = s.terminal.next_key(); key != kKeyNone; key = s.terminal.next_key()) console.key(key, monotonic_ms());
-    if (s.joystick != nullptr) {
-      if (fds[kJoystick].fd >= 0 && fds[kJoystick].revents != 0) {
-        read_joystick(s, now);
-      } else if (s.joystick->fd() < 0 && now - last_joystick_retry >= kJoystickRetryMs) {
-        last_joystick_retry = now;
-        s.joystick->reopen();
-      }
-    }
-    if (sim_out_open && fds[kSimOut].revents != 0) read_sim_output(s, s.sim->out(), sim_out_open, Severity::info);
-    if (sim_err_open && fds[kSimErr].revents != 0) read_sim_output(s, s.sim->err(), sim_err_open, Severity::warning);
-    if (s.sim != nullptr && !sim_ended && now - last_child_check >= kChildCheckMs) {
-      last_child_check = now;
-      if (const std::optional<std::string> how = s.sim->ended()) {
-        sim_ended = true;
-        console.line_closed(*how, now);
-      }
-    }
-    for (; signals_handled < exit_signals(); ++signals_handled) {
-      console.note(Severity::warning, "signal: exiting");
-      console.request_exit(now);
-    }
-
-    console.tick(now);
-    if (serial_open && s.serial.write_some(console.output(), why) == SerialPort::Io::closed) {
-      serial_open = false;
-      console.line_closed(why, now);
-    }
-    if (!serial_open) console.output().clear();
-    if (now - last_draw >= kRedrawMs) {
-      last_draw = now;
-      s.cockpit.draw(console);
-    }
+  std::mutex lock;
+  std::atomic<bool> stop{false};
+  std::thread link([&] { run_link(s, lock, stop); });
+  Ui ui(s);
+  while (ui.pass(lock)) {
   }
-  s.cockpit.draw(console);
+  stop = true;
+  link.join();
 }
 
 }  // namespace qrterm

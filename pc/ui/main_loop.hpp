@@ -1,9 +1,10 @@
-// The main loop: poll() on the serial line, the keyboard, the joystick and the simulator's
-// output, with a 10 ms tick for the link's timers and a redraw at most every 100 ms. Nothing in
-// it blocks: the link's 50 Hz heartbeat never waits for the screen.
+// The main loop, as two threads sharing the Console under one lock:
+//   the link thread: poll() on the serial line, the Console's timers every few ms (control at
+//   50 Hz, resends, link state), writes to the line; it never waits for anything else;
+//   the UI thread: keys, the joystick, the simulator's output, signals, and at most 10 screens a
+//   second, composed under the lock and written to the terminal outside it.
+// A terminal that stops taking output (frozen, XOFF) stalls the screen, never the heartbeat.
 #pragma once
-
-#include <memory>
 
 #include <pc/core/console.hpp>
 #include <pc/platform/joystick_device.hpp>
@@ -17,7 +18,7 @@ namespace qrterm {
 struct Session {
   Console& console;
   SerialPort& serial;
-  SimProcess* sim = nullptr;         // null when flying a QR on --port
+  SimProcess* sim = nullptr;           // null when flying a QR on --port
   JoystickDevice* joystick = nullptr;  // null with --no-joystick
   Terminal& terminal;
   Cockpit& cockpit;
@@ -27,6 +28,7 @@ struct Session {
 void run_main_loop(Session& session);
 
 inline constexpr uint32_t kRedrawMs = 100;  // at most 10 screens a second
-inline constexpr int kPollMs = 5;  // the longest a control message or a key waits
+inline constexpr int kLinkPollMs = 2;       // the longest a control message waits past its time
+inline constexpr int kUiPollMs = 10;
 
 }  // namespace qrterm

@@ -23,7 +23,9 @@ constexpr int kEscapeDelayMs = 25;
 Terminal::Terminal() {
   ::initscr();
   open_ = true;
-  ::cbreak();  // ^C still raises SIGINT, which the main loop turns into an orderly exit
+  // Raw, not cbreak: no ^S (XOFF) to freeze the screen, no ^Z to suspend the console and with it
+  // the heartbeat. ^C arrives as a key, bound to exit like x.
+  ::raw();
   ::noecho();
   ::nonl();
   ::keypad(stdscr, TRUE);

@@ -1,7 +1,8 @@
-// fake-qr --serve: the FakeQr on a pty, announcing it the way the simulator does
+// fake-qr --serve [--chatty]: the FakeQr on a pty, announcing it the way the simulator does
 // ("qrsim: serial on /dev/pts/N" as the first line of output), so qrterm --sim can fly it in the
-// tmux test without the firmware. Real time; ends after the console's exit handshake or when the
-// console closes the line.
+// tmux tests without the firmware. Real time; ends after the console's exit handshake or when the
+// console closes the line. --chatty: a debug text line every 10 ms, so the console's log scrolls
+// and every screen it draws is a big one.
 #include <errno.h>
 #include <fcntl.h>
 #include <poll.h>
@@ -29,9 +30,13 @@ uint32_t now_ms() {
 
 int main(int argc, char** argv) {
   bool serve = false;
-  for (int i = 1; i < argc; ++i) serve = serve || std::strcmp(argv[i], "--serve") == 0;
+  bool chatty = false;
+  for (int i = 1; i < argc; ++i) {
+    serve = serve || std::strcmp(argv[i], "--serve") == 0;
+    chatty = chatty || std::strcmp(argv[i], "--chatty") == 0;
+  }
   if (!serve) {
-    std::fprintf(stderr, "usage: fake-qr --serve\n");
+    std::fprintf(stderr, "usage: fake-qr --serve [--chatty]\n");
     return 2;
   }
   const int master = posix_openpt(O_RDWR | O_NOCTTY | O_NONBLOCK);
@@ -50,6 +55,8 @@ int main(int argc, char** argv) {
   qrterm_test::FakeQr qr(now_ms());
   bool console_seen = false;
   uint32_t exited_at = 0;
+  uint32_t next_chatter = now_ms();
+  unsigned chatter = 0;
   uint8_t buffer[512];
   for (;;) {
     pollfd fd{master, POLLIN, 0};
@@ -66,6 +73,12 @@ int main(int argc, char** argv) {
       continue;
     }
     qr.tick(now);
+    if (chatty && now - next_chatter < 0x80000000u) {
+      next_chatter = now + 10;
+      char line[48];
+      std::snprintf(line, sizeof line, "chatter %u, filling the screen\n", chatter++);
+      qr.say(line);
+    }
     std::vector<uint8_t> out = qr.take_output();
     if (!out.empty() && write(master, out.data(), out.size()) < 0 && errno != EAGAIN) return 1;
     if (qr.exited && exited_at == 0) exited_at = now;
