@@ -27,7 +27,7 @@ def main():
         return False
 
     def fail(what):
-        board.process.kill()
+        board.kill()
         print(f"FAIL: {what}; last bytes received: {board.snapshot()[-64:].hex(' ')}")
         sys.exit(1)
 

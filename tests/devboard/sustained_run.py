@@ -8,6 +8,7 @@ The figures are reported, not asserted; the run fails only if the firmware stops
 import argparse
 import json
 import struct
+import subprocess
 import sys
 import threading
 import time
@@ -35,7 +36,7 @@ def main():
 
     def fail(what):
         stop.set()
-        board.process.kill()
+        board.kill()
         print(f"FAIL: {what}")
         sys.exit(1)
 
@@ -48,15 +49,22 @@ def main():
             time.sleep(0.01)
         fail(f"no ack for request type 0x{payload_type:02X} seq {seq}")
 
-    def attitude_modes():
-        return [p[1] for t, p in frames_in(board.snapshot()) if t == TELEMETRY_ATTITUDE]
+    def wait_for_attitude(condition, seconds, after=0):
+        """Waits for a telemetry_attitude frame (sent after byte `after`) that meets condition."""
+        deadline = time.monotonic() + seconds
+        while time.monotonic() < deadline:
+            if any(condition(p) for t, p in frames_in(board.snapshot()[after:]) if t == TELEMETRY_ATTITUDE):
+                return True
+            time.sleep(0.05)
+        return False
 
     time.sleep(0.5)
     threading.Thread(target=heartbeat, daemon=True).start()
     request(1, PARAM_SET, bytes([1, TELEMETRY_RATE_HZ]) + struct.pack("<i", 100))
+    mark = len(board.snapshot())
     request(2, MODE_CHANGE, [2, 3])  # calibration; it returns to safe when done
-    time.sleep(1.0)
-    if attitude_modes()[-1] != 0:
+    # Timed by the firmware's own telemetry, not the wall clock: a loaded host runs QEMU slower.
+    if not wait_for_attitude(lambda p: p[1] == 0 and p[2] & 0x01, 30, mark):
         fail("calibration did not finish")
     request(3, MODE_CHANGE, [3, 5])  # full control
     sticks["lift"] = 400
@@ -76,7 +84,7 @@ def main():
     board.send(frame(EXIT, [4]))
     try:
         board.process.wait(timeout=15)
-    except Exception:
+    except subprocess.TimeoutExpired:
         fail("firmware did not stop after exit")
 
     first, last = systems[0], systems[-1]

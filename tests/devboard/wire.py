@@ -1,6 +1,7 @@
 """The wire as a devboard test script needs it (docs/protocol.md): frames, CRC-8/DVB-S2, a
 byte-stream reader, and the devboard process with a reader thread."""
 import os
+import signal
 import subprocess
 import threading
 
@@ -52,8 +53,10 @@ class Devboard:
     """An ELF on the devboard with its UART on our pipes, read by a thread."""
 
     def __init__(self, elf, *extra):
+        # A session of its own, so kill() takes QEMU down with the script that started it.
         self.process = subprocess.Popen([DEVBOARD, "--elf", elf, "--stdin", *extra],
-                                        stdin=subprocess.PIPE, stdout=subprocess.PIPE)
+                                        stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+                                        start_new_session=True)
         self.received = bytearray()
         self.lock = threading.Lock()
         threading.Thread(target=self._read, daemon=True).start()
@@ -69,6 +72,12 @@ class Devboard:
     def send(self, data):
         self.process.stdin.write(data)
         self.process.stdin.flush()
+
+    def kill(self):
+        try:
+            os.killpg(self.process.pid, signal.SIGKILL)
+        except ProcessLookupError:
+            pass
 
     def snapshot(self):
         with self.lock:
