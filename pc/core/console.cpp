@@ -108,6 +108,7 @@ struct Console::Receiver {
   void operator()(const wire::TelemetrySystem& m) { console.telemetry_.on(m); }
   void operator()(const wire::TelemetryLink& m) { console.telemetry_.on(m); }
   void operator()(const wire::TelemetryTask& m) { console.telemetry_.on(m); }
+  void operator()(const wire::LogStatus& m) { console.on_log_status(m); }
   void operator()(const wire::SensorLogPart& part) { console.downloader_.on_part(part, console.now_ms_); }
   void operator()(const wire::TelemetryLogPart& part) { console.downloader_.on_part(part, console.now_ms_); }
 };
@@ -171,8 +172,10 @@ void Console::act(Action action, uint32_t now_ms) {
     case Action::log_download:
       if (downloader_.active()) {
         note(Severity::warning, "a log download is running already (" + downloader_.status() + ")");
+      } else if (!telemetry_.log_status) {
+        note(Severity::warning, "the QR has not said yet what its logs hold (no log_status): try again");
       } else {
-        downloader_.start(now_ms_);
+        downloader_.start(*telemetry_.log_status, now_ms_);
       }
       break;
     case Action::params_read:
@@ -312,8 +315,15 @@ void Console::on_attitude(const wire::TelemetryAttitude& attitude) {
   const auto rose = [&](uint8_t bit) { return (attitude.flags & bit) != 0 && (!before || (before->flags & bit) == 0); };
   if (rose(wire::kFlagCalibrated)) note(Severity::info, "QR calibrated");
   if (rose(wire::kFlagBatteryWarning)) note(Severity::warning, "QR battery low");
-  if (rose(wire::kFlagLogFull)) note(Severity::warning, "QR log full");
   if (telemetry_csv_) telemetry_csv_->write(telemetry_csv_row(now_ms_ - start_ms_, telemetry_, last_control_));
+}
+
+void Console::on_log_status(const wire::LogStatus& status) {
+  const bool was_full = telemetry_.log_status && (telemetry_.log_status->flags & wire::kLogStatusFull) != 0;
+  telemetry_.on(status);
+  if ((status.flags & wire::kLogStatusFull) != 0 && !was_full) {
+    note(Severity::warning, "QR log full (" + std::to_string(status.capacity_lines) + " lines): it keeps its first lines");
+  }
 }
 
 void Console::on_answer(wire::MessageType type, uint8_t seq, wire::NackReason reason, const Answer& answer) {
@@ -327,7 +337,8 @@ void Console::on_answer(wire::MessageType type, uint8_t seq, wire::NackReason re
                    : finish_exit(Severity::info, "the QR confirmed the exit", true);
   }
   if (type == wire::MessageType::log_download) {
-    return refused ? downloader_.on_nack(reason) : downloader_.on_ack(now_ms_);
+    if (refused) downloader_.on_nack(reason);
+    return;  // accepted: the parts say the rest
   }
   if (type == wire::MessageType::mode_change) {
     const std::string mode = requested_mode_ ? mode_name(*requested_mode_) : "?";
@@ -347,7 +358,9 @@ void Console::on_gave_up(const wire::ResendEvent& event) {
   if (event.type == wire::MessageType::exit) {
     return finish_exit(Severity::error, "no answer from the QR to the exit", false);
   }
-  if (event.type == wire::MessageType::log_download) return downloader_.on_gave_up();
+  // A log_download that went unanswered is asked for again by the downloader once the line is
+  // quiet; it gives up by itself when nothing comes.
+  if (event.type == wire::MessageType::log_download) return;
   note(Severity::error, std::string("no answer from the QR to the ") + text.what + " request (" +
                             std::to_string(wire::kMaxSends) + " sends)");
 }

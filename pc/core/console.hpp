@@ -111,6 +111,7 @@ class Console {
   void on_answer(wire::MessageType type, uint8_t seq, wire::NackReason reason, const Answer& answer);
   void on_gave_up(const wire::ResendEvent& event);
   void on_attitude(const wire::TelemetryAttitude& attitude);
+  void on_log_status(const wire::LogStatus& status);
   void on_link_state(LinkState state);
 
   ConsoleLog& log_;

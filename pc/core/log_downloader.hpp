@@ -1,8 +1,8 @@
-// Downloads the QR's two logs (sensor, then telemetry) into CSV files. The QR sends the lines
-// asked for as parts, then falls silent; the protocol has no end marker and no line count, so a
-// log is taken as complete after kQuietMs without a part. Lines missing below the highest line
-// seen are asked for again by number, a few times, then reported missing. Lines missing after the
-// highest one seen cannot be told from the end of the log.
+// Downloads the QR's two logs into CSV files: the sensor log, then the telemetry log. How many
+// lines each has comes from the QR's log_status; which lines are in and what to ask for next is
+// the wire library's wire::LogDownloader (one request out at a time, the missing lines asked for
+// again in spans once the parts stop coming). This class runs the two downloads one after the
+// other, gives up when nothing new arrives for a while, and writes the files.
 #pragma once
 
 #include <stddef.h>
@@ -14,6 +14,7 @@
 #include <ostream>
 #include <string>
 
+#include <common/log_downloader.hpp>
 #include <common/log_records.hpp>
 #include <common/nack_reason.hpp>
 #include <common/requests.hpp>
@@ -23,8 +24,8 @@ namespace qrterm {
 
 class LogDownloader {
  public:
-  static constexpr uint32_t kQuietMs = 1000;
-  static constexpr int kAsksPerLine = 3;
+  // No new line for this long (through several re-requests): the download is given up.
+  static constexpr uint32_t kGiveUpMs = 5000;
 
   struct Hooks {
     std::function<void(const wire::LogDownload&)> request;                      // send it (acked)
@@ -32,52 +33,53 @@ class LogDownloader {
     std::function<std::unique_ptr<std::ostream>(const std::string& name)> open;  // a file in the log folder
   };
 
-  explicit LogDownloader(Hooks hooks) : hooks_(std::move(hooks)) {}
+  explicit LogDownloader(Hooks hooks);
+  ~LogDownloader();
 
-  bool active() const { return phase_ != Phase::idle; }
-  void start(uint32_t now_ms);
+  bool active() const { return kind_ != Kind::idle; }
 
-  // Answers to our log_download request (matched by the caller on type and seq).
-  void on_ack(uint32_t now_ms);
+  // Starts with what the QR last said about its logs. Refuses (with a note) while it logs, and
+  // skips a log without lines.
+  void start(const wire::LogStatus& status, uint32_t now_ms);
+
+  // The QR refused our log_download (matched by the caller on type and seq).
   void on_nack(wire::NackReason reason);
-  void on_gave_up();
 
   void on_part(const wire::SensorLogPart& part, uint32_t now_ms);
   void on_part(const wire::TelemetryLogPart& part, uint32_t now_ms);
 
-  // Ends a log after the quiet time: asks for missing lines or writes the file and moves on.
+  // Asks for what is due, finishes a log when it is whole, gives up when nothing comes.
   void tick(uint32_t now_ms);
 
-  // "telemetry log: 312 lines" while running; empty when idle.
+  // "sensor log: 812 of 1200 lines" while running; empty when idle.
   std::string status() const;
 
  private:
-  enum class Phase : uint8_t { idle, waiting_for_ack, receiving };
+  enum class Kind : uint8_t { idle, sensor, telemetry };
 
   template <class Record>
-  struct Collection {
-    wire::LogLineAssembler<Record> assembler;
-    std::map<uint16_t, Record> lines;
-    void clear() { *this = Collection{}; }
+  struct Download {
+    wire::LogDownloader<Record> lines;
+    std::map<uint16_t, Record> records;
   };
 
+  void begin(Kind kind, uint32_t now_ms);
   template <class Record>
-  void take(Collection<Record>& collection, const wire::LogPart<Record>& part, wire::LogKind kind, uint32_t now_ms);
+  void take(Download<Record>& download, const wire::LogPart<Record>& part, Kind kind, uint32_t now_ms);
   template <class Record>
-  void finish(Collection<Record>& collection, const char* name);
-
-  void ask(wire::LogKind kind, uint16_t first_line, uint16_t count, uint32_t now_ms);
-  void finish_current();
+  void write(Download<Record>& download, const char* name);
+  template <class Record>
+  void step(Download<Record>& download, wire::LogKind log, uint32_t now_ms);
   void stop(Severity severity, const std::string& why);
 
   Hooks hooks_;
-  Phase phase_ = Phase::idle;
-  wire::LogKind kind_ = wire::LogKind::sensor;
-  uint32_t last_activity_ms_ = 0;
+  Kind kind_ = Kind::idle;
+  wire::LogStatus status_;
+  uint32_t last_progress_ms_ = 0;
   uint32_t downloads_ = 0;  // numbers the files of each download: sensor_log_1.csv, ...
-  std::map<uint16_t, int> asks_;  // line -> times asked for again
-  Collection<wire::SensorLogRecord> sensor_;
-  Collection<wire::TelemetryLogRecord> telemetry_;
+  // Each holds an 8 KiB map of the lines received: on the heap, and only while downloading.
+  std::unique_ptr<Download<wire::SensorLogRecord>> sensor_;
+  std::unique_ptr<Download<wire::TelemetryLogRecord>> telemetry_;
 };
 
 }  // namespace qrterm

@@ -8,6 +8,7 @@
 #include <map>
 #include <optional>
 
+#include <common/log_records.hpp>
 #include <common/telemetry.hpp>
 
 namespace qrterm {
@@ -20,6 +21,7 @@ struct TelemetryModel {
   std::optional<wire::TelemetrySystem> system;
   std::optional<wire::TelemetryLink> qr_link;  // the QR's receive counters: the uplink's health
   std::map<uint8_t, wire::TelemetryTask> tasks;  // cycle figures by task number, one task per telemetry period
+  std::optional<wire::LogStatus> log_status;     // the QR's logs: on or off, lines, room
 
   uint32_t attitude_frames = 0;
   uint32_t attitude_lost = 0;  // from gaps in the attitude tick
@@ -31,6 +33,7 @@ struct TelemetryModel {
   void on(const wire::TelemetrySystem& message) { system = message; }
   void on(const wire::TelemetryLink& message) { qr_link = message; }
   void on(const wire::TelemetryTask& message) { tasks[message.task] = message; }
+  void on(const wire::LogStatus& message) { log_status = message; }
 
   bool flag(uint8_t bit) const { return attitude && (attitude->flags & bit) != 0; }
 };

@@ -125,6 +125,12 @@ void Cockpit::draw_system(const Console& console, int width) {
     put(3, column, flag.name, flag.pair, A_BOLD);
     column += static_cast<int>(std::string(flag.name).size()) + 1;
   }
+  // The QR's logs: lines kept of the room there is (both logs keep the same number).
+  if (const std::optional<wire::LogStatus>& logs = t.log_status; logs && (logs->sensor_lines > 0 || logs->telemetry_lines > 0)) {
+    const std::string s = text("log %u/%u", std::max(logs->sensor_lines, logs->telemetry_lines), logs->capacity_lines);
+    put(3, column + 1, s, (logs->flags & wire::kLogStatusFull) != 0 ? kWarning : kDim);
+    column += static_cast<int>(s.size()) + 2;
+  }
   std::string status = console.download_status();
   if (console.parameters_to_send() > 0) status += text("%sparameters to send: %zu", status.empty() ? "" : "  ", console.parameters_to_send());
   if (console.exiting()) status = "exiting: waiting for the QR";

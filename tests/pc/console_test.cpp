@@ -467,6 +467,7 @@ TEST(Console, LogDownloadWritesBothLogsAsCsvAndAsksAgainForLostLines) {
   b.qr.telemetry_log[0] = t;
   int dropped = 0;
   b.qr.drop_log_part = [&dropped](uint16_t line, uint8_t part) { return (line == 7 || line == 8) && part == 2 && dropped++ < 2; };
+  b.run(200);  // a log_status with the new line counts
   b.key('g');
   ASSERT_TRUE(b.run_until([&] { return b.written.count("telemetry_log_1.csv") != 0 && !b.console.download_status().size(); }, 10000));
   const std::string& sensor = b.written["sensor_log_1.csv"];
@@ -484,11 +485,69 @@ TEST(Console, LogDownloadWritesBothLogsAsCsvAndAsksAgainForLostLines) {
   EXPECT_TRUE(b.logged("sensor log: 40 lines -> sensor_log_1.csv"));
 }
 
+TEST(Console, EmptyLogsAreNotDownloaded) {
+  Bench b;
+  b.connect();
+  b.key('g');
+  b.run(100);
+  EXPECT_TRUE(b.logged("the QR's logs are empty (s starts logging)"));
+  EXPECT_EQ(count_requests(b, wire::MessageType::log_download), 0u);
+}
+
+TEST(Console, OnlyTheLogWithLinesIsDownloaded) {
+  Bench b;
+  b.connect();
+  wire::TelemetryLogRecord t;
+  for (uint16_t line = 0; line < 5; ++line) {
+    t.line = line;
+    b.qr.telemetry_log[line] = t;
+  }
+  b.run(200);  // a log_status with the new line counts
+  b.key('g');
+  ASSERT_TRUE(b.run_until([&] { return b.console.download_status().empty(); }, 3000));
+  EXPECT_EQ(b.written.count("sensor_log_1.csv"), 0u);
+  EXPECT_EQ(std::count(b.written["telemetry_log_1.csv"].begin(), b.written["telemetry_log_1.csv"].end(), '\n'), 6);
+}
+
+TEST(Console, LogDownloadGivesUpWhenNothingComes) {
+  Bench b;
+  b.connect();
+  for (uint16_t line = 0; line < 10; ++line) b.qr.sensor_log[line] = sensor_line(line);
+  b.run(200);
+  b.qr.drop_log_part = [](uint16_t, uint8_t) { return true; };
+  b.key('g');
+  b.run(qrterm::LogDownloader::kGiveUpMs + 100);
+  EXPECT_TRUE(b.logged("no new line for 5 s, given up at sensor log: 0 of 10 lines"));
+  EXPECT_EQ(b.console.download_status(), "");
+  EXPECT_GE(count_requests(b, wire::MessageType::log_download), 5u) << "asked again while waiting";
+}
+
+TEST(Console, QrRefusalOfADownloadSaysWhatToDo) {
+  Bench b;
+  b.connect();
+  for (uint16_t line = 0; line < 10; ++line) b.qr.sensor_log[line] = sensor_line(line);
+  b.run(200);
+  b.qr.logging = true;  // started by someone else: the console's status is a moment old
+  b.key('g');
+  b.run(50);
+  EXPECT_TRUE(b.logged("log download refused: busy, try again later (the QR is logging: stop the logs first, key t)"));
+  EXPECT_EQ(b.console.download_status(), "");
+}
+
+TEST(Console, FullLogIsAWarning) {
+  Bench b;
+  b.connect();
+  const wire::FrameBytes frame = wire::encode(wire::LogStatus{wire::kLogStatusFull, 2340, 2340, 2340});
+  b.console.receive(frame.bytes, frame.size, b.now);
+  EXPECT_TRUE(b.logged("QR log full (2340 lines)"));
+}
+
 TEST(Console, LogDownloadWhileLoggingIsRefusedWithWhatToDo) {
   Bench b;
   b.connect();
-  b.keys("sg");
+  b.key('s');
   b.run(100);
+  b.key('g');
   EXPECT_TRUE(b.logged("stop the logs first"));
   EXPECT_EQ(b.console.download_status(), "");
 }

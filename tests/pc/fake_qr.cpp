@@ -38,11 +38,14 @@ struct FakeQr::Handler {
   void operator()(const wire::LogStart&) { qr.logging = true; }
   void operator()(const wire::LogStop&) { qr.logging = false; }
   void operator()(const wire::LogDownload& d) {
+    const size_t lines = d.log == wire::LogKind::sensor ? qr.sensor_log.size() : qr.telemetry_log.size();
     if (qr.logging) {
       answer = wire::NackReason::busy;
-      return;
+    } else if (d.first_line >= lines) {
+      answer = wire::NackReason::bad_value;  // as the firmware: no such lines
+    } else {
+      qr.send_log(d.log, d.first_line, d.count);
     }
-    qr.send_log(d.log, d.first_line, d.count);
   }
   void operator()(const wire::Exit&) {
     qr.exited = true;
@@ -89,6 +92,8 @@ void FakeQr::receive(const uint8_t* data, size_t count, uint32_t now_ms) {
       }
       requests.push_back(frame);
       if (!answer_requests) return;
+      const bool log_request = frame.type == wire::MessageType::log_start || frame.type == wire::MessageType::log_stop ||
+                               frame.type == wire::MessageType::log_download;
       if (admission.duplicate) {
         send(wire::reply_frame(frame.type, admission.seq, admission.previous));
         return;
@@ -100,6 +105,7 @@ void FakeQr::receive(const uint8_t* data, size_t count, uint32_t now_ms) {
       dedup_.record(frame, answer, now_ms);
       const wire::FrameBytes reply = wire::reply_frame(frame.type, admission.seq, answer);
       if (!silent) output_.insert(output_.begin() + static_cast<std::ptrdiff_t>(before), reply.bytes, reply.bytes + reply.size);
+      if (log_request) send(wire::encode(log_status()));  // the firmware does the same
     });
   }
 }
@@ -141,7 +147,7 @@ void FakeQr::send_telemetry() {
   attitude.flags = static_cast<uint8_t>((calibrated ? wire::kFlagCalibrated : 0) | (logging ? wire::kFlagLogging : 0));
   send(wire::encode(attitude));
   send(wire::encode(wire::TelemetryRates{}));
-  switch (slow_group_++ % 4) {
+  switch (slow_group_++ % 5) {
     case 0: {
       wire::TelemetryEngines engines;
       std::copy(engine, engine + 4, engines.engine);
@@ -150,6 +156,7 @@ void FakeQr::send_telemetry() {
     }
     case 1: send(wire::encode(wire::TelemetrySetpoints{control.lift, 0, 0, 0})); break;
     case 2: send(wire::encode(wire::TelemetrySystem{11850, 420, 612, 0})); break;
+    case 3: send(wire::encode(log_status())); break;
     default: {
       const wire::LinkCounters& c = parser_.counters();
       send(wire::encode(wire::TelemetryLink{static_cast<uint16_t>(c.frames_ok), static_cast<uint16_t>(c.check_failures),
@@ -178,6 +185,11 @@ void FakeQr::send_log(wire::LogKind log, uint16_t first, uint16_t count) {
   } else {
     send_lines(telemetry_log, first, count, drop_log_part, out);
   }
+}
+
+wire::LogStatus FakeQr::log_status() const {
+  const uint8_t on = logging ? wire::kLogStatusSensorOn | wire::kLogStatusTelemetryOn : 0;
+  return {on, static_cast<uint16_t>(sensor_log.size()), static_cast<uint16_t>(telemetry_log.size()), kLogCapacity};
 }
 
 void FakeQr::say(const char* text) {

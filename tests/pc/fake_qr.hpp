@@ -26,6 +26,7 @@ class FakeQr {
   static constexpr uint32_t kPanicMs = 1000;
   static constexpr uint32_t kLinkTimeoutMs = 250;
   static constexpr uint32_t kTelemetryPeriodMs = 20;
+  static constexpr uint16_t kLogCapacity = 2340;
 
   explicit FakeQr(uint32_t now_ms) : last_frame_ms_(now_ms), next_telemetry_ms_(now_ms) {}
 
@@ -44,7 +45,7 @@ class FakeQr {
   bool telemetry = true;
   bool report_after_set = true;     // protocol.md: a param_report follows every accepted param_set
   std::function<bool(uint16_t line, uint8_t part)> drop_log_part;  // true: that part is lost
-  std::map<uint16_t, wire::SensorLogRecord> sensor_log;
+  std::map<uint16_t, wire::SensorLogRecord> sensor_log;  // lines 0..size-1
   std::map<uint16_t, wire::TelemetryLogRecord> telemetry_log;
   bool logging = false;
 
@@ -70,6 +71,7 @@ class FakeQr {
   void send_telemetry();
   void send_log(wire::LogKind log, uint16_t first, uint16_t count);
   void update_engines();
+  wire::LogStatus log_status() const;
 
   wire::FrameParser parser_{wire::Listen::pc_to_qr};
   wire::RequestDedup dedup_;
