@@ -302,7 +302,14 @@ void Console::receive(const uint8_t* data, size_t count, uint32_t now_ms) {
 
 void Console::on_frame(const wire::Frame& frame) {
   Receiver receiver{*this};
-  wire::dispatch(frame, receiver);
+  const wire::DispatchResult result = wire::dispatch(frame, receiver);
+  if (result == wire::DispatchResult::invalid_payload) ++invalid_frames_;
+  if (result != wire::DispatchResult::not_handled) return;
+  // A message of the wire this console has no use for: a newer firmware, or a gap here.
+  ++unhandled_frames_;
+  const uint8_t type = static_cast<uint8_t>(frame.type);
+  if (!unhandled_types_.insert(type).second) return;
+  note(Severity::warning, std::string("the QR sends ") + wire::message_name(frame.type) + ", which this console ignores");
 }
 
 void Console::on_attitude(const wire::TelemetryAttitude& attitude) {

@@ -12,6 +12,7 @@
 #include <memory>
 #include <optional>
 #include <ostream>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -93,6 +94,10 @@ class Console {
   std::string download_status() const { return downloader_.status(); }
   size_t parameters_to_send() const { return upload_.size(); }
   const ConsoleLog& log() const { return log_; }
+  // Frames with a good check whose fields were out of range, and frames of types the console has
+  // no use for.
+  uint32_t invalid_frames() const { return invalid_frames_; }
+  uint32_t unhandled_frames() const { return unhandled_frames_; }
 
  private:
   enum class ExitState : uint8_t { running, waiting_for_qr, done };
@@ -140,6 +145,9 @@ class Console {
   uint32_t exit_started_ms_ = 0;
   bool exit_confirmed_ = false;
   std::optional<wire::Mode> requested_mode_;
+  uint32_t invalid_frames_ = 0;
+  uint32_t unhandled_frames_ = 0;
+  std::set<uint8_t> unhandled_types_;
 };
 
 }  // namespace qrterm

@@ -600,6 +600,27 @@ TEST(Console, TaskTableIsPrintedOnRequest) {
   EXPECT_NE(line->text.find("180    212    530"), std::string::npos) << line->text;
 }
 
+// One of every message the QR may send, as the wire library lists them: the console must have a
+// use for each (a new message type added to the wire shows up here first).
+template <class... Msgs>
+void feed_every_qr_message(Bench& b, wire::MessageList<Msgs...>) {
+  const auto feed = [&b](auto message) {
+    if (wire::message_spec(decltype(message)::kType)->direction != wire::Direction::qr_to_pc) return;
+    const wire::FrameBytes frame = wire::encode(message);
+    b.console.receive(frame.bytes, frame.size, b.now);
+  };
+  (feed(Msgs{}), ...);
+}
+
+TEST(Console, HandlesEveryMessageTheQrSends) {
+  Bench b;
+  feed_every_qr_message(b, wire::AllMessages{});
+  EXPECT_GE(b.console.link().counters().frames_ok, 13u);
+  EXPECT_EQ(b.console.unhandled_frames(), 0u);
+  EXPECT_EQ(b.console.invalid_frames(), 0u);
+  EXPECT_FALSE(b.logged("which this console ignores"));
+}
+
 TEST(Console, TelemetryCsvRowFitsItsHeaderEvenWithGroupsMissing) {
   qrterm::TelemetryModel empty;
   EXPECT_EQ(qrterm::telemetry_csv_row(0, empty, {}).fields().size(), qrterm::telemetry_csv_header().size());
