@@ -80,10 +80,10 @@ struct Console::Receiver {
   Console& console;
 
   void operator()(const wire::Ack& ack) {
-    console.on_answer(ack.type, ack.seq, wire::NackReason::none, console.link_.answer(ack, console.now_ms_));
+    console.on_answer(ack.type, wire::NackReason::none, console.link_.answer(ack, console.now_ms_));
   }
   void operator()(const wire::Nack& nack) {
-    console.on_answer(nack.type, nack.seq, nack.reason, console.link_.answer(nack, console.now_ms_));
+    console.on_answer(nack.type, nack.reason, console.link_.answer(nack, console.now_ms_));
   }
   void operator()(const wire::ParamReport& report) {
     const wire::ParameterSpec* spec = wire::find_parameter(report.id);
@@ -333,8 +333,7 @@ void Console::on_log_status(const wire::LogStatus& status) {
   }
 }
 
-void Console::on_answer(wire::MessageType type, uint8_t seq, wire::NackReason reason, const Answer& answer) {
-  (void)seq;
+void Console::on_answer(wire::MessageType type, wire::NackReason reason, const Answer& answer) {
   // A stale or unexpected answer (to a replaced request, or a repeat of one already taken) says
   // nothing about what is in force now.
   if (answer.match != wire::AnswerMatch::matched) return;

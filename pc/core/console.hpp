@@ -113,7 +113,8 @@ class Console {
   void queue_upload(wire::ParamId id);
   void finish_exit(Severity severity, const std::string& why, bool confirmed);
   void on_frame(const wire::Frame& frame);
-  void on_answer(wire::MessageType type, uint8_t seq, wire::NackReason reason, const Answer& answer);
+  // An ack (reason none) or a nack, already matched against the request it answers.
+  void on_answer(wire::MessageType type, wire::NackReason reason, const Answer& answer);
   void on_gave_up(const wire::ResendEvent& event);
   void on_attitude(const wire::TelemetryAttitude& attitude);
   void on_log_status(const wire::LogStatus& status);
