@@ -12,38 +12,36 @@ constexpr double kStickSpeed = 0.02;  // m/s
 
 }  // namespace
 
-std::array<Vec3, kContactPoints> contact_points(const VehicleParams& v) {
+GroundContact::GroundContact(const VehicleParams& v)
+    : stiffness_(v.contact_stiffness), damping_(v.contact_damping), friction_(v.ground_friction) {
   const double r = v.foot_radius_m, d = v.foot_depth_m, l = v.arm_m, h = -v.hub_height_m;
-  return {{
+  points_ = {{
       {r, 0, d}, {0, r, d}, {-r, 0, d}, {0, -r, d},  // feet
       {l, 0, h}, {0, l, h}, {-l, 0, h}, {0, -l, h},  // motor hubs
       {0, 0, -v.top_height_m},                       // battery on top
   }};
+  for (const Vec3& point : points_) reach_ = std::max(reach_, norm(point));
 }
 
-ContactResult ground_contact(const VehicleParams& v, const std::array<Vec3, kContactPoints>& points,
-                             const Vec3& position, const Vec3& velocity, const Quat& attitude,
-                             const Vec3& body_rate) {
+ContactResult GroundContact::at(const Vec3& position, const Vec3& velocity, const Quat& attitude,
+                                const Vec3& body_rate) const {
   ContactResult result;
-  // No point lies farther from the centre of mass than `reach`: above that height nothing can
-  // touch, and the nine rotations are skipped (most of a flight).
-  double reach = 0;
-  for (const Vec3& point : points) reach = std::max(reach, norm(point));
-  if (position.z + reach < 0) {
-    result.deepest_m = position.z + reach;  // a bound, not the exact lowest point
+  // Above this height nothing can touch, and the nine rotations are skipped (most of a flight).
+  if (position.z + reach_ < 0) {
+    result.deepest_m = position.z + reach_;
     return result;
   }
   result.deepest_m = -1e9;
-  for (const Vec3& point : points) {
+  for (const Vec3& point : points_) {
     const Vec3 world_point = position + rotate(attitude, point);
     result.deepest_m = std::max(result.deepest_m, world_point.z);
     if (world_point.z <= 0) continue;
     const Vec3 point_velocity = velocity + rotate(attitude, cross(body_rate, point));
-    const double normal = std::max(0.0, v.contact_stiffness * world_point.z + v.contact_damping * point_velocity.z);
+    const double normal = std::max(0.0, stiffness_ * world_point.z + damping_ * point_velocity.z);
     if (normal == 0) continue;
     result.touching = true;
     const double slide = std::hypot(point_velocity.x, point_velocity.y);
-    const double friction = v.ground_friction * normal / std::max(slide, kStickSpeed);
+    const double friction = friction_ * normal / std::max(slide, kStickSpeed);
     const Vec3 world_force{-friction * point_velocity.x, -friction * point_velocity.y, -normal};
     result.wrench += at_point(point, rotate_inverse(attitude, world_force));
   }

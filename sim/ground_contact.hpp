@@ -17,8 +17,6 @@ namespace sim {
 
 inline constexpr int kContactPoints = 9;
 
-std::array<Vec3, kContactPoints> contact_points(const VehicleParams& vehicle);
-
 struct ContactResult {
   Wrench wrench;             // on the airframe, body axes
   double deepest_m = 0;      // how far the lowest point is below the ground (<= 0: above; when
@@ -26,8 +24,18 @@ struct ContactResult {
   bool touching = false;
 };
 
-ContactResult ground_contact(const VehicleParams& vehicle, const std::array<Vec3, kContactPoints>& points,
-                             const Vec3& position, const Vec3& velocity, const Quat& attitude,
-                             const Vec3& body_rate);
+class GroundContact {
+ public:
+  explicit GroundContact(const VehicleParams& vehicle);
+
+  ContactResult at(const Vec3& position, const Vec3& velocity, const Quat& attitude, const Vec3& body_rate) const;
+
+  const std::array<Vec3, kContactPoints>& points() const { return points_; }
+
+ private:
+  double stiffness_, damping_, friction_;
+  std::array<Vec3, kContactPoints> points_;  // body frame, from the centre of mass
+  double reach_ = 0;                         // farthest point from the centre of mass
+};
 
 }  // namespace sim

@@ -23,7 +23,7 @@ PlantState advance(const PlantState& s, const auto& d, double h) {
 }  // namespace
 
 Quadrotor::Quadrotor(const VehicleParams& vehicle)
-    : vehicle_(vehicle), rotors_(rotor_geometry(vehicle)), contacts_(contact_points(vehicle)),
+    : vehicle_(vehicle), rotors_(rotor_geometry(vehicle)), ground_(vehicle),
       battery_(vehicle), volts_(battery_.open_circuit_volts()) {
   current_ = vehicle_.avionics_current_a;
   volts_ = battery_.terminal_volts(current_);
@@ -59,7 +59,7 @@ Quadrotor::Derivative Quadrotor::evaluate(const PlantState& s) const {
     const Vec3 hub_velocity = air_velocity + cross(s.rate, rotors_[i].hub);
     body += rotor_wrench(v, rotors_[i], s.rotor_speed[i], d.rotor_acceleration[i], s.rate, hub_velocity);
   }
-  body += ground_contact(v, contacts_, s.position, s.velocity, s.attitude, s.rate).wrench;
+  body += ground_.at(s.position, s.velocity, s.attitude, s.rate).wrench;
   body.torque += disturbance_torque_;
 
   const Vec3 force_world = rotate(s.attitude, body.force) + disturbance_force_;
@@ -122,7 +122,7 @@ void Quadrotor::step(double dt) {
 Vec3 Quadrotor::specific_force() const { return evaluate(state_).specific_force; }
 
 double Quadrotor::deepest_contact() const {
-  return ground_contact(vehicle_, contacts_, state_.position, state_.velocity, state_.attitude, state_.rate).deepest_m;
+  return ground_.at(state_.position, state_.velocity, state_.attitude, state_.rate).deepest_m;
 }
 
 double Quadrotor::steady_command(double w) const {

@@ -85,7 +85,7 @@ class Quadrotor {
 
   VehicleParams vehicle_;
   std::array<RotorGeometry, kRotorCount> rotors_;
-  std::array<Vec3, kContactPoints> contacts_;
+  GroundContact ground_;
   Battery battery_;
   PlantState state_;
   std::array<uint16_t, kRotorCount> commands_{};

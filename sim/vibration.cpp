@@ -14,11 +14,12 @@ constexpr double kRadPerDeg = std::numbers::pi / 180;
 
 Vibration::Vibration(const VehicleParams& vehicle, Random random)
     : vehicle_(vehicle), rotors_(rotor_geometry(vehicle)) {
+  const auto phase = [&random] { return std::polar(1.0, random.uniform(0, kTwoPi)); };
   for (auto& rotor : offsets_) {
     for (Offsets& o : rotor) {
-      o.accel_xy = random.uniform(0, kTwoPi);
-      o.accel_z = random.uniform(0, kTwoPi);
-      o.gyro = {random.uniform(0, kTwoPi), random.uniform(0, kTwoPi), random.uniform(0, kTwoPi)};
+      o.accel_xy = phase();
+      o.accel_z = phase();
+      for (auto& g : o.gyro) g = phase();
     }
   }
 }
@@ -32,21 +33,24 @@ VibrationSample Vibration::at(const std::array<double, kRotorCount>& speed,
   for (size_t i = 0; i < kRotorCount; ++i) {
     const double relative = speed[i] / v.vibration_ref_speed;
     const double growth = relative * relative;
+    const std::complex<double> turn = std::polar(1.0, phase[i]);  // e^(i angle)
+    std::complex<double> harmonic = 1;
     for (size_t h = 0; h < kVibrationHarmonics; ++h) {
-      const double n = static_cast<double>(h + 1);
+      harmonic *= turn;  // e^(i n angle), n = h + 1
       double gain = growth;
       if (low_pass_hz > 0) {
-        const double f = n * speed[i] / kTwoPi;
+        const double f = static_cast<double>(h + 1) * speed[i] / kTwoPi;
         gain /= std::sqrt(1 + (f / low_pass_hz) * (f / low_pass_hz));
       }
       const Offsets& o = offsets_[i][h];
-      const double angle = n * phase[i];
       // The in-plane vector turns with the rotor: its sense follows the rotor's spin.
+      const std::complex<double> xy = harmonic * o.accel_xy;
       const double a = accel_amp[h] * kG * gain;
-      out.accel += Vec3{a * std::cos(angle + o.accel_xy), a * rotors_[i].spin * std::sin(angle + o.accel_xy),
-                        a * v.vibration_accel_z_ratio * std::cos(angle + o.accel_z)};
+      out.accel += Vec3{a * xy.real(), a * rotors_[i].spin * xy.imag(),
+                        a * v.vibration_accel_z_ratio * (harmonic * o.accel_z).real()};
       const double g = gyro_amp[h] * kRadPerDeg * gain;
-      out.gyro += Vec3{g * std::cos(angle + o.gyro.x), g * std::cos(angle + o.gyro.y), g * std::cos(angle + o.gyro.z)};
+      out.gyro += Vec3{g * (harmonic * o.gyro[0]).real(), g * (harmonic * o.gyro[1]).real(),
+                       g * (harmonic * o.gyro[2]).real()};
     }
   }
   return out;

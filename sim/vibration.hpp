@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <complex>
 
 #include <sim/random.hpp>
 #include <sim/rotor.hpp>
@@ -35,10 +36,11 @@ class Vibration {
                      double low_pass_hz) const;
 
  private:
+  // Phase offsets as unit complex numbers: a harmonic's angle is then a product, not a cosine.
   struct Offsets {
-    double accel_xy;
-    double accel_z;
-    Vec3 gyro;
+    std::complex<double> accel_xy;
+    std::complex<double> accel_z;
+    std::complex<double> gyro[3];
   };
   VehicleParams vehicle_;
   std::array<RotorGeometry, kRotorCount> rotors_;

@@ -1,24 +1,28 @@
 // qrsim: the host firmware flying in the simulator.
 //   qrsim --serve [--stdio]        real time, the QR's serial line on a pseudo terminal or stdio
 //   qrsim --scenario NAME --json   headless, faster than real time, one JSON object of figures
+//   qrsim --replay IN --out OUT    a recording through the flight chain (qr/tools/replay.hpp)
 // Run `qrsim --help` for everything; docs/simulator.md describes the model and the scenarios.
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <iostream>
 #include <string>
 
 #include <common/parameter_table.hpp>
 #include <qr/boards/sim/scenario.hpp>
 #include <qr/boards/sim/serve.hpp>
 #include <qr/core/rate.hpp>
+#include <qr/tools/replay.hpp>
 
 namespace {
 
 constexpr const char* kUsage = R"(usage:
   qrsim --serve [--stdio] [--seed N] [--vehicle FILE] [--seconds S] [--status]
   qrsim --scenario NAME [--seconds S] [--seed N] [--vehicle FILE] [--param NAME=VALUE]...
-        [--no-noise] [--trace FILE.csv] [--json]
+        [--no-noise] [--trace FILE.csv] [--record FILE.csv] [--json]
+  qrsim --replay IN.csv --out OUT.csv [--double]
   qrsim --list
   qrsim --help
 
@@ -42,7 +46,12 @@ rate) flying in a simulated IN4073-class quadrotor.
   --no-noise       scenario: perfect sensors (no noise, bias, scale error or vibration)
   --trace FILE     scenario: write every control period to FILE as CSV (truth and estimated
                    attitude and rates, set-points, engines, position, battery)
+  --record FILE    scenario: write the QR's sensor samples and sticks, from its first
+                   calibration tick on, in the replay's input format (docs/replay.md)
   --json           scenario: print the figures as one JSON object on one line
+  --replay IN      run a recording through the flight chain tick by tick (test mode) and write
+                   every tick's estimates, controller outputs and engines to --out OUT
+                   (docs/replay.md); --double runs the double-precision reference chain
   --list           the scenarios and what they do
 
 )";
@@ -61,7 +70,9 @@ bool parse_number(const char* text, double& out) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  enum class Command { none, serve, scenario, list, help } command = Command::none;
+  enum class Command { none, serve, scenario, replay, list, help } command = Command::none;
+  std::string replay_in, replay_out;
+  qr::tools::ReplayOptions replay_options;
   qrsim::ScenarioOptions scenario;
   qrsim::ServeOptions serve;
   bool json = false;
@@ -118,6 +129,17 @@ int main(int argc, char** argv) {
       const char* v = value("FILE");
       if (v == nullptr) return usage_error("--trace needs a file");
       scenario.trace_path = v;
+    } else if (arg == "--record") {
+      const char* v = value("FILE");
+      if (v == nullptr) return usage_error("--record needs a file");
+      scenario.record_path = v;
+    } else if (arg == "--replay" || arg == "--out") {
+      const char* v = value("FILE");
+      if (v == nullptr) return usage_error(arg + " needs a file");
+      (arg == "--replay" ? replay_in : replay_out) = v;
+      if (arg == "--replay") command = Command::replay;
+    } else if (arg == "--double") {
+      replay_options.arithmetic = qr::tools::ReplayArithmetic::reference_double;
     } else if (arg == "--param") {
       const char* v = value("NAME=VALUE");
       const char* eq = v == nullptr ? nullptr : std::strchr(v, '=');
@@ -143,6 +165,9 @@ int main(int argc, char** argv) {
     case Command::help:
       std::printf(kUsage, static_cast<unsigned>(qr::kControlHz));
       return command == Command::help ? 0 : 2;
+    case Command::replay:
+      if (replay_out.empty()) return usage_error("--replay needs --out OUT.csv");
+      return qr::tools::run_replay(replay_in.c_str(), replay_out.c_str(), std::cerr, replay_options);
     case Command::list:
       for (const qrsim::ScenarioSpec& s : qrsim::scenarios()) {
         std::printf("%-12s %4.0f s  %s\n", s.name, s.default_seconds, s.summary);

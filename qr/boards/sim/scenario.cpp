@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <ctime>
 #include <cstdio>
 #include <numbers>
 
@@ -10,6 +11,7 @@
 #include <qr/boards/sim/pilot.hpp>
 #include <qr/boards/sim/scoring.hpp>
 #include <qr/boards/sim/sim_qr.hpp>
+#include <qr/tools/replay.hpp>
 
 namespace qrsim {
 namespace {
@@ -59,6 +61,7 @@ double ScenarioResult::figure(const std::string& name) const {
 
 ScenarioResult run_scenario(const ScenarioOptions& options) {
   const auto wall_start = std::chrono::steady_clock::now();
+  const std::clock_t cpu_start = std::clock();
   ScenarioResult result;
   result.scenario = options.name;
   result.vehicle = options.vehicle_name;
@@ -88,12 +91,15 @@ ScenarioResult run_scenario(const ScenarioOptions& options) {
   double panic_at = kNotMeasured, safe_at = kNotMeasured;
   int calibration_requests = 0;
   Record rec;
+  FILE* record = options.record_path.empty() ? nullptr : std::fopen(options.record_path.c_str(), "w");
+  if (record != nullptr) std::fprintf(record, "%s\n", qr::tools::replay_input_header().c_str());
+  bool recording = false;
   FILE* trace = options.trace_path.empty() ? nullptr : std::fopen(options.trace_path.c_str(), "w");
   if (trace != nullptr) {
     std::fprintf(trace,
                  "t_s,mode,roll_deg,pitch_deg,yaw_deg,roll_est_deg,pitch_est_deg,yaw_est_deg,roll_sp_deg,pitch_sp_deg,"
                  "p_rad_s,q_rad_s,r_rad_s,p_est_rad_s,q_est_rad_s,r_est_rad_s,engine0,engine1,engine2,engine3,"
-                 "height_m,north_m,east_m,battery_v\n");
+                 "height_m,north_m,east_m,battery_v,roll_est_e4,pitch_est_e4,yaw_est_e4\n");
   }
   const auto idle = static_cast<uint16_t>(qr->firmware.parameters().get(wire::ParamId::idle_level));
 
@@ -201,18 +207,27 @@ ScenarioResult run_scenario(const ScenarioOptions& options) {
       const sim::Euler e = sim::to_euler(ps.attitude);
       const auto& ch = qr->firmware.chain();
       const qr::EngineCommand& eng = qr->board.engines();
-      std::fprintf(trace, "%.3f,%u,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%u,%u,%u,%u,%.3f,%.3f,%.3f,%.3f\n",
+      std::fprintf(trace, "%.3f,%u,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%u,%u,%u,%u,%.3f,%.3f,%.3f,%.3f,%d,%d,%d\n",
                    t, mode, e.roll * kDeg, e.pitch * kDeg, e.yaw * kDeg, ch.roll_e4() * 1e-4 * kDeg,
                    ch.pitch_e4() * 1e-4 * kDeg, ch.yaw_e4() * 1e-4 * kDeg, ch.roll_setpoint_e4() * 1e-4 * kDeg,
                    ch.pitch_setpoint_e4() * 1e-4 * kDeg, ps.rate.x, ps.rate.y, ps.rate.z, ch.p_e3() * 1e-3,
                    ch.q_e3() * 1e-3, ch.r_e3() * 1e-3, eng.value[0], eng.value[1], eng.value[2], eng.value[3],
-                   -ps.position.z, ps.position.x, ps.position.y, plant.battery_volts());
+                   -ps.position.z, ps.position.x, ps.position.y, plant.battery_volts(), ch.roll_e4(), ch.pitch_e4(),
+                   ch.yaw_e4());
     }
     if (t >= t_end) break;
+    recording = recording || mode == static_cast<uint8_t>(wire::Mode::calibration);
     if (!qr->tick()) break;  // the firmware stopped
+    if (record != nullptr && recording) {
+      const qr::SensorSample& in = qr->board.read_sensors();  // what this tick ran on
+      const wire::Control& c = qr->board.controls_seen_by_qr();
+      std::fprintf(record, "%u,%d,%d,%d,%d,%d,%d,%u,%u,%d,%d,%d\n", qr->board.now_us(), in.gyro[0], in.gyro[1],
+                   in.gyro[2], in.accel[0], in.accel[1], in.accel[2], in.battery_mv, c.lift, c.roll, c.pitch, c.yaw);
+    }
   }
 
   if (trace != nullptr) std::fclose(trace);
+  if (record != nullptr) std::fclose(record);
 
   // ---- figures ----
   const double sim_seconds = static_cast<double>(qr->world.now_us()) * 1e-6;
@@ -226,6 +241,9 @@ ScenarioResult run_scenario(const ScenarioOptions& options) {
   f.push_back({"sim_seconds", sim_seconds});
   f.push_back({"wall_seconds", wall});
   f.push_back({"speedup", sim_seconds / wall});
+  // CPU time of this process: on a machine busy with other work the wall figures understate
+  // what the simulator does; this one does not.
+  f.push_back({"cpu_seconds", static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC});
   f.push_back({"control_hz", static_cast<double>(qr::kControlHz)});
   f.push_back({"seed", static_cast<double>(options.seed)});
   f.push_back({"att_rms_deg_truth", rms(rec.att_err, t0, t_end)});

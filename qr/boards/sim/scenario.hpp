@@ -59,6 +59,9 @@ struct ScenarioOptions {
   bool sensor_noise = true;  // false: perfect IMU (no noise, bias, scale error or vibration)
   std::vector<std::pair<wire::ParamId, int32_t>> parameters;  // uploaded by the pilot before flight
   std::string trace_path;  // non-empty: every control period as a CSV line (truth, estimate, engines)
+  // Non-empty: the QR's sensor samples and sticks from its first calibration tick on, in the
+  // replay's input format (docs/replay.md), so `qrsim --replay` can run the flight again.
+  std::string record_path;
 };
 
 struct Figure {

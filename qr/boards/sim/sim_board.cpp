@@ -2,6 +2,8 @@
 
 #include <thread>
 
+#include <common/payload_codec.hpp>
+
 namespace qrsim {
 
 qr::SensorSample to_sensor_sample(const sim::SensorReading& reading) {
@@ -37,6 +39,15 @@ uint32_t SimBoard::wait_kick(uint32_t seen) {
   world_.advance_to(static_cast<uint64_t>(kick) * qr::kPeriodUs);
   sample_ = to_sensor_sample(world_.sample());
   return kick;
+}
+
+bool SimBoard::serial_read(uint8_t& byte) {
+  if (!to_qr_.receive(world_.now_us() * 1000, byte)) return false;
+  rx_probe_.push(byte, [this](const wire::Frame& frame) {
+    wire::Control c;
+    if (frame.type == wire::Control::kType && wire::decode(frame, c) && c.valid()) controls_seen_ = c;
+  });
+  return true;
 }
 
 uint32_t SimBoard::cycles() const {
