@@ -1,13 +1,11 @@
 #include <pc/core/console.hpp>
 
-#include <algorithm>
 #include <cstdio>
 
 #include <pc/core/gain_steps.hpp>
 #include <pc/core/hex_log.hpp>
 #include <pc/core/key_map.hpp>
 #include <pc/core/mode_names.hpp>
-#include <pc/core/param_file.hpp>
 #include <pc/core/telemetry_csv.hpp>
 
 namespace qrterm {
@@ -66,13 +64,6 @@ std::string task_name(uint8_t number) {
   return number < kCount ? kTaskNames[number] : "task " + std::to_string(number);
 }
 
-uint8_t id_byte(wire::ParamId id) { return static_cast<uint8_t>(id); }
-
-std::string param_text(wire::ParamId id, int32_t raw) {
-  const wire::ParameterSpec* spec = wire::find_parameter(id_byte(id));
-  return std::string(spec->name) + " = " + format_real(*spec, raw);
-}
-
 }  // namespace
 
 // Every message from the QR, decoded, lands in one of these.
@@ -85,19 +76,7 @@ struct Console::Receiver {
   void operator()(const wire::Nack& nack) {
     console.on_answer(nack.type, nack.reason, console.link_.answer(nack, console.now_ms_));
   }
-  void operator()(const wire::ParamReport& report) {
-    const wire::ParameterSpec* spec = wire::find_parameter(report.id);
-    if (spec == nullptr) return;
-    std::optional<int32_t>& reported = console.reported_[report.id - 1];
-    const bool news = reported != report.value;
-    reported = report.value;
-    const bool on_its_way = console.uploading_ == spec->id ||
-                            std::find(console.upload_.begin(), console.upload_.end(), spec->id) != console.upload_.end();
-    if (news && !on_its_way && report.value != console.params_.get(spec->id)) {
-      console.note(Severity::warning, "the QR has " + param_text(spec->id, report.value) + ", the console " +
-                                          format_real(*spec, console.params_.get(spec->id)));
-    }
-  }
+  void operator()(const wire::ParamReport& report) { console.parameters_.on_report(report); }
   void operator()(const wire::DebugText& text) {
     for (std::string& line : console.debug_text_.add(text)) console.note(Severity::qr, line);
   }
@@ -119,7 +98,7 @@ Console::Console(ConsoleLog& log, ConsoleFiles files, const Setup& setup, uint32
       start_ms_(now_ms),
       now_ms_(now_ms),
       link_(now_ms, setup.first_seq),
-      params_(setup.params),
+      parameters_(setup.params, [this](Severity severity, const std::string& text) { note(severity, text); }),
       downloader_(LogDownloader::Hooks{
           [this](const wire::LogDownload& request) { link_.request(request, now_ms_); },
           [this](Severity severity, const std::string& text) { note(severity, text); },
@@ -158,7 +137,7 @@ void Console::act(Action action, uint32_t now_ms) {
   if (exit_ != ExitState::running) return;
   if (action == Action::exit) return request_exit(now_ms);
   if (controls_.apply(action)) return;
-  if (find_gain_step(action) != nullptr) return step_gain(action);
+  if (const GainStep* step = find_gain_step(action)) return parameters_.step(*step);
   for (const ModeKey& mode_key : kModeKeys) {
     if (mode_key.action == action) return request_mode(mode_key.mode);
   }
@@ -232,19 +211,6 @@ void Console::send_control() {
   link_.send_control(last_control_, now_ms_);
 }
 
-void Console::step_gain(Action action) {
-  const GainStep& step = *find_gain_step(action);
-  const int32_t before = params_.get(step.id);
-  const int32_t after = stepped(step, before);
-  if (after == before) {
-    note(Severity::warning, param_text(step.id, before) + " is at the end of its range");
-    return;
-  }
-  params_.set(id_byte(step.id), after);
-  note(Severity::info, param_text(step.id, after));
-  queue_upload(step.id);
-}
-
 void Console::print_tasks() {
   if (telemetry_.tasks.empty()) {
     note(Severity::warning, "no task figures from the QR yet");
@@ -256,10 +222,6 @@ void Console::print_tasks() {
     std::snprintf(line, sizeof line, "  %-14s %6u %6u %6u", task_name(number).c_str(), task.min, task.mean, task.max);
     note(Severity::info, line);
   }
-}
-
-void Console::queue_upload(wire::ParamId id) {
-  if (std::find(upload_.begin(), upload_.end(), id) == upload_.end()) upload_.push_back(id);
 }
 
 void Console::joystick_moved(const Sticks& sticks, bool position_known, uint32_t now_ms) {
@@ -377,8 +339,7 @@ void Console::on_link_state(LinkState state) {
   if (state == LinkState::up) {
     note(Severity::info, before == LinkState::lost ? "link back" : "link up");
     // The QR may have restarted with its defaults: every parameter goes up again.
-    for (const wire::ParameterSpec& spec : wire::kParameterTable) queue_upload(spec.id);
-    upload_announced_ = false;
+    parameters_.send_all();
   } else if (state == LinkState::lost) {
     note(Severity::error, "LINK LOST: no valid frame from the QR for " + std::to_string(kLinkLostAfterMs / 1000) + " s");
   }
@@ -425,22 +386,7 @@ void Console::tick(uint32_t now_ms) {
   if (state != LinkState::closed && link_.control_due(now_ms)) send_control();
   link_.poll(now_ms, [this](const wire::ResendEvent& event) { on_gave_up(event); });
 
-  if (!link_.pending(wire::MessageType::param_set)) uploading_.reset();
-  if (state == LinkState::up && exit_ == ExitState::running && !uploading_) {
-    if (!upload_.empty()) {
-      if (!upload_announced_ && upload_.size() > 1) note(Severity::info, "sending " + std::to_string(upload_.size()) + " parameters");
-      upload_announced_ = true;
-      uploading_ = upload_.front();
-      upload_.pop_front();
-      link_.request(wire::ParamSet{0, id_byte(*uploading_), params_.get(*uploading_)}, now_ms);
-      readback_owed_ = true;
-    } else if (readback_owed_) {
-      // The QR's reports are what the screen shows as confirmed; asking for all of them once
-      // the upload is done checks every value, whether or not the QR reports after each set.
-      readback_owed_ = false;
-      link_.request(wire::ParamGet{0, wire::kAllParameters}, now_ms);
-    }
-  }
+  if (state == LinkState::up && exit_ == ExitState::running) parameters_.tick(link_, now_ms);
 
   downloader_.tick(now_ms);
   if (exit_ == ExitState::waiting_for_qr && now_ms - exit_started_ms_ >= kExitWaitMs) {
@@ -448,9 +394,5 @@ void Console::tick(uint32_t now_ms) {
   }
 }
 
-std::optional<int32_t> Console::reported(wire::ParamId id) const {
-  const size_t row = static_cast<size_t>(id_byte(id)) - 1;
-  return row < wire::kParameterCount ? reported_[row] : std::nullopt;
-}
 
 }  // namespace qrterm

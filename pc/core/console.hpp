@@ -7,7 +7,6 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include <deque>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -24,6 +23,7 @@
 #include <pc/core/key.hpp>
 #include <pc/core/link_session.hpp>
 #include <pc/core/log_downloader.hpp>
+#include <pc/core/parameter_sync.hpp>
 #include <pc/core/pilot_controls.hpp>
 #include <pc/core/telemetry_model.hpp>
 
@@ -85,14 +85,14 @@ class Console {
   const TelemetryModel& telemetry() const { return telemetry_; }
   const PilotControls& controls() const { return controls_; }
   const wire::Control& last_control() const { return last_control_; }
-  const wire::ParameterValues& params() const { return params_; }
-  std::optional<int32_t> reported(wire::ParamId id) const;
+  const wire::ParameterValues& params() const { return parameters_.wanted(); }
+  std::optional<int32_t> reported(wire::ParamId id) const { return parameters_.reported(id); }
   JoystickState joystick_state() const { return joystick_; }
   bool joystick_position_known() const { return joystick_known_; }
   bool help_visible() const { return help_; }
   bool exiting() const { return exit_ != ExitState::running; }
   std::string download_status() const { return downloader_.status(); }
-  size_t parameters_to_send() const { return upload_.size(); }
+  size_t parameters_to_send() const { return parameters_.to_send(); }
   const ConsoleLog& log() const { return log_; }
   // Frames with a good check whose fields were out of range, and frames of types the console has
   // no use for.
@@ -108,9 +108,7 @@ class Console {
   void abort(const std::string& why);
   void request_mode(wire::Mode mode);
   void send_control();
-  void step_gain(Action action);
   void print_tasks();
-  void queue_upload(wire::ParamId id);
   void finish_exit(Severity severity, const std::string& why, bool confirmed);
   void on_frame(const wire::Frame& frame);
   // An ack (reason none) or a nack, already matched against the request it answers.
@@ -131,12 +129,7 @@ class Console {
   DebugTextAssembler debug_text_;
   PilotControls controls_;
   wire::Control last_control_;
-  wire::ParameterValues params_;
-  std::optional<int32_t> reported_[wire::kParameterCount];
-  std::deque<wire::ParamId> upload_;
-  std::optional<wire::ParamId> uploading_;  // the param_set waiting for its answer
-  bool upload_announced_ = false;
-  bool readback_owed_ = false;  // parameters went up: read them all back to check
+  ParameterSync parameters_;
   LogDownloader downloader_;
   JoystickState joystick_;
   bool joystick_known_ = false;

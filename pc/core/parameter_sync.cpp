@@ -1,0 +1,83 @@
+#include <pc/core/parameter_sync.hpp>
+
+#include <algorithm>
+
+#include <common/requests.hpp>
+#include <pc/core/param_file.hpp>
+
+namespace qrterm {
+namespace {
+
+uint8_t id_byte(wire::ParamId id) { return static_cast<uint8_t>(id); }
+
+// Ids are 1..kParameterCount in table order (the wire's parameter table test checks it).
+size_t row_of(wire::ParamId id) { return static_cast<size_t>(id_byte(id)) - 1; }
+
+}  // namespace
+
+std::string param_text(wire::ParamId id, int32_t raw) {
+  const wire::ParameterSpec* spec = wire::find_parameter(id_byte(id));
+  return std::string(spec->name) + " = " + format_real(*spec, raw);
+}
+
+std::optional<int32_t> ParameterSync::reported(wire::ParamId id) const {
+  const size_t row = row_of(id);
+  return row < wire::kParameterCount ? reported_[row] : std::nullopt;
+}
+
+void ParameterSync::queue(wire::ParamId id) {
+  if (std::find(queue_.begin(), queue_.end(), id) == queue_.end()) queue_.push_back(id);
+}
+
+bool ParameterSync::on_its_way(wire::ParamId id) const {
+  return in_flight_ == id || std::find(queue_.begin(), queue_.end(), id) != queue_.end();
+}
+
+void ParameterSync::send_all() {
+  for (const wire::ParameterSpec& spec : wire::kParameterTable) queue(spec.id);
+  announced_ = false;
+}
+
+void ParameterSync::step(const GainStep& step) {
+  const int32_t before = wanted_.get(step.id);
+  const int32_t after = stepped(step, before);
+  if (after == before) {
+    note_(Severity::warning, param_text(step.id, before) + " is at the end of its range");
+    return;
+  }
+  wanted_.set(id_byte(step.id), after);
+  note_(Severity::info, param_text(step.id, after));
+  queue(step.id);
+}
+
+void ParameterSync::on_report(const wire::ParamReport& report) {
+  const wire::ParameterSpec* spec = wire::find_parameter(report.id);
+  if (spec == nullptr) return;
+  std::optional<int32_t>& reported = reported_[row_of(spec->id)];
+  const bool news = reported != report.value;
+  reported = report.value;
+  // A difference while a value is on its way is the upload not done yet; after it, the QR holds
+  // something the pilot did not ask for (it refused it, or changed it itself).
+  const int32_t wanted = wanted_.get(spec->id);
+  if (news && !on_its_way(spec->id) && report.value != wanted) {
+    note_(Severity::warning, "the QR has " + param_text(spec->id, report.value) + ", the console " + format_real(*spec, wanted));
+  }
+}
+
+void ParameterSync::tick(LinkSession& link, uint32_t now_ms) {
+  if (!link.pending(wire::MessageType::param_set)) in_flight_.reset();
+  if (in_flight_) return;
+  if (!queue_.empty()) {
+    if (!announced_ && queue_.size() > 1) note_(Severity::info, "sending " + std::to_string(queue_.size()) + " parameters");
+    announced_ = true;
+    in_flight_ = queue_.front();
+    queue_.pop_front();
+    link.request(wire::ParamSet{0, id_byte(*in_flight_), wanted_.get(*in_flight_)}, now_ms);
+    read_back_owed_ = true;
+  } else if (read_back_owed_) {
+    read_back_owed_ = false;
+    link.request(wire::ParamGet{0, wire::kAllParameters}, now_ms);
+  }
+}
+
+}  // namespace qrterm

@@ -1,0 +1,60 @@
+// The console's side of the QR's parameters: the values the pilot wants (from the parameter file
+// and the gain keys), the values the QR reports in force, and the upload that brings the QR to
+// the wanted ones. One param_set at a time (the resend queue keeps one request per type, and a
+// newer one would replace the last), then one param_get of all of them, so every value on the
+// screen is one the QR has confirmed, whether or not it reports after each set.
+#pragma once
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include <deque>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include <common/parameter_table.hpp>
+#include <common/replies.hpp>
+#include <pc/core/console_log.hpp>
+#include <pc/core/gain_steps.hpp>
+#include <pc/core/link_session.hpp>
+
+namespace qrterm {
+
+class ParameterSync {
+ public:
+  using Note = std::function<void(Severity, const std::string&)>;
+
+  ParameterSync(const wire::ParameterValues& wanted, Note note) : wanted_(wanted), note_(std::move(note)) {}
+
+  const wire::ParameterValues& wanted() const { return wanted_; }
+  std::optional<int32_t> reported(wire::ParamId id) const;
+  size_t to_send() const { return queue_.size() + (in_flight_ ? 1 : 0); }
+
+  // Every parameter goes up (the link came up: the QR may have restarted with its defaults).
+  void send_all();
+  // A gain key: one step of its parameter, sent at once.
+  void step(const GainStep& step);
+  // A value the QR says is in force.
+  void on_report(const wire::ParamReport& report);
+
+  // Sends the next param_set when the last one is answered, and the read-back after the last.
+  void tick(LinkSession& link, uint32_t now_ms);
+
+ private:
+  void queue(wire::ParamId id);
+  bool on_its_way(wire::ParamId id) const;
+
+  wire::ParameterValues wanted_;
+  Note note_;
+  std::optional<int32_t> reported_[wire::kParameterCount];
+  std::deque<wire::ParamId> queue_;
+  std::optional<wire::ParamId> in_flight_;  // the param_set waiting for its answer
+  bool announced_ = false;                  // "sending N parameters" said for this upload
+  bool read_back_owed_ = false;
+};
+
+// "p1 = 4.25": a parameter and a raw value in its real unit.
+std::string param_text(wire::ParamId id, int32_t raw);
+
+}  // namespace qrterm
