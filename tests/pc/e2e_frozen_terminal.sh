@@ -23,7 +23,7 @@ e2e_pane "$qrterm" --sim "$sim" --sim-arg --chatty --no-joystick --log-dir "$wor
 wait_for 'MODE +safe ' 30 "start"
 keys 2
 wait_for 'MODE +manual ' 3 "manual"
-qrterm_pid=$(pgrep -P "$("${tmux[@]}" display-message -p -t e2e '#{pane_pid}')" -x qrterm)
+qrterm_pid=$(cat "$work/qrterm.pid")
 [[ $(cat "/proc/$qrterm_pid/wchan" 2>/dev/null) =~ [a-z] ]] || { echo "e2e: skipped: /proc/PID/wchan shows nothing here"; exit 77; }
 
 tmux_pid=$("${tmux[@]}" display-message -p '#{pid}')

@@ -17,13 +17,14 @@ e2e_cleanup() {
 }
 
 # Runs the command (qrterm and its arguments) in an 80x24 pane. The pane's shell records the
-# terminal's settings before and after, and the exit status, then stays open for the capture.
+# terminal's settings before and after, the command's pid ($work/qrterm.pid) and exit status,
+# then stays open for the capture.
 e2e_pane() {
   local command
   printf -v command '%q ' "$@"
   {
     echo "stty -g >'$work/stty.before'"
-    echo "$command"
+    echo "bash -c 'echo \$\$ >\"\$0\"; exec \"\$@\"' '$work/qrterm.pid' $command"
     echo "echo \$? >'$work/status'"
     echo "stty -g >'$work/stty.after'"
     echo "echo 'QRTERM ENDED'"
