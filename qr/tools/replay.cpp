@@ -12,6 +12,7 @@
 
 #include <common/mode.hpp>
 #include <qr/core/chain/flight_chain.hpp>
+#include <qr/core/chain/replay_tick.hpp>
 #include <qr/tools/real_numbers.hpp>
 
 namespace qr::tools {
@@ -113,51 +114,6 @@ std::string parse_row(std::string_view line, Row& row) {
 
 // ---- output ----
 
-template <class Chain>
-struct Column {
-  const char* name;
-  int32_t (*value)(const Chain&);
-};
-
-// The output columns after time_us and mode, in the order the host/devboard checksum folds them
-// (tests/chain/chain_checksum.hpp), so a replay's output can be checked against it.
-template <class Chain>
-constexpr Column<Chain> kColumns[] = {
-    {"roll_e4", [](const Chain& c) -> int32_t { return c.roll_e4(); }},
-    {"pitch_e4", [](const Chain& c) -> int32_t { return c.pitch_e4(); }},
-    {"yaw_e4", [](const Chain& c) -> int32_t { return c.yaw_e4(); }},
-    {"p_e3", [](const Chain& c) -> int32_t { return c.p_e3(); }},
-    {"q_e3", [](const Chain& c) -> int32_t { return c.q_e3(); }},
-    {"r_e3", [](const Chain& c) -> int32_t { return c.r_e3(); }},
-    {"roll_sp_e4", [](const Chain& c) -> int32_t { return c.roll_setpoint_e4(); }},
-    {"pitch_sp_e4", [](const Chain& c) -> int32_t { return c.pitch_setpoint_e4(); }},
-    {"yaw_rate_sp_e3", [](const Chain& c) -> int32_t { return c.yaw_rate_setpoint_e3(); }},
-    {"p_sp_e3", [](const Chain& c) -> int32_t { return c.p_setpoint_e3(); }},
-    {"q_sp_e3", [](const Chain& c) -> int32_t { return c.q_setpoint_e3(); }},
-    {"tilt_mrad", [](const Chain& c) -> int32_t { return c.tilt_mrad(); }},
-    {"roll_acc_e4", [](const Chain& c) -> int32_t { return c.roll_from_accel_e4(); }},
-    {"pitch_acc_e4", [](const Chain& c) -> int32_t { return c.pitch_from_accel_e4(); }},
-    {"p_bias_e6", [](const Chain& c) -> int32_t { return c.p_bias_e6(); }},
-    {"q_bias_e6", [](const Chain& c) -> int32_t { return c.q_bias_e6(); }},
-    {"gyro_f_x", [](const Chain& c) -> int32_t { return c.gyro_filtered(0); }},
-    {"gyro_f_y", [](const Chain& c) -> int32_t { return c.gyro_filtered(1); }},
-    {"gyro_f_z", [](const Chain& c) -> int32_t { return c.gyro_filtered(2); }},
-    {"accel_f_x", [](const Chain& c) -> int32_t { return c.accel_filtered(0); }},
-    {"accel_f_y", [](const Chain& c) -> int32_t { return c.accel_filtered(1); }},
-    {"accel_f_z", [](const Chain& c) -> int32_t { return c.accel_filtered(2); }},
-    {"moment_roll_e3", [](const Chain& c) -> int32_t { return c.moments_e3().roll; }},
-    {"moment_pitch_e3", [](const Chain& c) -> int32_t { return c.moments_e3().pitch; }},
-    {"moment_yaw_e3", [](const Chain& c) -> int32_t { return c.moments_e3().yaw; }},
-    {"applied_roll_e3", [](const Chain& c) -> int32_t { return c.applied_moments_e3().roll; }},
-    {"applied_pitch_e3", [](const Chain& c) -> int32_t { return c.applied_moments_e3().pitch; }},
-    {"applied_yaw_e3", [](const Chain& c) -> int32_t { return c.applied_moments_e3().yaw; }},
-    {"ae0", [](const Chain& c) -> int32_t { return c.engines().value[0]; }},
-    {"ae1", [](const Chain& c) -> int32_t { return c.engines().value[1]; }},
-    {"ae2", [](const Chain& c) -> int32_t { return c.engines().value[2]; }},
-    {"ae3", [](const Chain& c) -> int32_t { return c.engines().value[3]; }},
-    {"calibrated", [](const Chain& c) -> int32_t { return c.calibrated() ? 1 : 0; }},
-};
-
 void append(std::string& line, int64_t v) {
   char buffer[24];
   const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, v);
@@ -165,7 +121,6 @@ void append(std::string& line, int64_t v) {
   line.append(buffer, end);
 }
 
-// The tick as the flight task sets run it: calibration first, then full control.
 template <class Chain>
 int fly(const std::vector<Row>& rows, std::ostream& out) {
   Chain chain;
@@ -173,22 +128,12 @@ int fly(const std::vector<Row>& rows, std::ostream& out) {
   bool calibrated = false;
   std::string line;
   for (const Row& row : rows) {
-    chain.set_pilot(row.sticks);
-    chain.filter(row.sample);
-    const wire::Mode mode = calibrated ? wire::Mode::full_control : wire::Mode::calibration;
-    if (!calibrated) {
-      calibrated = chain.calibrate();
-    } else {
-      chain.estimate();
-      chain.control_attitude();
-      chain.control_yaw();
-      chain.mix();
-    }
+    const wire::Mode mode = chain::replay_tick(chain, row.sample, row.sticks, calibrated);
     line.clear();
     append(line, row.time_us);
     line += ',';
     append(line, static_cast<int>(mode));
-    for (const Column<Chain>& column : kColumns<Chain>) {
+    for (const auto& column : chain::kReplayColumns<Chain>) {
       line += ',';
       append(line, column.value(chain));
     }
@@ -239,7 +184,7 @@ const std::string& replay_input_header() {
 const std::string& replay_output_header() {
   static const std::string header = [] {
     std::vector<std::string> names = {"time_us", "mode"};
-    for (const auto& column : kColumns<FixedChain>) names.push_back(column.name);
+    for (const auto& column : chain::kReplayColumns<FixedChain>) names.push_back(column.name);
     return join(names);
   }();
   return header;
