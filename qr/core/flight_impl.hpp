@@ -31,6 +31,7 @@ template <class Chain>
 struct Flight<Chain>::RequestHandler {
   Flight& f;
   NackReason answer = NackReason::none;
+  wire::ParamReport report{};  // id 0: nothing to report
 
   void operator()(const wire::Control& c) { f.controls_ = ControlInput{c.lift, c.roll, c.pitch, c.yaw}; }
   void operator()(const wire::ModeChange& m) {
@@ -38,7 +39,9 @@ struct Flight<Chain>::RequestHandler {
   }
   void operator()(const wire::ParamSet& p) {
     answer = f.params_.set(p.id, p.value);
-    if (answer == NackReason::none) f.apply_parameters();
+    if (answer != NackReason::none) return;
+    f.apply_parameters();
+    report = wire::ParamReport{p.id, p.value};  // after the ack: the value now in force
   }
   void operator()(const wire::ParamGet& g) {
     if (g.id == wire::kAllParameters) {
@@ -110,6 +113,7 @@ void Flight<Chain>::on_frame(const wire::Frame& frame) {
                                                                               : NackReason::not_supported;
   dedup_.record(frame, answer, uptime_ms_);
   send(wire::reply_frame(frame.type, admission.seq, answer));
+  if (handler.report.id != 0) send(wire::encode(handler.report));
 }
 
 template <class Chain>

@@ -219,6 +219,11 @@ TEST_F(FlightTest, ParameterSetIsRangeCheckedAppliedAndReported) {
   ASSERT_EQ(nacks.size(), 2u);
   EXPECT_EQ(nacks[0].reason, wire::NackReason::bad_value);
   EXPECT_EQ(nacks[1].reason, wire::NackReason::unknown_parameter);
+  const auto after_set = got<wire::ParamReport>();  // the value now in force follows the ack
+  ASSERT_EQ(after_set.size(), 1u);
+  EXPECT_EQ(after_set[0].id, static_cast<uint8_t>(wire::ParamId::link_timeout_ms));
+  EXPECT_EQ(after_set[0].value, 500);
+  received.clear();
 
   send(wire::ParamGet{++seq, wire::kAllParameters});
   run_ms(50);
