@@ -136,7 +136,8 @@ constexpr LogPart<Record> make_log_part(const Record& record, uint8_t part) {
   if (part >= Record::kParts) return out;
   uint8_t flat[size_t{Record::kParts} * kLogPartDataBytes] = {};
   write_fields(record, flat, sizeof flat);
-  for (size_t i = 0; i < kLogPartDataBytes; ++i) out.data[i] = flat[size_t{part} * kLogPartDataBytes + i];
+  const size_t from = static_cast<size_t>(part) * kLogPartDataBytes;
+  for (size_t i = 0; i < kLogPartDataBytes; ++i) out.data[i] = flat[from + i];
   return out;
 }
 
