@@ -14,9 +14,12 @@ Recording::Recording(const uint8_t* bytes) {
     if (bytes[i] != kRecordingMagic[i]) return;
   }
   if (u16(bytes + 4) != kRecordingVersion || u16(bytes + 6) != kRecordBytes) return;
+  const uint32_t rate = u32(bytes + 12);
+  if (rate == 0 || 1000000u % rate != 0) return;
   records_ = bytes + kRecordingHeaderBytes;
   count_ = u32(bytes + 8);
-  rate_hz_ = u32(bytes + 12);
+  rate_hz_ = rate;
+  start_us_ = u32(bytes + 16);
 }
 
 RecordedTick Recording::at(uint32_t index) const {
