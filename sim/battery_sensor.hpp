@@ -11,7 +11,7 @@ namespace sim {
 
 class BatterySensor {
  public:
-  BatterySensor(const VehicleParams& vehicle, Random random)
+  BatterySensor(const VehicleParams& vehicle, const Random& random)
       : random_(random), noise_mv_(vehicle.battery_sense_noise_mv), lsb_mv_(vehicle.battery_sense_lsb_mv) {}
 
   uint16_t read_mv(double volts);

@@ -10,16 +10,20 @@ namespace {
 // rest does not chatter between sticking and slipping from one step to the next.
 constexpr double kStickSpeed = 0.02;  // m/s
 
-}  // namespace
-
-GroundContact::GroundContact(const VehicleParams& v)
-    : stiffness_(v.contact_stiffness), damping_(v.contact_damping), friction_(v.ground_friction) {
+std::array<Vec3, kContactPoints> contact_points(const VehicleParams& v) {
   const double r = v.foot_radius_m, d = v.foot_depth_m, l = v.arm_m, h = -v.hub_height_m;
-  points_ = {{
+  return {{
       {r, 0, d}, {0, r, d}, {-r, 0, d}, {0, -r, d},  // feet
       {l, 0, h}, {0, l, h}, {-l, 0, h}, {0, -l, h},  // motor hubs
       {0, 0, -v.top_height_m},                       // battery on top
   }};
+}
+
+}  // namespace
+
+GroundContact::GroundContact(const VehicleParams& v)
+    : stiffness_(v.contact_stiffness), damping_(v.contact_damping), friction_(v.ground_friction),
+      points_(contact_points(v)) {
   for (const Vec3& point : points_) reach_ = std::max(reach_, norm(point));
 }
 

@@ -23,7 +23,7 @@ int16_t to_counts(double value, double counts_per_unit) {
   return static_cast<int16_t>(std::clamp(counts, -32768.0, 32767.0));
 }
 
-Imu::Imu(const VehicleParams& v, Random random)
+Imu::Imu(const VehicleParams& v, const Random& random)
     : random_(random), bandwidth_hz_(v.imu_bandwidth_hz),
       gyro_sigma_(v.gyro_noise_dps_rthz * std::sqrt(v.imu_bandwidth_hz) * kRadPerDeg),
       accel_sigma_(v.accel_noise_ug_rthz * 1e-6 * kStandardGravity * std::sqrt(v.imu_bandwidth_hz)) {

@@ -28,7 +28,7 @@ struct ImuReading {
 
 class Imu {
  public:
-  Imu(const VehicleParams& vehicle, Random random);
+  Imu(const VehicleParams& vehicle, const Random& random);
 
   // One sample of body rate `rate` (rad/s) and specific force `specific_force` (m/s²), with the
   // vibration at that instant.

@@ -23,7 +23,7 @@ class Random {
 
  private:
   uint64_t seed_;
-  uint64_t s_[4];
+  uint64_t s_[4] = {};
   bool has_spare_ = false;
   double spare_ = 0;
 };

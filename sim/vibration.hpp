@@ -25,7 +25,7 @@ class Vibration {
  public:
   // Each rotor and harmonic gets its own fixed phase offset (how the imbalance happens to sit
   // on that prop), drawn from `random`.
-  Vibration(const VehicleParams& vehicle, Random random);
+  Vibration(const VehicleParams& vehicle, Random random);  // a copy: drawing moves it
 
   // The vibration at rotor speeds `speed` (rad/s) and rotor angles `phase` (rad). Each rotor
   // adds, per harmonic h, an in-plane vector turning with the rotor (a rotating imbalance
