@@ -5,7 +5,7 @@ the figures themselves (they are reported, not asserted)."""
 import json
 import sys
 
-MODES = ["safe", "panic", "manual", "calibration", "yaw", "full"]
+MODES = ["safe", "panic", "manual", "calibration", "yaw", "full", "full-float"]
 
 
 def main():
@@ -16,8 +16,8 @@ def main():
         objects = [json.loads(line) for line in lines]
     except json.JSONDecodeError as e:
         sys.exit(f"malformed JSON line: {e}")
-    if not objects or "summary" not in objects[-1] or "full_tick_instr_mean" not in objects[-1]:
-        sys.exit("the last line must be the summary with full_tick_instr_mean")
+    if not objects or any(k not in objects[-1] for k in ("summary", "full_tick_instr_mean", "float_over_fixed")):
+        sys.exit("the last line must be the summary with full_tick_instr_mean and float_over_fixed")
     seen = {o.get("mode"): o for o in objects[:-1]}
     for mode in MODES:
         o = seen.get(mode)
