@@ -55,8 +55,9 @@ TEST(CsvWriter, SensorLogLineUnderItsHeader) {
   CsvWriter csv(out, qrterm::log_header(r));
   ASSERT_TRUE(csv.write(qrterm::log_row(r)));
   EXPECT_EQ(out.str(),
-            "line,time_us,gyro_x,gyro_y,gyro_z,accel_x,accel_y,accel_z,gyro_filtered_x,gyro_filtered_y,gyro_filtered_z,"
-            "accel_filtered_x,accel_filtered_y,accel_filtered_z,battery_mv\r\n"
+            "line,time_us,gyro_x_counts,gyro_y_counts,gyro_z_counts,accel_x_counts,accel_y_counts,accel_z_counts,"
+            "gyro_filtered_x_counts,gyro_filtered_y_counts,gyro_filtered_z_counts,"
+            "accel_filtered_x_counts,accel_filtered_y_counts,accel_filtered_z_counts,battery_mv\r\n"
             "1000,123456789,-12,7,300,250,-180,16384,-10,5,298,248,-177,16380,11850\r\n");
 }
 
@@ -84,6 +85,11 @@ TEST(CsvWriter, TelemetryLogLineUnderItsHeader) {
   std::ostringstream out;
   CsvWriter csv(out, qrterm::log_header(r));
   ASSERT_TRUE(csv.write(qrterm::log_row(r)));
+  EXPECT_EQ(out.str().substr(0, out.str().find("\r\n")),
+            "line,time_us,mode,flags,lift_sp_0to1000,roll_sp_1e-4rad,pitch_sp_1e-4rad,yaw_rate_sp_1e-3rad_s,"
+            "phi_1e-4rad,theta_1e-4rad,psi_1e-4rad,p_1e-3rad_s,q_1e-3rad_s,r_1e-3rad_s,"
+            "engine_front_0to1000,engine_right_0to1000,engine_back_0to1000,engine_left_0to1000,"
+            "loop_time_us,battery_mv,cpu_load_permille,deadline_misses");
   EXPECT_EQ(out.str().substr(out.str().find("\r\n") + 2), "17,5000000,5,3,450,-873,0,500,-850,12,31416,-20,3,495,400,410,395,405,612,11850,623,3\r\n");
 }
 
