@@ -16,7 +16,7 @@ using Firmware = qr::Flight<qr::FixedChain>;
 
 struct SimQr {
   SimQr(const sim::VehicleParams& vehicle, const sim::WorldConfig& config)
-      : world(vehicle, config), board(world), scheduler(board, firmware) {}
+      : world(vehicle, config), board(world), firmware(board.log_area()), scheduler(board, firmware) {}
 
   // One control period: the physics runs to the kick, then the firmware's tick.
   bool tick() { return scheduler.tick(); }
