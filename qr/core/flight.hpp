@@ -68,6 +68,8 @@ class Flight {
 
   // ---- read-outs for boards, tests and the simulator ----
   Mode mode() const { return safety_.mode(); }
+  // The pilot's input as of the last control frame this tick's link task read.
+  const ControlInput& controls() const { return controls_; }
   const SafetyMachine& safety() const { return safety_; }
   const Chain& chain() const { return chain_; }
   Chain& chain() { return chain_; }

@@ -220,7 +220,7 @@ ScenarioResult run_scenario(const ScenarioOptions& options) {
     if (!qr->tick()) break;  // the firmware stopped
     if (record != nullptr && recording) {
       const qr::SensorSample& in = qr->board.read_sensors();  // what this tick ran on
-      const wire::Control& c = qr->board.controls_seen_by_qr();
+      const qr::ControlInput& c = qr->firmware.controls();
       std::fprintf(record, "%u,%d,%d,%d,%d,%d,%d,%u,%u,%d,%d,%d\n", qr->board.now_us(), in.gyro[0], in.gyro[1],
                    in.gyro[2], in.accel[0], in.accel[1], in.accel[2], in.battery_mv, c.lift, c.roll, c.pitch, c.yaw);
     }

@@ -42,12 +42,7 @@ uint32_t SimBoard::wait_kick(uint32_t seen) {
 }
 
 bool SimBoard::serial_read(uint8_t& byte) {
-  if (!to_qr_.receive(world_.now_us() * 1000, byte)) return false;
-  rx_probe_.push(byte, [this](const wire::Frame& frame) {
-    wire::Control c;
-    if (frame.type == wire::Control::kType && wire::decode(frame, c) && c.valid()) controls_seen_ = c;
-  });
-  return true;
+  return to_qr_.receive(world_.now_us() * 1000, byte);
 }
 
 uint32_t SimBoard::cycles() const {

@@ -19,7 +19,6 @@
 #include <chrono>
 #include <vector>
 
-#include <common/frame_parser.hpp>
 #include <common/requests.hpp>
 #include <qr/boards/sim/serial_line.hpp>
 #include <qr/core/board.hpp>
@@ -64,10 +63,6 @@ class SimBoard {
   uint8_t leds() const { return leds_; }
   const qr::EngineCommand& engines() const { return engines_; }
   uint64_t bytes_to_qr_refused() const { return to_qr_.bytes_refused(); }
-  // The sticks of the last control frame among the bytes the QR has read: a probe on its receive
-  // line, with a parser of its own. The firmware reads every byte it takes in the same tick, so
-  // this is the control input its chain works with (for recordings that replay the flight).
-  const wire::Control& controls_seen_by_qr() const { return controls_seen_; }
 
  private:
   uint64_t wall_us() const;
@@ -75,8 +70,6 @@ class SimBoard {
   sim::World& world_;
   SerialLine to_qr_{1u << 20};  // the PC side's buffer: a USB serial adapter's, large
   SerialLine to_pc_{kTransmitBuffer};
-  wire::FrameParser rx_probe_{wire::Listen::pc_to_qr};
-  wire::Control controls_seen_{};
   qr::SensorSample sample_{};
   qr::EngineCommand engines_{};
   uint8_t leds_ = 0;
