@@ -47,7 +47,7 @@ void Pilot::step() {
 
   if (now_us >= next_control_us_) {
     next_control_us_ = now_us + wire::kControlPeriodMs * 1000;
-    send(wire::encode(wire::Control{sticks_.lift, sticks_.roll, sticks_.pitch, sticks_.yaw}));
+    send(wire::encode(sticks_));
   }
 }
 

@@ -15,12 +15,8 @@
 
 namespace qrsim {
 
-struct Sticks {
-  uint16_t lift = 0;
-  int16_t roll = 0;
-  int16_t pitch = 0;
-  int16_t yaw = 0;
-};
+// The pilot's sticks, as the control frame carries them.
+using Sticks = wire::Control;
 
 // What the console knows about the QR, from telemetry and replies.
 struct ConsoleView {
