@@ -37,10 +37,14 @@ def main():
         fail("no ack for mode_change seq 1 (manual)")
     print("ack for manual mode")
 
-    attitude = sum(1 for t, _ in frames_in(board.snapshot()) if t == TELEMETRY_ATTITUDE)
-    if attitude == 0:
-        fail("no telemetry")
-    print(f"telemetry_attitude frames so far: {attitude}")
+    deadline = time.monotonic() + 5
+    attitude = 0
+    while attitude < 10 and time.monotonic() < deadline:
+        attitude = sum(1 for t, _ in frames_in(board.snapshot()) if t == TELEMETRY_ATTITUDE)
+        time.sleep(0.05)
+    if attitude < 10:
+        fail(f"telemetry does not stream ({attitude} attitude frames in 5 s)")
+    print(f"telemetry streams: {attitude} attitude frames")
 
     board.send(frame(EXIT, [2]))
     if not wait_for(frame(ACK, [EXIT, 2]), 5):
