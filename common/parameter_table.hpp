@@ -29,6 +29,8 @@ enum class ParamId : uint8_t {
   panic_ramp_ms = 15,
   idle_level = 16,
   log_divider = 17,
+  roll_pitch_i = 18,
+  roll_pitch_d = 19,
 };
 
 struct ParameterSpec {
@@ -42,13 +44,15 @@ struct ParameterSpec {
   const char* meaning;
 };
 
-// Gains are in the units their controllers use: "engine units" are the 0..1000 engine scale.
+// Gains are in the units their controllers use: "engine units" are the 0..1000 engine scale;
+// "thrust units" are the mixer's per-engine thrust, 1000 = one engine at full speed
+// (qr/core/chain/engine_mixer.hpp), in which the controllers' moments are expressed.
 inline constexpr ParameterSpec kParameterTable[] = {
-    {ParamId::yaw_p, "yaw_p", 4, 0, 16000, 1600, "engine units per rad/s", "yaw rate controller gain"},
-    {ParamId::roll_pitch_p1, "p1", 8, 0, 5120, 1024, "1/s", "roll/pitch angle loop: rate set-point per rad of angle error"},
-    {ParamId::roll_pitch_p2, "p2", 4, 0, 16000, 800, "engine units per rad/s", "roll/pitch rate loop gain"},
-    {ParamId::kalman_c1, "c1", 0, 1, 65535, 256, "samples", "attitude filter: angle correction divisor"},
-    {ParamId::kalman_c2, "c2", 0, 1, 16777216, 1000000, "samples", "attitude filter: gyro bias correction divisor"},
+    {ParamId::yaw_p, "yaw_p", 4, 0, 16000, 4800, "thrust units per rad/s", "yaw rate controller gain"},
+    {ParamId::roll_pitch_p1, "p1", 8, 0, 5120, 1408, "1/s", "roll/pitch angle loop: rate set-point per rad of angle error"},
+    {ParamId::roll_pitch_p2, "p2", 4, 0, 16000, 2560, "thrust units per rad/s", "roll/pitch rate loop gain"},
+    {ParamId::kalman_c1, "c1", 0, 1, 65535, 8000, "samples", "attitude filter: angle correction divisor"},
+    {ParamId::kalman_c2, "c2", 0, 1, 1073741824, 256000000, "samples", "attitude filter: gyro bias correction divisor"},
     {ParamId::filter_cutoff_hz, "filter_cutoff", 0, 1, 250, 20, "Hz", "sensor low-pass cut-off"},
     {ParamId::telemetry_rate_hz, "telemetry_rate", 0, 1, 100, 50, "Hz", "fast telemetry group rate"},
     {ParamId::link_timeout_ms, "link_timeout", 0, 50, 2000, 250, "ms", "no valid frame for this long in flight: panic"},
@@ -61,6 +65,8 @@ inline constexpr ParameterSpec kParameterTable[] = {
     {ParamId::panic_ramp_ms, "panic_ramp", 0, 0, 10000, 1000, "ms", "panic: ramp from panic level to zero"},
     {ParamId::idle_level, "idle_level", 0, 0, 500, 180, "engine units", "lowest engine value while lift > 0 in flight"},
     {ParamId::log_divider, "log_divider", 0, 1, 1000, 10, "control periods", "write a log line every this many periods"},
+    {ParamId::roll_pitch_i, "roll_pitch_i", 4, 0, 16000, 1280, "thrust units per rad", "roll/pitch rate loop integral gain"},
+    {ParamId::roll_pitch_d, "roll_pitch_d", 8, 0, 5120, 1280, "thrust units per rad/s^2", "roll/pitch rate loop derivative gain (on the measured rate)"},
 };
 
 inline constexpr size_t kParameterCount = sizeof(kParameterTable) / sizeof(kParameterTable[0]);

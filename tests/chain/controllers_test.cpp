@@ -25,11 +25,13 @@ T to(double v) {
   }
 }
 
-// Defaults of the parameter table: p1 = 4 /s, p2 = 50 and yaw_p = 100 thrust units per rad/s.
+// The sign and saturation checks use plain P-P gains (p1 = 4 /s, p2 = 50 thrust units per
+// rad/s, no I or D: the IN4073 cascade), so their expected values are easy to read; the integral
+// and derivative have tests of their own below.
 template <class N>
-AttitudeController<N> tilt_controller(int32_t p1 = 1024, int32_t p2 = 800) {
+AttitudeController<N> tilt_controller(int32_t p1 = 1024, int32_t p2 = 800, int32_t i = 0, int32_t d = 0) {
   AttitudeController<N> c;
-  c.set_gains(p1, p2);
+  c.set_gains(p1, p2, i, d);
   return c;
 }
 template <class N>
@@ -111,6 +113,127 @@ TEST(Controllers, FixedFollowsDouble) {
   yaw.print(0x1p-17);
   EXPECT_LE(tilt.max(), tilt_bound);
   EXPECT_LE(yaw.max(), 0x1p-17);
+}
+
+// ---- the rate loop's integral and derivative ----
+
+using FAngle = F::Angle;
+using FRate = F::Rate;
+
+// I = 100 thrust units per rad (raw Q<4> 1600): a steady rate error of 0.1 rad/s adds
+// 100 x 0.1 = 10 thrust units per second to the moment, at 1 kHz and at 500 Hz alike.
+template <uint32_t Hz>
+void IntegralAddsTheRateErrorOverTime() {
+  AttitudeController<F, Hz> c;
+  c.set_gains(0, 800, 1600, 0);  // P1 = 0: the rate set-point is 0, the rate error is -rate
+  F::Thrust m{};
+  for (uint32_t n = 0; n < Hz; ++n) m = c.moment(FAngle{}, FAngle{}, test::quantise<FRate>(-0.1), true);
+  EXPECT_NEAR(c.integral().to_double(), 10.0, 1e-4);
+  EXPECT_NEAR(m.to_double(), 50 * 0.1 + 10.0, 1e-4);  // P2 x error + integral
+}
+TEST(Controllers, IntegralAddsTheRateErrorOverTimeAt1kHz) { IntegralAddsTheRateErrorOverTime<1000>(); }
+TEST(Controllers, IntegralAddsTheRateErrorOverTimeAt500Hz) { IntegralAddsTheRateErrorOverTime<500>(); }
+
+// Its sign is the proportional part's: a held angle error (set-point above the estimate) builds
+// a positive moment, which is what holds a banked vehicle against a moment that tilts it back.
+TEST(Controllers, IntegralOfAHeldAngleErrorPushesTowardTheSetPoint) {
+  auto c = tilt_controller<F>(1024, 800, 1600);
+  double first = 0, last = 0;
+  for (int n = 0; n < 500; ++n) {
+    const double m = c.moment(test::quantise<FAngle>(0.02), FAngle{}, FRate{}, true).to_double();
+    if (n == 0) first = m;
+    last = m;
+  }
+  EXPECT_GT(c.integral().to_double(), 0.0);
+  EXPECT_NEAR(c.integral().to_double(), 100 * 4 * 0.02 * 0.5, 1e-3);  // I x P1 x error x 0.5 s
+  EXPECT_GT(last, first);
+  auto n = tilt_controller<F>(1024, 800, 1600);
+  for (int k = 0; k < 500; ++k) n.moment(test::quantise<FAngle>(-0.02), FAngle{}, FRate{}, true);
+  EXPECT_NEAR(n.integral().to_double(), -4.0, 1e-3);
+}
+
+// Anti-windup: no growth while the caller says no (the mixer limited the moments), none while
+// the moment is at its clamp, never beyond kMaxIntegralMoment, and reset() empties it.
+TEST(Controllers, IntegralIsHeldClampedAndReset) {
+  auto held = tilt_controller<F>(1024, 800, 1600);
+  for (int n = 0; n < 1000; ++n) held.moment(test::quantise<FAngle>(0.1), FAngle{}, FRate{}, false);
+  EXPECT_EQ(held.integral(), F::Thrust{});
+
+  // A rate error of 2 rad/s: P2 x 2 = 100 thrust units, the integral grows 200 per second.
+  auto growing = tilt_controller<F>(0, 800, 1600);
+  for (int n = 0; n < 3000; ++n) growing.moment(FAngle{}, FAngle{}, test::quantise<FRate>(-2.0), true);
+  EXPECT_EQ(growing.integral(), kMaxIntegralMoment<F>);
+  for (int n = 0; n < 3000; ++n) growing.moment(FAngle{}, FAngle{}, test::quantise<FRate>(2.0), true);
+  EXPECT_EQ(growing.integral(), -kMaxIntegralMoment<F>);
+  // Back from the clamp at once: the sum was clamped with it, nothing is stored beyond it.
+  growing.moment(FAngle{}, FAngle{}, test::quantise<FRate>(-0.5), true);
+  EXPECT_GT(growing.integral(), -kMaxIntegralMoment<F>);
+  growing.reset();
+  EXPECT_EQ(growing.integral(), F::Thrust{});
+
+  // At the moment's own clamp (P alone asks for more than 1000) the integral stays where it is.
+  auto saturated = tilt_controller<F>(0, 16000, 1600);
+  for (int n = 0; n < 1000; ++n) {
+    EXPECT_EQ(saturated.moment(FAngle{}, FAngle{}, test::quantise<FRate>(-2.0), true), kMaxMoment<F>);
+  }
+  EXPECT_EQ(saturated.integral(), F::Thrust{});
+}
+
+// An integral far below the Thrust lsb per tick still accumulates: 1e-6 rad/s of rate error at
+// I = 100 is 1e-7 thrust units per tick (the Thrust lsb is 1.5e-5, so a Thrust sum would stay
+// at 0), 0.01 after 100 s (the rate quantised to Q<27> is 0.9984e-6 rad/s).
+TEST(Controllers, IntegralOfATinyRateErrorIsNotLost) {
+  auto c = tilt_controller<F>(0, 800, 1600);
+  const FRate tiny = test::quantise<FRate>(-1e-6);
+  for (int n = 0; n < 100000; ++n) c.moment(FAngle{}, FAngle{}, tiny, true);
+  // Within the read-out's rounding (half a Thrust lsb) and I dt's own (2^-20 / 0.1 relative).
+  EXPECT_NEAR(c.integral().to_double(), 100 * 100 * -tiny.to_double(), 0x1p-17 + 1e-7);
+}
+
+// D acts on the measured rate: a set-point step gives no kick, a growing rate is opposed
+// (D x d rate / dt), and the first call after reset() has no derivative.
+TEST(Controllers, DerivativeOpposesRateChangesAndIgnoresSetPointSteps) {
+  auto c = tilt_controller<F>(1024, 800, 0, 768);  // D = 3 thrust units per rad/s^2
+  c.moment(FAngle{}, FAngle{}, FRate{});
+  // Set-point step: P1 P2 x 0.1 = 20, and nothing from D.
+  EXPECT_NEAR(c.moment(test::quantise<FAngle>(0.1), FAngle{}, FRate{}).to_double(), 20.0, 1e-3);
+  // The rate grows by 0.01 rad/s in one tick (10 rad/s^2): D adds -30, P2 -0.5.
+  EXPECT_NEAR(c.moment(FAngle{}, FAngle{}, test::quantise<FRate>(0.01)).to_double(), -30.5, 1e-3);
+  // Steady rate: no derivative.
+  EXPECT_NEAR(c.moment(FAngle{}, FAngle{}, test::quantise<FRate>(0.01)).to_double(), -0.5, 1e-3);
+  c.reset();
+  EXPECT_NEAR(c.moment(FAngle{}, FAngle{}, test::quantise<FRate>(0.5)).to_double(), -25.0, 1e-3);
+}
+
+// Sequences of random inputs and gains through the PID cascade, Q against double, with the
+// inputs quantised alike. Gains and inputs are drawn so that the moment never reaches its clamp
+// (P2 <= 150 x 4 rad/s, D <= 5 x 0.02 rad/s per tick x 1000, integral <= 200: at most 900), so
+// both sides always take the same branch. The differences: the rate set-point's rounding to
+// Rate times P2 (150 x 2^-28), the P, D and integral parts' roundings to Thrust (3 x 2^-17), and
+// I dt rounded to Q<19> (2^-20) times the rate error (<= 4.01 rad/s), summed over 200 ticks.
+TEST(Controllers, PidCascadeFixedFollowsDouble) {
+  std::mt19937_64 rng(29);
+  std::uniform_real_distribution<double> angle(-0.2, 0.2), rate(-0.01, 0.01);
+  std::uniform_int_distribution<int32_t> p1(0, 2560), p2(0, 2400), i(0, 3200), d(0, 1280);
+  test::MaxError err("PID cascade over 200-tick sequences, thrust units");
+  for (int run = 0; run < 500; ++run) {
+    const int32_t g1 = p1(rng), g2 = p2(rng), gi = i(rng), gd = d(rng);
+    AttitudeController<F> cf;
+    AttitudeController<D> cd;
+    cf.set_gains(g1, g2, gi, gd);
+    cd.set_gains(g1, g2, gi, gd);
+    for (int n = 0; n < 200; ++n) {
+      const F::Angle sp = to<F::Angle>(angle(rng)), a = to<F::Angle>(angle(rng));
+      const F::Rate r = to<F::Rate>(rate(rng));
+      const bool integrate = n % 7 != 0;
+      const double mf = cf.moment(sp, a, r, integrate).to_double();
+      const double md = cd.moment(sp.to_double(), a.to_double(), r.to_double(), integrate);
+      err.add(mf - md, md);
+    }
+  }
+  const double bound = 150 * 0x1p-28 + 3 * 0x1p-17 + 200 * 4.01 * 0x1p-20;
+  err.print(bound);
+  EXPECT_LE(err.max(), bound);
 }
 
 }  // namespace

@@ -223,5 +223,56 @@ TEST(EngineMixer, FixedFollowsDouble) {
   EXPECT_LE(worst, 1);
 }
 
+// The square root of the flight build (32-bit, engine_of_thrust) is the exact rounding of
+// sqrt(1000 w) for a Q<16> thrust w: k = round(sqrt(x)) means (2k - 1)^2 <= 4x < (2k + 1)^2,
+// here in integers, 4x = 4000 raw / 2^16. Checked on both sides of every rounding boundary of
+// every engine value 0..1000 and on a million random thrusts.
+TEST(EngineMixer, EngineOfThrustIsTheRoundedRoot) {
+  using T = F::Thrust;
+  const auto exact = [](int64_t raw, int64_t k) {
+    const int64_t four_x_scaled = 4000 * raw;  // 4x x 2^16
+    const bool above_lower = k == 0 || (2 * k - 1) * (2 * k - 1) * 65536 <= four_x_scaled;
+    return above_lower && four_x_scaled < (2 * k + 1) * (2 * k + 1) * 65536;
+  };
+  int checked = 0;
+  for (int64_t k = 0; k <= 1000; ++k) {
+    // The first raw value whose root rounds to k + 1: 4000 raw >= (2k + 1)^2 2^16.
+    const int64_t boundary = ((2 * k + 1) * (2 * k + 1) * 65536 + 3999) / 4000;
+    for (const int64_t raw : {boundary - 2, boundary - 1, boundary, boundary + 1}) {
+      if (raw < 0 || raw > 1000 * 65536) continue;
+      const int32_t ae = EngineMixer<F>::engine_of_thrust(T::from_raw(static_cast<int32_t>(raw)));
+      ASSERT_TRUE(exact(raw, ae)) << "raw " << raw << " gave " << ae;
+      ++checked;
+    }
+  }
+  std::mt19937_64 rng(5);
+  std::uniform_int_distribution<int32_t> thrust(0, 1000 * 65536);
+  for (int i = 0; i < 1000000; ++i) {
+    const int32_t raw = thrust(rng);
+    const int32_t ae = EngineMixer<F>::engine_of_thrust(T::from_raw(raw));
+    ASSERT_TRUE(exact(raw, ae)) << "raw " << raw << " gave " << ae;
+    ++checked;
+  }
+  std::printf("  engine_of_thrust exact on %d thrusts (every rounding boundary, a million random)\n", checked);
+  EXPECT_EQ(EngineMixer<F>::engine_of_thrust(T::from_raw(0)), 0);
+  EXPECT_EQ(EngineMixer<F>::engine_of_thrust(T::from_raw(-5)), 0);
+  EXPECT_EQ(EngineMixer<F>::engine_of_thrust(T(1000.0)), 1000);
+}
+
+// limited() tells the controllers' integrals when the moments asked for were not realised.
+TEST(EngineMixer, LimitedSaysWhenTheMomentsWereScaled) {
+  auto m = mixer<F>(180);
+  m.mix(500, moments<F>(50, -30, 10));
+  EXPECT_FALSE(m.limited());
+  m.mix(250, moments<F>(100, 0, 0));  // bottom: scaled to what fits above idle
+  EXPECT_TRUE(m.limited());
+  m.mix(990, moments<F>(100, 0, 0));  // top: the lift gives way, the moment is realised
+  EXPECT_FALSE(m.limited());
+  m.mix(600, moments<F>(1000, 500, 0));  // more spread than the engines span
+  EXPECT_TRUE(m.limited());
+  m.mix(0, moments<F>(1000, 500, 0));  // engines stopped: nothing to limit
+  EXPECT_FALSE(m.limited());
+}
+
 }  // namespace
 }  // namespace qr::chain

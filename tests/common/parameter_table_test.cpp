@@ -2,6 +2,7 @@
 // names are the ones in the table.
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <set>
 #include <string>
 
@@ -51,11 +52,39 @@ TEST(ParameterTable, DefaultsTheSafetyRulesName) {
 
 TEST(ParameterTable, EveryParameterTheIssueListsIsThere) {
   for (const char* name : {"yaw_p", "p1", "p2", "c1", "c2", "filter_cutoff", "telemetry_rate", "link_timeout",
-                           "battery_panic", "battery_warning", "tilt_limit", "panic_hold", "panic_level"}) {
+                           "battery_panic", "battery_warning", "tilt_limit", "panic_hold", "panic_level",
+                           "roll_pitch_i", "roll_pitch_d"}) {
     bool found = false;
     for (const ParameterSpec& spec : kParameterTable) found = found || std::string(spec.name) == name;
     EXPECT_TRUE(found) << name;
   }
+}
+
+// The attitude filter's bias loop is s^2 + s / (C1 dt) + 1 / (C2 dt^2): damping sqrt(C2) / (2 C1).
+// The defaults make it critically damped, and the range lets C2 = 4 C1^2 reach well past them
+// (docs/signal-chain.md: C1 of seconds for free flight).
+TEST(ParameterTable, AttitudeFilterDefaultsAreCriticallyDampedAndTheRangeAllowsIt) {
+  const int64_t c1 = default_of(ParamId::kalman_c1), c2 = default_of(ParamId::kalman_c2);
+  EXPECT_EQ(c2, 4 * c1 * c1);
+  const int64_t c2_max = find_parameter(static_cast<uint8_t>(ParamId::kalman_c2))->max;
+  EXPECT_GE(c2_max, 4 * (2 * c1) * (2 * c1)) << "C1 twice the default still damped";
+}
+
+// The rate loop's integral and derivative share the gains' conventions: raw integers in the
+// parameter's Q format, 0 switching the term off, the controllers' thrust units.
+TEST(ParameterTable, RateLoopIntegralAndDerivativeGains) {
+  const ParameterSpec& i = *find_parameter(static_cast<uint8_t>(ParamId::roll_pitch_i));
+  const ParameterSpec& d = *find_parameter(static_cast<uint8_t>(ParamId::roll_pitch_d));
+  EXPECT_EQ(i.min, 0);
+  EXPECT_EQ(d.min, 0);
+  EXPECT_EQ(i.frac_bits, 4);
+  EXPECT_EQ(d.frac_bits, 8);
+  EXPECT_GT(i.default_value, 0);
+  EXPECT_GT(d.default_value, 0);
+  EXPECT_EQ(std::string(i.unit), "thrust units per rad");
+  EXPECT_EQ(std::string(d.unit), "thrust units per rad/s^2");
+  // D x fs is formed as an int32 product of the raw value and the sample rate (controllers.hpp).
+  EXPECT_LE(int64_t{d.max} * 1000, int64_t{INT32_MAX});
 }
 
 TEST(ParameterValues, StartAtDefaultsAndAcceptOnlyKnownIdsInRange) {

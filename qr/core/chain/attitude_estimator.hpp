@@ -2,15 +2,17 @@
 // complementary filter with gyro bias estimation), per axis and per control period:
 //
 //   rate  = gyro - bias                       gyro rate, bias-corrected
-//   angle = angle + rate dt                   predict by integrating the rate
+//   angle = angle + (rate + coupling) dt      predict by integrating the Euler rate
 //   e     = angle - accel_angle               disagreement with the accelerometer's angle
 //   angle = angle - e / C1                    pull toward the accelerometer angle
 //   bias  = bias + e / (C2 dt)                a drifting-ahead angle means the gyro reads high
 //
 // Signs: with a gyro that reads high (bias > 0 in truth), the integrated angle runs ahead of the
 // accelerometer's, e > 0, and the bias estimate grows toward the truth; rate = gyro - bias then
-// drops. Dynamics: the bias error decays with time constant about C2 / C1 samples (3.9 s with the
-// defaults at 1 kHz), the angle follows the accelerometer with time constant C1 samples.
+// drops. Dynamics: s^2 + s / (C1 dt) + 1 / (C2 dt^2), damping sqrt(C2) / (2 C1); the angle follows
+// the accelerometer with time constant C1 samples. The defaults (C1 = 8000, C2 = 4 C1^2) are
+// critically damped and slow on purpose: in free flight a multirotor's accelerometer reads the
+// tilt only through a lag of seconds (docs/signal-chain.md).
 //
 // Fixed point: the divisions become multiplications by 1 / C1 and fs / C2, computed when a
 // parameter changes. The angle accumulates in a 64-bit Wide (AngleIntegral below), and the bias
@@ -21,8 +23,8 @@
 //
 // Accelerometer angles (docs/conventions.md): roll = atan2(-f_y, -f_z),
 // pitch = atan2(f_x, sqrt(f_y^2 + f_z^2)). Yaw has no absolute reference: it integrates r.
-// The angle update uses body rates as Euler rates (small-angle kinematics): the accelerometer
-// correction removes what that neglects while the vehicle is near level, which is where it flies.
+// The angle update turns body rates into Euler rates (AttitudeEstimator::update), so that a yaw
+// turn while tilted is not read as a roll or pitch rate for the seconds C1 takes to undo it.
 #pragma once
 
 #include <stdint.h>
@@ -54,10 +56,9 @@ class AngleIntegral {
     sum_ += delta;
     normalise();
   }
-  void subtract(Sum delta) {
-    sum_ -= delta;
-    normalise();
-  }
+  // The angle the sum would read with delta added, not wrapped (Angle holds +-8 rad, so a value
+  // just past +-pi is still right; callers wrap differences).
+  Angle peek(Sum delta) const { return N::template convert<Angle>(sum_ + delta); }
   Angle angle() const { return angle_; }
 
  private:
@@ -100,11 +101,13 @@ class TiltEstimator {
     bias_ = {};
   }
 
-  void update(Rate gyro, Angle accel_angle) {
+  // gyro: the axis' body rate; coupling: what the other axes add to this angle's rate (Euler
+  // kinematics, AttitudeEstimator::update), already bias-corrected.
+  void update(Rate gyro, Rate coupling, Angle accel_angle) {
     rate_ = gyro - bias_;
-    angle_.add(fx::mul_wide(rate_, kDt));
-    const Angle e = wrap_angle(angle_.angle() - accel_angle);
-    angle_.subtract(fx::mul_wide(e, k1_));
+    const auto predict = fx::mul_wide(rate_, kDt) + fx::mul_wide(coupling, kDt);
+    const Angle e = wrap_angle(angle_.peek(predict) - accel_angle);
+    angle_.add(predict - fx::mul_wide(e, k1_));  // predict and correct, wrapped once
     bias_sum_ += fx::mul_wide(e, k2_);
     bias_ = N::template convert_sat<Rate>(bias_sum_);
     if (kMaxBias < bias_) {
@@ -131,7 +134,11 @@ class TiltEstimator {
   typename N::BiasSum bias_sum_{};
 };
 
-template <class N, uint32_t SampleHz>
+// AccelDivider: the accelerometer angles (two atan2 and a square root) are taken on every
+// AccelDivider-th update from the start, and held in between (flight_chain.hpp says why that is
+// enough). Counted from the (re)start, not from power-up, so that a replay that starts at the
+// calibration computes on the very ticks the flight did.
+template <class N, uint32_t SampleHz, uint32_t AccelDivider = 1>
 class AttitudeEstimator {
  public:
   using Rate = typename N::Rate;
@@ -148,23 +155,47 @@ class AttitudeEstimator {
   }
 
   // The next update starts over from the accelerometer's angles, with no bias and yaw 0.
-  void restart() { started_ = false; }
+  void restart() {
+    started_ = false;
+    accel_phase_ = 0;
+  }
 
   // Calibrated, filtered body rates (rad/s) and specific force (g), x y z.
   void update(const Rate (&rate)[3], const Accel (&accel)[3]) {
-    roll_from_accel_ = N::atan2(-accel[1], -accel[2]);
-    const auto horizontal_squared = fx::mul_wide(accel[1], accel[1]) + fx::mul_wide(accel[2], accel[2]);
-    const Magnitude horizontal = N::sqrt(N::template convert<Magnitude>(horizontal_squared));
-    pitch_from_accel_ = N::atan2(N::template convert<Magnitude>(accel[0]), horizontal);
+    const bool slow_tick = accel_phase_ == 0;
+    if (++accel_phase_ == AccelDivider) accel_phase_ = 0;
+    if (slow_tick) {
+      roll_from_accel_ = N::atan2(-accel[1], -accel[2]);
+      const auto horizontal_squared = fx::mul_wide(accel[1], accel[1]) + fx::mul_wide(accel[2], accel[2]);
+      const Magnitude horizontal = N::sqrt(N::template convert<Magnitude>(horizontal_squared));
+      pitch_from_accel_ = N::atan2(N::template convert<Magnitude>(accel[0]), horizontal);
+    }
     if (!started_) {
       roll_.start(roll_from_accel_);
       pitch_.start(pitch_from_accel_);
       yaw_.set(Angle{});
       started_ = true;
     }
-    roll_.update(rate[0], roll_from_accel_);
-    pitch_.update(rate[1], pitch_from_accel_);
+    // Body rates to Euler rates (Z-Y-X): roll' = p + (q sin roll + r cos roll) tan pitch,
+    // pitch' = q cos roll - r sin roll. Without this a yaw turn while tilted reads as a roll or
+    // pitch rate, and the accelerometer, which in free flight may only pull slowly (C1 of
+    // seconds), would take that long to undo it. The rates are this tick's; the factors, which
+    // move with the attitude, are refreshed with the accelerometer angles (they are then at most
+    // AccelDivider - 1 ticks old: 3 ms at 1 kHz, against the 11 ms the gyro's own low-pass
+    // delays the rates by).
+    if (slow_tick) euler_ = euler_terms(roll_.angle(), pitch_.angle());
     yaw_rate_ = rate[2];
+    const Rate q = rate[1] - pitch_.bias();
+    const EulerTerms& k = euler_;
+    const Rate across =
+        N::template convert_sat<Rate>(fx::mul_wide(q, k.sin_roll) + fx::mul_wide(yaw_rate_, k.cos_roll));
+    const Rate roll_coupling = product_sat<Rate>(across, k.tan_pitch);
+    // |q (cos - 1)| + |r sin| <= 10 x 1/2 + 9.5 x 5/6 rad/s (angles clamped to 1 rad, filtered
+    // gyro within 9.5 rad/s, bias within 0.5): inside the Rate format, no saturation needed.
+    const Rate pitch_coupling =
+        N::template convert<Rate>(fx::mul_wide(q, k.cos_roll - kOne) - fx::mul_wide(yaw_rate_, k.sin_roll));
+    roll_.update(rate[0], roll_coupling, roll_from_accel_);
+    pitch_.update(rate[1], pitch_coupling, pitch_from_accel_);
     yaw_.add(fx::mul_wide(yaw_rate_, kDt));
   }
 
@@ -180,13 +211,38 @@ class AttitudeEstimator {
   Angle pitch_from_accel() const { return pitch_from_accel_; }
 
  private:
+  using Unit = typename N::Coefficient;  // sin, cos, tan: Q<30>, +-2
   static constexpr typename N::Scale kDt = typename N::Scale(1.0 / SampleHz);
+  static constexpr Unit kOne = Unit(1.0);
+
+  struct EulerTerms {
+    Unit sin_roll, cos_roll, tan_pitch;
+  };
+  // sin and cos of the roll and tan of the pitch by their series to the third order:
+  // sin x = x (1 - x^2/6), cos x = 1 - x^2/2, tan x = x (1 + x^2/3), five multiplies instead of a
+  // sin/cos evaluation and a division. At 0.35 rad (20 degrees) they are off by 4e-5, 6e-4 and
+  // 7e-4, so a 2 rad/s yaw turn at 20 degrees of bank leaves at most 2e-3 rad/s of rate error
+  // (the first-order terms alone, roll' = p + r pitch, pitch' = q - r roll, would leave 3e-2),
+  // which the accelerometer and the bias loop take out. The angles are clamped to +-1 rad first:
+  // beyond that (57 degrees, past the tilt limit's default of 45) the series part from the
+  // functions, and the vehicle is not flying but falling or flipping.
+  static EulerTerms euler_terms(Angle roll, Angle pitch) {
+    const Angle limit = Angle(1.0);
+    const Unit r = N::template convert<Unit>(clamp(roll, -limit, limit));
+    const Unit t = N::template convert<Unit>(clamp(pitch, -limit, limit));
+    const Unit r2 = product<Unit>(r, r), t2 = product<Unit>(t, t);
+    return {product<Unit>(r, kOne - product<Unit>(r2, kSixth)), kOne - product<Unit>(r2, kHalf),
+            product<Unit>(t, kOne + product<Unit>(t2, kThird))};
+  }
+  static constexpr Unit kHalf = Unit(1.0 / 2), kThird = Unit(1.0 / 3), kSixth = Unit(1.0 / 6);
 
   TiltEstimator<N, SampleHz> roll_, pitch_;
   AngleIntegral<N> yaw_;
   Rate yaw_rate_{};
   Angle roll_from_accel_{};
   Angle pitch_from_accel_{};
+  EulerTerms euler_{Unit{}, kOne, Unit{}};  // at level
+  uint32_t accel_phase_ = 0;  // updates since the accelerometer angles were last taken
   bool started_ = false;
 };
 

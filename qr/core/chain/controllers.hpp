@@ -1,16 +1,21 @@
-// The controllers, each a proportional law with its gain from the parameter table. Outputs are
-// moments in thrust units (engine_mixer.hpp), positive in the sense of docs/conventions.md:
-// a positive roll moment rolls right (right side down), positive pitch pitches nose up, positive
-// yaw yaws right. So an error "set-point minus estimate" > 0 must give a positive output, and
-// every law below is gain x (set-point - measurement) with a non-negative gain.
+// The controllers, with their gains from the parameter table: yaw a proportional rate loop, roll
+// and pitch an angle loop around a PID rate loop. Outputs are moments in thrust units
+// (engine_mixer.hpp), positive in the sense of docs/conventions.md: a positive roll moment rolls
+// right (right side down), positive pitch pitches nose up, positive yaw yaws right. So an error
+// "set-point minus estimate" > 0 must give a positive output, and every term below is
+// gain x (set-point - measurement) with a non-negative gain (the derivative: -D x the measured
+// rate's change).
 //
-// The error and the product are formed in one wide accumulator, gain x set-point minus gain x
-// measurement: a yaw set-point of 8 rad/s against a rate of -9 rad/s is 17 rad/s of error, which
-// the rate format (+-16) could not hold, and the product is clamped once.
+// In the yaw loop the error and the product are formed in one wide accumulator, gain x set-point
+// minus gain x measurement: a yaw set-point of 8 rad/s against a rate of -9 rad/s is 17 rad/s of
+// error, which the rate format (+-16) could not hold, and the product is clamped once.
 #pragma once
+
+#include <stdint.h>
 
 #include <qr/core/chain/chain_parameters.hpp>
 #include <qr/core/chain/numeric.hpp>
+#include <qr/core/rate.hpp>
 
 namespace qr::chain {
 
@@ -44,29 +49,117 @@ class YawRateController {
   Gain gain_{};
 };
 
-// Roll or pitch: angle loop P1 (angle error -> rate set-point) around rate loop P2 (rate error ->
-// moment).
+// Largest moment the roll/pitch rate loop's integral holds (thrust units): a trim, not a
+// controller of its own. About 20 % of one engine: it covers a centre of mass 4 cm off the motor
+// cross of a 1 kg vehicle, or ten times the rotor-drag moment of a held 10 degree bank, and is
+// small enough that a wound-up integral cannot take the vehicle away from the pilot.
 template <class N>
+inline constexpr typename N::Thrust kMaxIntegralMoment = typename N::Thrust(200.0);
+
+// Roll or pitch: angle loop P1 (angle error -> rate set-point) around a PID rate loop (rate error
+// -> moment):
+//
+//   rate_setpoint = P1 (angle_setpoint - angle)                       clamped to +-4 rad/s
+//   integral     += I dt (rate_setpoint - rate)    when allowed        clamped to +-200
+//   moment        = P2 (rate_setpoint - rate) - D d(rate)/dt + integral   clamped to +-1000
+//
+// The integral is where a steady moment that the controller did not ask for ends up: the rotor
+// drag that tilts a banked, moving vehicle back, a centre of mass off the middle, unequal
+// motors. Without it the cascade holds an angle error of moment / (P1 P2) against such a moment
+// (2.7 degrees in the simulator's 10 degree bank at P1 = 4, P2 = 50). It sits on the rate loop
+// because that is where a disturbance moment enters: the integral is in thrust units, a trim that
+// survives a gain change without a bump, and its clamp is a moment with a physical meaning.
+//
+// The derivative acts on the measured rate only (a set-point step gives no kick) and is the
+// loop's phase lead: the motors' speed lag (30 ms in the simulator's vehicle, 10-70 ms across its
+// sweep) and the gyro low-pass eat the phase a faster angle loop needs; D = tau P2 cancels a lag
+// tau at the rate loop's crossover.
+//
+// Anti-windup: the integral adds nothing while `integrate` is false (the caller's judgement: the
+// mixer had to scale the moments down last tick) or while the moment is at its own clamp, and it
+// never exceeds kMaxIntegralMoment. reset() empties it and restarts the derivative (entering
+// full control; lift 0).
+//
+// Fixed point: I dt is formed from the Q<4> parameter when it changes, in Q<19>, so that the sum
+// I dt x rate is a Wide<46> into which a Thrust (Q<16> x Q<30> one) writes back exactly: every
+// increment adds in without rounding, and one far below the Thrust lsb (a rate error of 1e-6
+// rad/s at I = 100) still moves the sum. D fs is the Q<8> parameter times the sample rate, an
+// integer product, exact; P2 (Q<4>) is held in Q<8> too, so P2 x error - D fs x change is one
+// wide accumulator, rounded and clamped once.
+template <class N, uint32_t SampleHz = kControlHz>
 class AttitudeController {
  public:
   using P1 = typename N::template Fixed<kP1Frac>;  // 1/s
-  using P2 = typename N::template Fixed<kP2Frac>;  // thrust units per rad/s
+  using P2 = typename N::template Fixed<kRollPitchDFrac>;  // thrust units per rad/s (Q<8>: see moment())
+  using Thrust = typename N::Thrust;
+  using Rate = typename N::Rate;
+  using IntegralGain = typename N::template Fixed<19>;  // I dt: thrust units per rad/s, per tick
+  using IntegralSum = decltype(fx::mul_wide(IntegralGain{}, Rate{}));
+  using DerivativeGain = typename N::template Fixed<kRollPitchDFrac>;  // D fs: thrust units per rad/s
 
-  void set_gains(int32_t p1_raw, int32_t p2_raw) {
+  // Raw parameter values (common/parameter_table.hpp). i_raw and d_raw default to 0: P-P.
+  void set_gains(int32_t p1_raw, int32_t p2_raw, int32_t i_raw = 0, int32_t d_raw = 0) {
     p1_ = N::template fixed<kP1Frac>(p1_raw);
-    p2_ = N::template fixed<kP2Frac>(p2_raw);
+    p2_ = N::template fixed<kRollPitchDFrac>(p2_raw * (1 << (kRollPitchDFrac - kP2Frac)));  // exact
+    i_dt_ = product<IntegralGain>(N::template fixed<kRollPitchIFrac>(i_raw), kDt);
+    d_fs_ = N::template fixed<kRollPitchDFrac>(d_raw * static_cast<int32_t>(SampleHz));  // <= 5.2e6
   }
 
-  typename N::Thrust moment(typename N::Angle setpoint, typename N::Angle angle, typename N::Rate rate) {
-    rate_setpoint_ = proportional(p1_, setpoint, angle, kMaxTiltRateSetpoint<N>);
-    return proportional(p2_, rate_setpoint_, rate, kMaxMoment<N>);
+  // Empties the integral; the next moment() has no derivative (no previous rate to difference).
+  void reset() {
+    integral_sum_ = {};
+    integral_ = {};
+    primed_ = false;
   }
-  typename N::Rate rate_setpoint() const { return rate_setpoint_; }
+
+  Thrust moment(typename N::Angle setpoint, typename N::Angle angle, Rate rate, bool integrate = false) {
+    // The angle error fits the Angle format (+-8 rad): the set-point is within +-0.35 rad and
+    // the estimate within [-pi, pi).
+    rate_setpoint_ = clamp(product_sat<Rate>(p1_, setpoint - angle), -kMaxTiltRateSetpoint<N>, kMaxTiltRateSetpoint<N>);
+    // Both differences fit the Rate format (+-16 rad/s): the set-point is within +-4 rad/s and a
+    // filtered, calibrated gyro within about +-9.5 (full scale 8.7 rad/s, filter overshoot,
+    // bias clamp), so the error is below 14 rad/s; one tick's change of that filtered rate is
+    // far smaller still.
+    const Rate error = rate_setpoint_ - rate;
+    const Rate change = primed_ ? rate - previous_rate_ : Rate{};
+    previous_rate_ = rate;
+    primed_ = true;
+    // P2 error - D fs change in one wide accumulator (P2 in Q<8> holds the Q<4> parameter
+    // exactly), rounded and clamped once.
+    const Thrust pd = clamp(N::template convert_sat<Thrust>(fx::mul_wide(p2_, error) - fx::mul_wide(d_fs_, change)),
+                            -kMaxMoment<N>, kMaxMoment<N>);
+    if (integrate && magnitude(pd + integral_) < kMaxMoment<N>) {
+      integral_sum_ += fx::mul_wide(i_dt_, error);  // at most 2 x 14 per tick onto at most 200
+      integral_ = N::template convert<Thrust>(integral_sum_);
+      if (kMaxIntegralMoment<N> < integral_) {
+        integral_ = kMaxIntegralMoment<N>;
+        integral_sum_ = fx::mul_wide(integral_, kOne);
+      } else if (integral_ < -kMaxIntegralMoment<N>) {
+        integral_ = -kMaxIntegralMoment<N>;
+        integral_sum_ = fx::mul_wide(integral_, kOne);
+      }
+    }
+    return clamp(pd + integral_, -kMaxMoment<N>, kMaxMoment<N>);
+  }
+  Rate rate_setpoint() const { return rate_setpoint_; }
+  Thrust integral() const { return integral_; }
 
  private:
+  static_assert(kRollPitchDFrac >= kP2Frac, "P2 moves into D's format without rounding");
+  static constexpr typename N::Scale kDt = typename N::Scale(1.0 / SampleHz);
+  static constexpr typename N::template Fixed<30> kOne = typename N::template Fixed<30>(1.0);
+  static_assert(fx::detail::is_same<IntegralSum, decltype(fx::mul_wide(Thrust{}, kOne))>,
+                "the integral's clamp must write back into the sum's own format");
+
   P1 p1_{};
   P2 p2_{};
-  typename N::Rate rate_setpoint_{};
+  IntegralGain i_dt_{};
+  DerivativeGain d_fs_{};
+  IntegralSum integral_sum_{};
+  Thrust integral_{};
+  Rate rate_setpoint_{};
+  Rate previous_rate_{};
+  bool primed_ = false;
 };
 
 }  // namespace qr::chain

@@ -61,6 +61,7 @@ class EngineMixer {
   EngineCommand mix(uint16_t lift, const Moments<Thrust>& wanted) {
     if (lift == 0) {
       applied_ = {};
+      limited_ = false;
       return {};
     }
     return mix_thrust(thrust_of_lift(lift), wanted);
@@ -81,14 +82,21 @@ class EngineMixer {
     Thrust trough = min_of(min_of(m[0], m[1]), min_of(m[2], m[3]));
 
     const Thrust room = kFullThrust - low;
-    if (room < peak - trough) scale(m, peak, trough, room / (peak - trough));  // 1.
-    if (kFullThrust < base + peak) base = kFullThrust - peak;                  // 2.
-    if (base + trough < low) scale(m, peak, trough, (base - low) / -trough);   // 3.
+    limited_ = false;
+    if (room < peak - trough) {  // 1.
+      scale(m, peak, trough, fraction(room, peak - trough));
+      limited_ = true;
+    }
+    if (kFullThrust < base + peak) base = kFullThrust - peak;  // 2.
+    if (base + trough < low) {                                 // 3.
+      scale(m, peak, trough, fraction(base - low, -trough));
+      limited_ = true;
+    }
 
     EngineCommand out;
     for (int i = 0; i < 4; ++i) {
       const Thrust w = clamp(base + m[i], low, kFullThrust);  // only rounding can step outside
-      const int32_t ae = N::round_to_int(fx::mul_wide(N::sqrt(w), kRootOf1000));
+      const int32_t ae = engine_of_thrust(w);
       out.value[i] = static_cast<uint16_t>(ae < idle_ ? idle_ : ae > wire::kEngineMax ? wire::kEngineMax : ae);
     }
     applied_.roll = m[3] - m[1];
@@ -99,6 +107,28 @@ class EngineMixer {
 
   // The moments the last mix realised (before rounding to whole engine units).
   const Moments<Thrust>& applied() const { return applied_; }
+  // The last mix had to scale the moments down (step 1 or 3): the engines could not give what
+  // the controllers asked for, so an integral must not grow on the difference.
+  bool limited() const { return limited_; }
+
+  // round(sqrt(1000 w)): the engine value for a per-engine thrust w in [0, 1000]. Exact (the
+  // rounding of the true root) for the Q formats, in 32-bit integer arithmetic: the value needs
+  // 10 bits, so a 64-bit square root of the Q<16> thrust (about 190 RV32 instructions) would
+  // compute 22 bits only to throw 12 away. With x = 1000 w and k = floor(2 sqrt(x)),
+  // round(sqrt(x)) = (k + 1) / 2 (the root's first fractional bit decides), and
+  // k = isqrt(floor(4 x)) because isqrt(floor(y)) = floor(sqrt(y)) for every real y >= 0.
+  static int32_t engine_of_thrust(Thrust w) {
+    if constexpr (fx::is_q<Thrust>) {
+      static_assert(Thrust::frac_bits == 16, "4000 w = raw x 125 / 2^11 below assumes Q<16>");
+      if (w.raw() <= 0) return 0;
+      const uint32_t raw = static_cast<uint32_t>(w.raw());
+      // floor(4000 w) = floor(raw x 125 / 2^11), split so that nothing exceeds 32 bits.
+      const uint32_t four_x = (raw >> 11) * 125u + (((raw & 0x7FFu) * 125u) >> 11);
+      return static_cast<int32_t>((isqrt_below_4_pow_11(four_x) + 1) >> 1);
+    } else {
+      return N::round_to_int(fx::mul_wide(N::sqrt(w), kRootOf1000));
+    }
+  }
 
  private:
   // m_i = roll x L + pitch x M + yaw x N, one row per engine (0 front, 1 right, 2 back, 3 left).
@@ -114,7 +144,34 @@ class EngineMixer {
   static constexpr typename N::Scale kPerMille = typename N::Scale(0.001);
   static constexpr Thrust kRootOf1000 = Thrust(31.62277660168379332);
 
-  static void scale(Thrust (&m)[4], Thrust& peak, Thrust& trough, Thrust factor) {
+  // floor(sqrt(n)) for n < 4^11 = 4194304 (4000 w <= 4e6: the clamp to [low, 1000] before the
+  // call keeps n there): the schoolbook method, one result bit per step, 11 steps.
+  static constexpr uint32_t isqrt_below_4_pow_11(uint32_t n) {
+    uint32_t root = 0;
+    for (uint32_t bit = 1u << 20; bit != 0; bit >>= 2) {
+      if (n >= root + bit) {
+        n -= root + bit;
+        root = (root >> 1) + bit;
+      } else {
+        root >>= 1;
+      }
+    }
+    return root;
+  }
+
+  // num / den for 0 <= num < den: the saturation's scale factor, in Q<30> (a Thrust quotient
+  // would be quantised to 1.5e-5, and the realised moments with it: up to 0.008 thrust units
+  // off the ratio asked for). A 64-bit division, taken only when saturating.
+  using Factor = typename N::Coefficient;
+  static Factor fraction(Thrust num, Thrust den) {
+    if constexpr (fx::is_q<Thrust>) {
+      return N::template ratio<Factor>(num.raw(), den.raw());
+    } else {
+      return num / den;
+    }
+  }
+
+  static void scale(Thrust (&m)[4], Thrust& peak, Thrust& trough, Factor factor) {
     for (Thrust& v : m) v = product<Thrust>(v, factor);
     peak = product<Thrust>(peak, factor);
     trough = product<Thrust>(trough, factor);
@@ -123,6 +180,7 @@ class EngineMixer {
   uint16_t idle_ = 0;
   Thrust idle_thrust_{};
   Moments<Thrust> applied_{};
+  bool limited_ = false;
 };
 
 }  // namespace qr::chain

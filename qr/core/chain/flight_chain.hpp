@@ -40,6 +40,14 @@ class FlightChain {
   using Thrust = typename Num::Thrust;
   static constexpr uint32_t kSampleHz = SampleHz;
 
+  // The estimator takes new accelerometer angles (two atan2 and a square root, about 600 RV32
+  // instructions) at 250 Hz, not every tick. They enter through C1, seconds in free flight
+  // (docs/signal-chain.md), so an angle held for 4 ms changes nothing the filter can show; the
+  // accelerometer is still low-passed at the full rate, so what is sampled has no content near
+  // 125 Hz for the sampling to fold down.
+  static constexpr uint32_t kAccelHz = 250;
+  static constexpr uint32_t kAccelDivider = SampleHz > kAccelHz ? SampleHz / kAccelHz : 1;
+
   FlightChain() { set_parameters(wire::ParameterValues{}); }
 
   // Called when a parameter changes (not per tick): the only place that divides.
@@ -48,7 +56,10 @@ class FlightChain {
     filters_.set_cutoff(p.get(ParamId::filter_cutoff_hz));
     estimator_.set_divisors(p.get(ParamId::kalman_c1), p.get(ParamId::kalman_c2));
     yaw_.set_gain(p.get(ParamId::yaw_p));
-    for (auto& axis : tilt_) axis.set_gains(p.get(ParamId::roll_pitch_p1), p.get(ParamId::roll_pitch_p2));
+    for (auto& axis : tilt_) {
+      axis.set_gains(p.get(ParamId::roll_pitch_p1), p.get(ParamId::roll_pitch_p2), p.get(ParamId::roll_pitch_i),
+                     p.get(ParamId::roll_pitch_d));
+    }
     pilot_.set_max_yaw_rate(p.get(ParamId::max_yaw_rate));
     mixer_.set_idle(p.get(ParamId::idle_level));
   }
@@ -98,9 +109,18 @@ class FlightChain {
   }
 
   // Task "attitude control": the roll and pitch moments from the angle/rate cascades.
+  // The rate loops' integrals start empty whenever this runs after a tick without it (entering
+  // full control), stay empty while the lift stick is at 0 (engines stopped: on the ground, or
+  // the pilot cut them), and hold while the mixer had to scale the last moments down.
   void control_attitude() {
-    roll_moment_ = tilt_[0].moment(pilot_.roll_angle(), estimator_.roll(), estimator_.p());
-    pitch_moment_ = tilt_[1].moment(pilot_.pitch_angle(), estimator_.pitch(), estimator_.q());
+    const bool entered = attitude_at_tick_ + 1 != ticks_;
+    attitude_at_tick_ = ticks_;
+    if (entered || pilot_.lift() == 0) {
+      for (auto& axis : tilt_) axis.reset();
+    }
+    const bool integrate = pilot_.lift() != 0 && (entered || !mixer_.limited());
+    roll_moment_ = tilt_[0].moment(pilot_.roll_angle(), estimator_.roll(), estimator_.p(), integrate);
+    pitch_moment_ = tilt_[1].moment(pilot_.pitch_angle(), estimator_.pitch(), estimator_.q(), integrate);
     attitude_ran_ = true;
   }
 
@@ -150,13 +170,16 @@ class FlightChain {
   int32_t q_bias_e6() const { return Num::round_to_int(fx::mul_wide(estimator_.q_bias(), kMillion)); }
   int16_t p_setpoint_e3() const { return rate_e3(tilt_[0].rate_setpoint()); }
   int16_t q_setpoint_e3() const { return rate_e3(tilt_[1].rate_setpoint()); }
+  // The roll and pitch rate loops' integrals (trim moments), in 1e-3 thrust units.
+  int32_t roll_integral_e3() const { return Num::round_to_int(fx::mul_wide(tilt_[0].integral(), kThousand)); }
+  int32_t pitch_integral_e3() const { return Num::round_to_int(fx::mul_wide(tilt_[1].integral(), kThousand)); }
   chain::Moments<int32_t> moments_e3() const { return moments_e3(moments_); }
   chain::Moments<int32_t> applied_moments_e3() const { return moments_e3(mixer_.applied()); }
   const EngineCommand& engines() const { return engines_; }
   int32_t cutoff_hz() const { return filters_.cutoff_hz(); }
 
   // The blocks themselves, for tests and tools that look inside.
-  const chain::AttitudeEstimator<Num, SampleHz>& estimator() const { return estimator_; }
+  const chain::AttitudeEstimator<Num, SampleHz, kAccelDivider>& estimator() const { return estimator_; }
   const chain::SensorCalibration<Num>& calibration() const { return calibration_; }
 
  private:
@@ -176,10 +199,10 @@ class FlightChain {
 
   chain::SensorFilters<Num, SampleHz> filters_{chain::parameter_spec(wire::ParamId::filter_cutoff_hz).default_value};
   chain::SensorCalibration<Num> calibration_;
-  chain::AttitudeEstimator<Num, SampleHz> estimator_;
+  chain::AttitudeEstimator<Num, SampleHz, kAccelDivider> estimator_;
   chain::PilotSetpoints<Num> pilot_;
   chain::YawRateController<Num> yaw_;
-  chain::AttitudeController<Num> tilt_[2];  // roll, pitch
+  chain::AttitudeController<Num, SampleHz> tilt_[2];  // roll, pitch
   chain::EngineMixer<Num> mixer_;
   Thrust roll_moment_{}, pitch_moment_{}, yaw_moment_{};  // the controllers' latest outputs
   bool attitude_ran_ = false, yaw_ran_ = false;          // ... computed in this tick
@@ -188,6 +211,7 @@ class FlightChain {
   SensorSample sample_{};
   uint32_t ticks_ = 0;  // filter() calls: one per tick
   uint32_t calibrated_at_tick_ = 0;
+  uint32_t attitude_at_tick_ = 0;  // last tick control_attitude() ran
 };
 
 using FixedChain = FlightChain<chain::FixedNumbers>;
