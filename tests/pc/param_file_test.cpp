@@ -92,7 +92,8 @@ TEST(ParamFile, BadLinesAreNamedWithTheirLineNumbers) {
 TEST(ParamFile, HugeNumbersAreOutOfRangeNotUndefined) {
   const qrterm::ParamFileContents file = parse_param_file("c2 = 99999999999999999999999\nc1 = -1e400\n");
   ASSERT_EQ(file.errors.size(), 2u);
-  EXPECT_NE(file.errors[0].message.find("is outside 1 .. 16777216"), std::string::npos) << file.errors[0].message;
+  const std::string c2_max = std::to_string(wire::find_parameter(static_cast<uint8_t>(wire::ParamId::kalman_c2))->max);
+  EXPECT_NE(file.errors[0].message.find("is outside 1 .. " + c2_max), std::string::npos) << file.errors[0].message;
   EXPECT_NE(file.errors[1].message.find("not a number"), std::string::npos) << "no exponents";
 }
 
