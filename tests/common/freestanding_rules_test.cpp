@@ -4,37 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 #include <regex>
-#include <sstream>
 #include <string>
 
-namespace {
+#include "../support/source_text.hpp"
 
-// The source without comments and string literals, so prose may mention what code may not use.
-std::string code_of(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  std::stringstream all;
-  all << in.rdbuf();
-  const std::string text = all.str();
-  std::string code;
-  for (size_t i = 0; i < text.size(); ++i) {
-    if (text.compare(i, 2, "//") == 0) {
-      while (i < text.size() && text[i] != '\n') ++i;
-      code += '\n';
-    } else if (text[i] == '"') {
-      code += "\"\"";
-      for (++i; i < text.size() && text[i] != '"'; ++i) {
-        if (text[i] == '\\') ++i;
-      }
-    } else {
-      code += text[i];
-    }
-  }
-  return code;
-}
-
-}  // namespace
+using test_support::code_of;
 
 TEST(FreestandingRules, CommonUsesOnlyAllowedHeadersAndNoForbiddenFeatures) {
   const std::regex include(R"(#include\s*<([^>]+)>)");
