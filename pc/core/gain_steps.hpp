@@ -24,10 +24,10 @@ inline constexpr GainStep kGainSteps[] = {
     {Action::p1_down, wire::ParamId::roll_pitch_p1, -64, 1},
     {Action::p2_up, wire::ParamId::roll_pitch_p2, 40, 1},        // 2.5 in the Q4 gain
     {Action::p2_down, wire::ParamId::roll_pitch_p2, -40, 1},
-    {Action::c1_up, wire::ParamId::kalman_c1, 0, 2},
-    {Action::c1_down, wire::ParamId::kalman_c1, 0, -2},
-    {Action::c2_up, wire::ParamId::kalman_c2, 0, 2},
-    {Action::c2_down, wire::ParamId::kalman_c2, 0, -2},
+    {Action::c1_up, wire::ParamId::attitude_c1, 0, 2},
+    {Action::c1_down, wire::ParamId::attitude_c1, 0, -2},
+    {Action::c2_up, wire::ParamId::attitude_c2, 0, 2},
+    {Action::c2_down, wire::ParamId::attitude_c2, 0, -2},
 };
 
 // The row for an action, or null when the action is no gain step.

@@ -214,8 +214,8 @@ void Cockpit::draw_pilot(const Console& console, int width) {
     const char* label;
   };
   constexpr Gain kGains[] = {{wire::ParamId::yaw_p, "yaw P"}, {wire::ParamId::roll_pitch_p1, "P1"},
-                             {wire::ParamId::roll_pitch_p2, "P2"}, {wire::ParamId::kalman_c1, "C1"},
-                             {wire::ParamId::kalman_c2, "C2"}};
+                             {wire::ParamId::roll_pitch_p2, "P2"}, {wire::ParamId::attitude_c1, "C1"},
+                             {wire::ParamId::attitude_c2, "C2"}};
   int column = 10;
   bool unconfirmed = false;
   for (const Gain& gain : kGains) {

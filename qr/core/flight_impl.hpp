@@ -197,7 +197,7 @@ void Flight<Chain>::apply_parameters() {
   l.link_timeout_us = get(ParamId::link_timeout_ms) * 1000u;
   l.battery_warn_mv = static_cast<uint16_t>(get(ParamId::battery_warning_mv));
   l.battery_panic_mv = static_cast<uint16_t>(get(ParamId::battery_panic_mv));
-  l.tilt_limit_mrad = static_cast<int32_t>(get(ParamId::tilt_limit));
+  l.tilt_limit_mrad = static_cast<int32_t>(get(ParamId::tilt_limit_mrad));
   l.panic_level = static_cast<uint16_t>(get(ParamId::panic_level));
   l.panic_hold_us = get(ParamId::panic_hold_ms) * 1000u;
   l.panic_ramp_us = get(ParamId::panic_ramp_ms) * 1000u;

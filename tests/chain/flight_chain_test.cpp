@@ -63,8 +63,8 @@ ControlInput sticks(uint16_t lift, int16_t roll = 0, int16_t pitch = 0, int16_t 
 // estimator that follows the accelerometer within 0.06 s (C1 = 64, C2 = 4 C1^2).
 wire::ParameterValues quick_estimator() {
   wire::ParameterValues p;
-  EXPECT_EQ(p.set(static_cast<uint8_t>(wire::ParamId::kalman_c1), 64), wire::NackReason::none);
-  EXPECT_EQ(p.set(static_cast<uint8_t>(wire::ParamId::kalman_c2), 4 * 64 * 64), wire::NackReason::none);
+  EXPECT_EQ(p.set(static_cast<uint8_t>(wire::ParamId::attitude_c1), 64), wire::NackReason::none);
+  EXPECT_EQ(p.set(static_cast<uint8_t>(wire::ParamId::attitude_c2), 4 * 64 * 64), wire::NackReason::none);
   return p;
 }
 
@@ -180,7 +180,7 @@ TEST(FlightChain, ParametersReachTheBlocks) {
   wire::ParameterValues values;
   ASSERT_EQ(values.set(static_cast<uint8_t>(wire::ParamId::filter_cutoff_hz), 50), wire::NackReason::none);
   ASSERT_EQ(values.set(static_cast<uint8_t>(wire::ParamId::idle_level), 300), wire::NackReason::none);
-  ASSERT_EQ(values.set(static_cast<uint8_t>(wire::ParamId::max_yaw_rate), 1024), wire::NackReason::none);
+  ASSERT_EQ(values.set(static_cast<uint8_t>(wire::ParamId::max_yaw_rate_rad_s), 1024), wire::NackReason::none);
   p.chain.set_parameters(values);
   EXPECT_EQ(p.chain.cutoff_hz(), 50);
   p.calibrate_level();

@@ -96,7 +96,7 @@ class GroundStation {
     const uint32_t i = count_++;
     switch (i % 7) {
       case 0: submit(ModeChange{0, static_cast<Mode>(i / 7 % kModeCount)}, now); break;
-      case 1: submit(ParamSet{0, static_cast<uint8_t>(ParamId::kalman_c2), static_cast<int32_t>(i / 7 % 50 == 0 ? 0 : i)}, now); break;
+      case 1: submit(ParamSet{0, static_cast<uint8_t>(ParamId::attitude_c2), static_cast<int32_t>(i / 7 % 50 == 0 ? 0 : i)}, now); break;
       case 2: submit(ParamGet{0, static_cast<uint8_t>(i / 7 % (kParameterCount + 1) + 1)}, now); break;
       case 3: submit(LogStart{0, static_cast<uint8_t>(i / 7 % 3 + 1)}, now); break;
       case 4: submit(LogStop{}, now); break;

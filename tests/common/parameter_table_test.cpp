@@ -46,7 +46,7 @@ TEST(ParameterTable, DefaultsTheSafetyRulesName) {
   EXPECT_EQ(default_of(ParamId::battery_panic_mv), 10500);
   EXPECT_GT(default_of(ParamId::battery_warning_mv), default_of(ParamId::battery_panic_mv));
   // 45 degrees in mrad: 1000 * pi / 4 = 785.4.
-  EXPECT_EQ(default_of(ParamId::tilt_limit), 785);
+  EXPECT_EQ(default_of(ParamId::tilt_limit_mrad), 785);
   EXPECT_LT(default_of(ParamId::idle_level), default_of(ParamId::panic_level));
 }
 
@@ -64,9 +64,9 @@ TEST(ParameterTable, EveryParameterTheIssueListsIsThere) {
 // The defaults make it critically damped, and the range lets C2 = 4 C1^2 reach well past them
 // (docs/signal-chain.md: C1 of seconds for free flight).
 TEST(ParameterTable, AttitudeFilterDefaultsAreCriticallyDampedAndTheRangeAllowsIt) {
-  const int64_t c1 = default_of(ParamId::kalman_c1), c2 = default_of(ParamId::kalman_c2);
+  const int64_t c1 = default_of(ParamId::attitude_c1), c2 = default_of(ParamId::attitude_c2);
   EXPECT_EQ(c2, 4 * c1 * c1);
-  const int64_t c2_max = find_parameter(static_cast<uint8_t>(ParamId::kalman_c2))->max;
+  const int64_t c2_max = find_parameter(static_cast<uint8_t>(ParamId::attitude_c2))->max;
   EXPECT_GE(c2_max, 4 * (2 * c1) * (2 * c1)) << "C1 twice the default still damped";
 }
 
@@ -91,12 +91,12 @@ TEST(ParameterValues, StartAtDefaultsAndAcceptOnlyKnownIdsInRange) {
   wire::ParameterValues values;
   for (const ParameterSpec& spec : kParameterTable) EXPECT_EQ(values.get(spec.id), spec.default_value);
 
-  const ParameterSpec& tilt = *find_parameter(static_cast<uint8_t>(ParamId::tilt_limit));
-  EXPECT_EQ(values.set(static_cast<uint8_t>(ParamId::tilt_limit), tilt.max), NackReason::none);
-  EXPECT_EQ(values.get(ParamId::tilt_limit), tilt.max);
-  EXPECT_EQ(values.set(static_cast<uint8_t>(ParamId::tilt_limit), tilt.max + 1), NackReason::bad_value);
-  EXPECT_EQ(values.set(static_cast<uint8_t>(ParamId::tilt_limit), tilt.min - 1), NackReason::bad_value);
-  EXPECT_EQ(values.get(ParamId::tilt_limit), tilt.max) << "a refused value changes nothing";
+  const ParameterSpec& tilt = *find_parameter(static_cast<uint8_t>(ParamId::tilt_limit_mrad));
+  EXPECT_EQ(values.set(static_cast<uint8_t>(ParamId::tilt_limit_mrad), tilt.max), NackReason::none);
+  EXPECT_EQ(values.get(ParamId::tilt_limit_mrad), tilt.max);
+  EXPECT_EQ(values.set(static_cast<uint8_t>(ParamId::tilt_limit_mrad), tilt.max + 1), NackReason::bad_value);
+  EXPECT_EQ(values.set(static_cast<uint8_t>(ParamId::tilt_limit_mrad), tilt.min - 1), NackReason::bad_value);
+  EXPECT_EQ(values.get(ParamId::tilt_limit_mrad), tilt.max) << "a refused value changes nothing";
   EXPECT_EQ(values.set(0, 1), NackReason::unknown_parameter);
   EXPECT_EQ(values.set(200, 1), NackReason::unknown_parameter);
 }

@@ -91,7 +91,7 @@ TEST(Console, ClosedLineIsLinkLostAtOnce) {
 TEST(Console, SendsEveryParameterAtConnectOneAtATime) {
   Console::Setup setup;
   setup.params.set(static_cast<uint8_t>(wire::ParamId::roll_pitch_p1), 1088);
-  setup.params.set(static_cast<uint8_t>(wire::ParamId::kalman_c2), 5000);
+  setup.params.set(static_cast<uint8_t>(wire::ParamId::attitude_c2), 5000);
   Bench b(setup);
   b.qr.telemetry = false;
   b.run(100);
@@ -100,7 +100,7 @@ TEST(Console, SendsEveryParameterAtConnectOneAtATime) {
   b.connect();
   EXPECT_EQ(count_requests(b, wire::MessageType::param_set), wire::kParameterCount);
   EXPECT_EQ(b.qr.params.get(wire::ParamId::roll_pitch_p1), 1088);
-  EXPECT_EQ(b.qr.params.get(wire::ParamId::kalman_c2), 5000);
+  EXPECT_EQ(b.qr.params.get(wire::ParamId::attitude_c2), 5000);
   EXPECT_EQ(b.console.reported(wire::ParamId::roll_pitch_p1), 1088) << "the QR's report is what the screen shows";
   EXPECT_EQ(b.console.parameters_to_send(), 0u);
 }
@@ -414,12 +414,12 @@ TEST(Console, GainKeysStepTheParameterAndSendIt) {
   EXPECT_EQ(b.qr.params.get(wire::ParamId::yaw_p), default_of(wire::ParamId::yaw_p) + 80);  // +5 +5 -5 in Q4
   b.keys("e");
   b.run(100);
-  EXPECT_EQ(b.qr.params.get(wire::ParamId::kalman_c1),
-            std::min(2 * default_of(wire::ParamId::kalman_c1), spec_of(wire::ParamId::kalman_c1).max));
+  EXPECT_EQ(b.qr.params.get(wire::ParamId::attitude_c1),
+            std::min(2 * default_of(wire::ParamId::attitude_c1), spec_of(wire::ParamId::attitude_c1).max));
   b.keys("ff");
   b.run(100);
-  const int32_t c2 = default_of(wire::ParamId::kalman_c2) / 4;
-  EXPECT_EQ(b.qr.params.get(wire::ParamId::kalman_c2), c2);
+  const int32_t c2 = default_of(wire::ParamId::attitude_c2) / 4;
+  EXPECT_EQ(b.qr.params.get(wire::ParamId::attitude_c2), c2);
   EXPECT_TRUE(b.logged("c2 = " + std::to_string(c2)));
 }
 

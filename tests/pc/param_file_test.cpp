@@ -39,13 +39,13 @@ TEST(ParamFile, RoundTripOfEveryParameterIsExact) {
 TEST(ParamFile, ValuesAreInTheTablesRealUnits) {
   EXPECT_EQ(qrterm::format_real(spec_of(wire::ParamId::roll_pitch_p1), 1088), "4.25");
   EXPECT_EQ(qrterm::format_real(spec_of(wire::ParamId::yaw_p), 1600), "100");
-  EXPECT_EQ(qrterm::format_real(spec_of(wire::ParamId::max_yaw_rate), 1), "0.0009765625");
+  EXPECT_EQ(qrterm::format_real(spec_of(wire::ParamId::max_yaw_rate_rad_s), 1), "0.0009765625");
   EXPECT_EQ(qrterm::format_real(spec_of(wire::ParamId::yaw_p), -8), "-0.5");
   const qrterm::ParamFileContents file = parse_param_file("p1 = 4.25\nyaw_p=100.5\nmax_yaw_rate = 2\n");
   ASSERT_TRUE(file.errors.empty());
   EXPECT_EQ(file.values.get(wire::ParamId::roll_pitch_p1), 1088);
   EXPECT_EQ(file.values.get(wire::ParamId::yaw_p), 1608);
-  EXPECT_EQ(file.values.get(wire::ParamId::max_yaw_rate), 2048);
+  EXPECT_EQ(file.values.get(wire::ParamId::max_yaw_rate_rad_s), 2048);
 }
 
 TEST(ParamFile, ValueBetweenStepsGoesToTheNearest) {
@@ -57,8 +57,8 @@ TEST(ParamFile, ValueBetweenStepsGoesToTheNearest) {
 TEST(ParamFile, ParametersTheFileDoesNotNameKeepTheirDefaults) {
   const qrterm::ParamFileContents file = parse_param_file("# only one\n\n   c1 = 128   # halved\n");
   ASSERT_TRUE(file.errors.empty());
-  EXPECT_EQ(file.values.get(wire::ParamId::kalman_c1), 128);
-  EXPECT_EQ(file.values.get(wire::ParamId::kalman_c2), spec_of(wire::ParamId::kalman_c2).default_value);
+  EXPECT_EQ(file.values.get(wire::ParamId::attitude_c1), 128);
+  EXPECT_EQ(file.values.get(wire::ParamId::attitude_c2), spec_of(wire::ParamId::attitude_c2).default_value);
   ASSERT_EQ(file.listed.size(), 1u);
 }
 
@@ -92,7 +92,7 @@ TEST(ParamFile, BadLinesAreNamedWithTheirLineNumbers) {
 TEST(ParamFile, HugeNumbersAreOutOfRangeNotUndefined) {
   const qrterm::ParamFileContents file = parse_param_file("c2 = 99999999999999999999999\nc1 = -1e400\n");
   ASSERT_EQ(file.errors.size(), 2u);
-  const std::string c2_max = std::to_string(wire::find_parameter(static_cast<uint8_t>(wire::ParamId::kalman_c2))->max);
+  const std::string c2_max = std::to_string(wire::find_parameter(static_cast<uint8_t>(wire::ParamId::attitude_c2))->max);
   EXPECT_NE(file.errors[0].message.find("is outside 1 .. " + c2_max), std::string::npos) << file.errors[0].message;
   EXPECT_NE(file.errors[1].message.find("not a number"), std::string::npos) << "no exponents";
 }

@@ -31,7 +31,7 @@ void pitch_step(ManoeuvreStep& m) {
 
 // Yaw stick: full stick is the max_yaw_rate parameter (Q10 rad/s).
 void yaw_rate_step(ManoeuvreStep& m) {
-  const double max_rate = std::ldexp(m.parameters.get(wire::ParamId::max_yaw_rate), -10);
+  const double max_rate = std::ldexp(m.parameters.get(wire::ParamId::max_yaw_rate_rad_s), -10);
   m.sticks.yaw = stick(m.spec.amount / max_rate * 1000);
 }
 

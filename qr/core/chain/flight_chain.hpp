@@ -54,13 +54,13 @@ class FlightChain {
   void set_parameters(const wire::ParameterValues& p) {
     using wire::ParamId;
     filters_.set_cutoff(p.get(ParamId::filter_cutoff_hz));
-    estimator_.set_divisors(p.get(ParamId::kalman_c1), p.get(ParamId::kalman_c2));
+    estimator_.set_divisors(p.get(ParamId::attitude_c1), p.get(ParamId::attitude_c2));
     yaw_.set_gain(p.get(ParamId::yaw_p));
     for (auto& axis : tilt_) {
       axis.set_gains(p.get(ParamId::roll_pitch_p1), p.get(ParamId::roll_pitch_p2), p.get(ParamId::roll_pitch_i),
                      p.get(ParamId::roll_pitch_d));
     }
-    pilot_.set_max_yaw_rate(p.get(ParamId::max_yaw_rate));
+    pilot_.set_max_yaw_rate(p.get(ParamId::max_yaw_rate_rad_s));
     mixer_.set_idle(p.get(ParamId::idle_level));
   }
 
