@@ -11,31 +11,52 @@
 
 namespace wire {
 
+// The rows, once: identifier, wire id, Q format (frac bits), min, max, default (raw), unit, meaning.
+// The identifier is both the ParamId enumerator and the parameter's name (console, parameter files,
+// qrsim --param, docs), so the two cannot disagree; a name ends in its unit where it has one (_ms, _hz, _mv,
+// _mrad, _rad_s); gains and engine levels carry theirs in the unit column.
+// Gains are in the units their controllers use: "engine units" are the 0..1000 engine scale;
+// "thrust units" are the mixer's per-engine thrust, 1000 = one engine at full speed
+// (qr/core/chain/engine_mixer.hpp), in which the controllers' moments are expressed.
+// The attitude estimator is a complementary filter (qr/core/chain/attitude_estimator.hpp): each
+// sample the angle moves 1/C1 of its error toward the accelerometer angle, and the gyro bias
+// moves by the error x fs / C2; sqrt(C2) / (2 C1) is the damping, so C2 = 4 C1^2 is critical.
+// docs/parameters.md is generated from these rows (qrparams --markdown).
+#define WIRE_PARAMETER_ROWS(ROW)                                                                                  \
+  ROW(yaw_p, 1, 4, 0, 16000, 4800, "thrust units per rad/s", "yaw rate controller gain")                          \
+  ROW(roll_pitch_p1, 2, 8, 0, 5120, 1408, "1/s", "roll/pitch angle loop: rate set-point per rad of angle error")  \
+  ROW(roll_pitch_p2, 3, 4, 0, 16000, 2560, "thrust units per rad/s", "roll/pitch rate loop gain")                 \
+  ROW(attitude_c1, 4, 0, 1, 65535, 8000, "samples",                                                               \
+      "attitude estimator (complementary filter): accelerometer angle correction divisor; the angle follows "    \
+      "the accelerometer with a time constant of C1 samples")                                                    \
+  ROW(attitude_c2, 5, 0, 1, 1073741824, 256000000, "samples^2",                                                   \
+      "attitude estimator (complementary filter): gyro bias correction divisor; bias += angle error x fs / C2, " \
+      "C2 = 4 C1^2 is critically damped")                                                                        \
+  ROW(filter_cutoff_hz, 6, 0, 1, 250, 20, "Hz", "sensor low-pass cut-off")                                        \
+  ROW(telemetry_rate_hz, 7, 0, 1, 100, 50, "Hz", "fast telemetry group rate")                                     \
+  ROW(link_timeout_ms, 8, 0, 50, 2000, 250, "ms", "no valid frame for this long in flight: panic")                \
+  ROW(battery_warning_mv, 9, 0, 9000, 12600, 11100, "mV", "below this: warning")                                  \
+  ROW(battery_panic_mv, 10, 0, 9000, 12600, 10500, "mV", "below this in flight: panic")                           \
+  ROW(tilt_limit_mrad, 11, 0, 87, 1396, 785, "mrad", "tilt beyond this in yaw/full control: panic (785 = 45 deg)") \
+  ROW(max_yaw_rate_rad_s, 12, 10, 0, 8192, 2048, "rad/s", "yaw rate set-point at full stick")                     \
+  ROW(panic_level, 13, 0, 0, 1000, 350, "engine units", "engines hold at most this while panicking")              \
+  ROW(panic_hold_ms, 14, 0, 0, 10000, 2000, "ms", "panic: time at the panic level before ramping down")           \
+  ROW(panic_ramp_ms, 15, 0, 0, 10000, 1000, "ms", "panic: ramp from panic level to zero")                         \
+  ROW(idle_level, 16, 0, 0, 500, 180, "engine units", "lowest engine value while lift > 0 in flight")             \
+  ROW(log_divider, 17, 0, 1, 1000, 10, "control periods", "write a log line every this many periods")             \
+  ROW(roll_pitch_i, 18, 4, 0, 16000, 1280, "thrust units per rad", "roll/pitch rate loop integral gain")          \
+  ROW(roll_pitch_d, 19, 8, 0, 5120, 1280, "thrust units per rad/s^2",                                             \
+      "roll/pitch rate loop derivative gain (on the measured rate)")
+
 enum class ParamId : uint8_t {
-  yaw_p = 1,
-  roll_pitch_p1 = 2,
-  roll_pitch_p2 = 3,
-  attitude_c1 = 4,
-  attitude_c2 = 5,
-  filter_cutoff_hz = 6,
-  telemetry_rate_hz = 7,
-  link_timeout_ms = 8,
-  battery_warning_mv = 9,
-  battery_panic_mv = 10,
-  tilt_limit_mrad = 11,
-  max_yaw_rate_rad_s = 12,
-  panic_level = 13,
-  panic_hold_ms = 14,
-  panic_ramp_ms = 15,
-  idle_level = 16,
-  log_divider = 17,
-  roll_pitch_i = 18,
-  roll_pitch_d = 19,
+#define WIRE_PARAMETER_ENUMERATOR(name, id, frac_bits, min, max, default_value, unit, meaning) name = id,
+  WIRE_PARAMETER_ROWS(WIRE_PARAMETER_ENUMERATOR)
+#undef WIRE_PARAMETER_ENUMERATOR
 };
 
 struct ParameterSpec {
   ParamId id;
-  const char* name;
+  const char* name;   // the enumerator's identifier, spelled the same
   uint8_t frac_bits;  // Q format: value = raw / 2^frac_bits
   int32_t min;        // raw, inclusive
   int32_t max;        // raw, inclusive
@@ -44,32 +65,23 @@ struct ParameterSpec {
   const char* meaning;
 };
 
-// Gains are in the units their controllers use: "engine units" are the 0..1000 engine scale;
-// "thrust units" are the mixer's per-engine thrust, 1000 = one engine at full speed
-// (qr/core/chain/engine_mixer.hpp), in which the controllers' moments are expressed.
 inline constexpr ParameterSpec kParameterTable[] = {
-    {ParamId::yaw_p, "yaw_p", 4, 0, 16000, 4800, "thrust units per rad/s", "yaw rate controller gain"},
-    {ParamId::roll_pitch_p1, "p1", 8, 0, 5120, 1408, "1/s", "roll/pitch angle loop: rate set-point per rad of angle error"},
-    {ParamId::roll_pitch_p2, "p2", 4, 0, 16000, 2560, "thrust units per rad/s", "roll/pitch rate loop gain"},
-    {ParamId::attitude_c1, "c1", 0, 1, 65535, 8000, "samples", "attitude filter: angle correction divisor"},
-    {ParamId::attitude_c2, "c2", 0, 1, 1073741824, 256000000, "samples", "attitude filter: gyro bias correction divisor"},
-    {ParamId::filter_cutoff_hz, "filter_cutoff", 0, 1, 250, 20, "Hz", "sensor low-pass cut-off"},
-    {ParamId::telemetry_rate_hz, "telemetry_rate", 0, 1, 100, 50, "Hz", "fast telemetry group rate"},
-    {ParamId::link_timeout_ms, "link_timeout", 0, 50, 2000, 250, "ms", "no valid frame for this long in flight: panic"},
-    {ParamId::battery_warning_mv, "battery_warning", 0, 9000, 12600, 11100, "mV", "below this: warning"},
-    {ParamId::battery_panic_mv, "battery_panic", 0, 9000, 12600, 10500, "mV", "below this in flight: panic"},
-    {ParamId::tilt_limit_mrad, "tilt_limit", 0, 87, 1396, 785, "mrad", "tilt beyond this in yaw/full control: panic (785 = 45 deg)"},
-    {ParamId::max_yaw_rate_rad_s, "max_yaw_rate", 10, 0, 8192, 2048, "rad/s", "yaw rate set-point at full stick"},
-    {ParamId::panic_level, "panic_level", 0, 0, 1000, 350, "engine units", "engines hold at most this while panicking"},
-    {ParamId::panic_hold_ms, "panic_hold", 0, 0, 10000, 2000, "ms", "panic: time at the panic level before ramping down"},
-    {ParamId::panic_ramp_ms, "panic_ramp", 0, 0, 10000, 1000, "ms", "panic: ramp from panic level to zero"},
-    {ParamId::idle_level, "idle_level", 0, 0, 500, 180, "engine units", "lowest engine value while lift > 0 in flight"},
-    {ParamId::log_divider, "log_divider", 0, 1, 1000, 10, "control periods", "write a log line every this many periods"},
-    {ParamId::roll_pitch_i, "roll_pitch_i", 4, 0, 16000, 1280, "thrust units per rad", "roll/pitch rate loop integral gain"},
-    {ParamId::roll_pitch_d, "roll_pitch_d", 8, 0, 5120, 1280, "thrust units per rad/s^2", "roll/pitch rate loop derivative gain (on the measured rate)"},
+#define WIRE_PARAMETER_SPEC(name, id, frac_bits, min, max, default_value, unit, meaning) \
+  {ParamId::name, #name, frac_bits, min, max, default_value, unit, meaning},
+    WIRE_PARAMETER_ROWS(WIRE_PARAMETER_SPEC)
+#undef WIRE_PARAMETER_SPEC
 };
 
 inline constexpr size_t kParameterCount = sizeof(kParameterTable) / sizeof(kParameterTable[0]);
+
+// Ids run 1..kParameterCount in row order (find_parameter finds a row by subtraction).
+constexpr bool ids_follow_rows() {
+  for (size_t row = 0; row < kParameterCount; ++row) {
+    if (static_cast<size_t>(kParameterTable[row].id) != row + 1) return false;
+  }
+  return true;
+}
+static_assert(ids_follow_rows(), "parameter ids must run 1, 2, 3, ... in table order");
 
 // The row for a wire id, or nullptr.
 const ParameterSpec* find_parameter(uint8_t id);

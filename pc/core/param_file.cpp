@@ -23,6 +23,31 @@ std::string known_names() {
 
 uint8_t id_byte(wire::ParamId id) { return static_cast<uint8_t>(id); }
 
+// Names parameter files used before the names took their units and their enumerators' spelling:
+// a file saved then is refused with the new name in the message rather than read by a second name.
+struct FormerName {
+  const char* name;
+  wire::ParamId now;
+};
+constexpr FormerName kFormerNames[] = {
+    {"p1", wire::ParamId::roll_pitch_p1},          {"p2", wire::ParamId::roll_pitch_p2},
+    {"c1", wire::ParamId::attitude_c1},            {"c2", wire::ParamId::attitude_c2},
+    {"filter_cutoff", wire::ParamId::filter_cutoff_hz},   {"telemetry_rate", wire::ParamId::telemetry_rate_hz},
+    {"link_timeout", wire::ParamId::link_timeout_ms},     {"battery_warning", wire::ParamId::battery_warning_mv},
+    {"battery_panic", wire::ParamId::battery_panic_mv},   {"tilt_limit", wire::ParamId::tilt_limit_mrad},
+    {"max_yaw_rate", wire::ParamId::max_yaw_rate_rad_s},  {"panic_hold", wire::ParamId::panic_hold_ms},
+    {"panic_ramp", wire::ParamId::panic_ramp_ms},
+};
+
+std::string unknown_name_error(const std::string& name) {
+  for (const FormerName& former : kFormerNames) {
+    if (name == former.name) {
+      return "\"" + name + "\" is now called " + wire::find_parameter(id_byte(former.now))->name;
+    }
+  }
+  return "unknown parameter \"" + name + "\" (known: " + known_names() + ")";
+}
+
 }  // namespace
 
 std::string format_real(const wire::ParameterSpec& spec, int32_t raw) {
@@ -60,7 +85,7 @@ ParamFileContents parse_param_file(const std::string& text) {
   for (const Setting& setting : settings.settings) {
     const wire::ParameterSpec* spec = find_by_name(setting.name);
     if (spec == nullptr) {
-      out.errors.push_back({setting.line, "unknown parameter \"" + setting.name + "\" (known: " + known_names() + ")"});
+      out.errors.push_back({setting.line, unknown_name_error(setting.name)});
       continue;
     }
     bool repeated = false;
@@ -91,7 +116,7 @@ ParamFileContents parse_param_file(const std::string& text) {
 std::string format_param_file(const wire::ParameterValues& values) {
   std::string text =
       "# qrterm parameters: sent to the QR at connect, written back at exit.\n"
-      "# name = value, in the unit given; docs/protocol.md section 9 has the table.\n";
+      "# name = value, in the unit given; docs/parameters.md has the table.\n";
   for (const wire::ParameterSpec& spec : wire::kParameterTable) {
     text += "\n# " + std::string(spec.meaning) + " [" + spec.unit + "], " + format_real(spec, spec.min) + " .. " +
             format_real(spec, spec.max) + ", default " + format_real(spec, spec.default_value) + "\n";

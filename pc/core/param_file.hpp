@@ -1,6 +1,6 @@
 // The parameter file: the values the console sends the QR at connect and saves at exit, as
 // "name = value" lines with the names of the shared parameter table (common/parameter_table.hpp)
-// and values in the table's real units (yaw_p = 100, p1 = 4.25), so a person can edit it. The
+// and values in the table's real units (yaw_p = 100, roll_pitch_p1 = 4.25), so a person can edit it. The
 // wire carries raw integers; a value converts to the nearest raw step (1/2^frac of the unit).
 #pragma once
 

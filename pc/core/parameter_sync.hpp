@@ -54,7 +54,7 @@ class ParameterSync {
   bool read_back_owed_ = false;
 };
 
-// "p1 = 4.25": a parameter and a raw value in its real unit.
+// "roll_pitch_p1 = 4.25": a parameter and a raw value in its real unit.
 std::string param_text(wire::ParamId id, int32_t raw);
 
 }  // namespace qrterm

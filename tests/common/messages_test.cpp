@@ -110,7 +110,12 @@ TEST(Messages, RangeChecksOfTheDocumentedFields) {
   EXPECT_FALSE(accepted(Control{1001, 0, 0, 0}));
   EXPECT_FALSE(accepted(Control{0, -1001, 0, 0}));
   EXPECT_TRUE(accepted(ModeChange{0, Mode::full_control}));
-  EXPECT_FALSE(accepted(ModeChange{0, static_cast<Mode>(6)}));
+  // A mode number with no mode is well formed: the QR answers it unknown_mode, not bad_value.
+  for (int mode = wire::kModeCount; mode <= 255; ++mode) {
+    ModeChange decoded{};
+    ASSERT_TRUE(decode(wire_test::frame_of(encode(ModeChange{3, static_cast<Mode>(mode)})), decoded)) << mode;
+    EXPECT_EQ(static_cast<int>(decoded.mode), mode);
+  }
   EXPECT_FALSE(accepted(LogStart{0, 0}));
   EXPECT_FALSE(accepted(LogStart{0, 4}));
   EXPECT_FALSE(accepted(LogDownload{0, static_cast<LogKind>(2), 0, 0}));

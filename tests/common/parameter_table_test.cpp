@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <set>
 #include <string>
+#include <utility>
 
 #include <common/parameter_table.hpp>
 
@@ -51,13 +52,38 @@ TEST(ParameterTable, DefaultsTheSafetyRulesName) {
 }
 
 TEST(ParameterTable, EveryParameterTheIssueListsIsThere) {
-  for (const char* name : {"yaw_p", "p1", "p2", "c1", "c2", "filter_cutoff", "telemetry_rate", "link_timeout",
-                           "battery_panic", "battery_warning", "tilt_limit", "panic_hold", "panic_level",
-                           "roll_pitch_i", "roll_pitch_d"}) {
+  for (const char* name : {"yaw_p", "roll_pitch_p1", "roll_pitch_p2", "attitude_c1", "attitude_c2", "filter_cutoff_hz",
+                           "telemetry_rate_hz", "link_timeout_ms", "battery_panic_mv", "battery_warning_mv",
+                           "tilt_limit_mrad", "panic_hold_ms", "panic_level", "roll_pitch_i", "roll_pitch_d"}) {
     bool found = false;
     for (const ParameterSpec& spec : kParameterTable) found = found || std::string(spec.name) == name;
     EXPECT_TRUE(found) << name;
   }
+}
+
+// A name says its unit: every parameter in one of these units ends in the unit's suffix, and no
+// name carries a suffix its unit does not match.
+TEST(ParameterTable, NamesEndInTheirUnit) {
+  const std::pair<const char*, const char*> suffixes[] = {
+      {"ms", "_ms"}, {"Hz", "_hz"}, {"mV", "_mv"}, {"mrad", "_mrad"}, {"rad/s", "_rad_s"}};
+  const auto ends_with = [](const std::string& text, const std::string& end) {
+    return text.size() >= end.size() && text.compare(text.size() - end.size(), end.size(), end) == 0;
+  };
+  for (const ParameterSpec& spec : kParameterTable) {
+    for (const auto& [unit, suffix] : suffixes) {
+      EXPECT_EQ(std::string(spec.unit) == unit, ends_with(spec.name, suffix)) << spec.name << " [" << spec.unit << "]";
+    }
+  }
+}
+
+// The enumerators are spelled as the names: the table's rows make both from one identifier, and
+// these spot checks fail if that ever stops being so.
+TEST(ParameterTable, EnumeratorsAreTheNames) {
+  EXPECT_STREQ(find_parameter(static_cast<uint8_t>(ParamId::roll_pitch_p1))->name, "roll_pitch_p1");
+  EXPECT_STREQ(find_parameter(static_cast<uint8_t>(ParamId::attitude_c2))->name, "attitude_c2");
+  EXPECT_STREQ(find_parameter(static_cast<uint8_t>(ParamId::link_timeout_ms))->name, "link_timeout_ms");
+  EXPECT_STREQ(find_parameter(static_cast<uint8_t>(ParamId::tilt_limit_mrad))->name, "tilt_limit_mrad");
+  static_assert(wire::ids_follow_rows());
 }
 
 // The attitude filter's bias loop is s^2 + s / (C1 dt) + 1 / (C2 dt^2): damping sqrt(C2) / (2 C1).

@@ -127,7 +127,7 @@ TEST(Console, AValueTheQrDoesNotHoldIsAWarning) {
   b.key('p');
   b.run(50);
   const int32_t console_p2 = default_of(wire::ParamId::roll_pitch_p2) / 16;  // Q4, a whole number
-  const qrterm::LogLine* line = b.log.find_last("the QR has p2 = 30, the console " + std::to_string(console_p2));
+  const qrterm::LogLine* line = b.log.find_last("the QR has roll_pitch_p2 = 30, the console " + std::to_string(console_p2));
   ASSERT_NE(line, nullptr);
   EXPECT_EQ(line->severity, Severity::warning);
 }
@@ -420,7 +420,7 @@ TEST(Console, GainKeysStepTheParameterAndSendIt) {
   b.run(100);
   const int32_t c2 = default_of(wire::ParamId::attitude_c2) / 4;
   EXPECT_EQ(b.qr.params.get(wire::ParamId::attitude_c2), c2);
-  EXPECT_TRUE(b.logged("c2 = " + std::to_string(c2)));
+  EXPECT_TRUE(b.logged("attitude_c2 = " + std::to_string(c2)));
 }
 
 TEST(Console, GainAtTheEndOfItsRangeStaysAndSaysSo) {

@@ -55,6 +55,7 @@ struct FakeQr::Handler {
 };
 
 wire::NackReason FakeQr::change_mode(wire::Mode wanted) {
+  if (!wire::valid_mode(wanted)) return wire::NackReason::unknown_mode;
   if (wanted == wire::Mode::safe || wanted == wire::Mode::panic) {
     // Safe is reached from flight through panic; in safe or calibration a panic lands in safe.
     const bool flying = flight_mode(mode);

@@ -41,7 +41,7 @@ TEST(ParamFile, ValuesAreInTheTablesRealUnits) {
   EXPECT_EQ(qrterm::format_real(spec_of(wire::ParamId::yaw_p), 1600), "100");
   EXPECT_EQ(qrterm::format_real(spec_of(wire::ParamId::max_yaw_rate_rad_s), 1), "0.0009765625");
   EXPECT_EQ(qrterm::format_real(spec_of(wire::ParamId::yaw_p), -8), "-0.5");
-  const qrterm::ParamFileContents file = parse_param_file("p1 = 4.25\nyaw_p=100.5\nmax_yaw_rate = 2\n");
+  const qrterm::ParamFileContents file = parse_param_file("roll_pitch_p1 = 4.25\nyaw_p=100.5\nmax_yaw_rate_rad_s = 2\n");
   ASSERT_TRUE(file.errors.empty());
   EXPECT_EQ(file.values.get(wire::ParamId::roll_pitch_p1), 1088);
   EXPECT_EQ(file.values.get(wire::ParamId::yaw_p), 1608);
@@ -49,13 +49,13 @@ TEST(ParamFile, ValuesAreInTheTablesRealUnits) {
 }
 
 TEST(ParamFile, ValueBetweenStepsGoesToTheNearest) {
-  const qrterm::ParamFileContents file = parse_param_file("p1 = 4.3\n");  // 4.3 * 256 = 1100.8
+  const qrterm::ParamFileContents file = parse_param_file("roll_pitch_p1 = 4.3\n");  // 4.3 * 256 = 1100.8
   ASSERT_TRUE(file.errors.empty());
   EXPECT_EQ(file.values.get(wire::ParamId::roll_pitch_p1), 1101);
 }
 
 TEST(ParamFile, ParametersTheFileDoesNotNameKeepTheirDefaults) {
-  const qrterm::ParamFileContents file = parse_param_file("# only one\n\n   c1 = 128   # halved\n");
+  const qrterm::ParamFileContents file = parse_param_file("# only one\n\n   attitude_c1 = 128   # halved\n");
   ASSERT_TRUE(file.errors.empty());
   EXPECT_EQ(file.values.get(wire::ParamId::attitude_c1), 128);
   EXPECT_EQ(file.values.get(wire::ParamId::attitude_c2), spec_of(wire::ParamId::attitude_c2).default_value);
@@ -66,21 +66,21 @@ TEST(ParamFile, BadLinesAreNamedWithTheirLineNumbers) {
   const qrterm::ParamFileContents file = parse_param_file(
       "yaw_p = 100\n"
       "yawp = 3\n"
-      "p1 4\n"
-      "p2 = fast\n"
-      "c1 = 0\n"
+      "roll_pitch_p1 4\n"
+      "roll_pitch_p2 = fast\n"
+      "attitude_c1 = 0\n"
       "yaw_p = 90\n"
-      "p1 =\n"
-      "telemetry_rate = 1e2\n");
+      "roll_pitch_p1 =\n"
+      "telemetry_rate_hz = 1e2\n");
   ASSERT_EQ(file.errors.size(), 7u);
   const std::pair<size_t, const char*> expected[] = {
-      {2, "unknown parameter \"yawp\" (known: yaw_p, p1,"},
-      {3, "expected \"name = value\", found \"p1 4\""},
-      {4, "p2: \"fast\" is not a number"},
-      {5, "c1 = 0 is outside 1 .. 65535 samples"},
+      {2, "unknown parameter \"yawp\" (known: yaw_p, roll_pitch_p1,"},
+      {3, "expected \"name = value\", found \"roll_pitch_p1 4\""},
+      {4, "roll_pitch_p2: \"fast\" is not a number"},
+      {5, "attitude_c1 = 0 is outside 1 .. 65535 samples"},
       {6, "yaw_p is set twice"},
-      {7, "no value for p1"},
-      {8, "telemetry_rate: \"1e2\" is not a number"},
+      {7, "no value for roll_pitch_p1"},
+      {8, "telemetry_rate_hz: \"1e2\" is not a number"},
   };
   for (size_t i = 0; i < 7; ++i) {
     EXPECT_EQ(file.errors[i].line, expected[i].first);
@@ -89,8 +89,21 @@ TEST(ParamFile, BadLinesAreNamedWithTheirLineNumbers) {
   EXPECT_EQ(qrterm::describe("params.txt", {file.errors[0]}).rfind("params.txt:2: unknown parameter", 0), 0u);
 }
 
+// A file saved before the names carried their units is refused, and the message gives each new name.
+TEST(ParamFile, FormerNamesAreRefusedWithTheirNewNames) {
+  const qrterm::ParamFileContents file = parse_param_file("p1 = 4\nlink_timeout = 300\nc2 = 5\n");
+  ASSERT_EQ(file.errors.size(), 3u);
+  EXPECT_NE(file.errors[0].message.find("\"p1\" is now called roll_pitch_p1"), std::string::npos) << file.errors[0].message;
+  EXPECT_NE(file.errors[1].message.find("is now called link_timeout_ms"), std::string::npos) << file.errors[1].message;
+  EXPECT_NE(file.errors[2].message.find("is now called attitude_c2"), std::string::npos) << file.errors[2].message;
+  for (const wire::ParameterSpec& spec : wire::kParameterTable) {
+    const qrterm::ParamFileContents current = parse_param_file(std::string(spec.name) + " = 1\n");
+    for (const qrterm::LineError& e : current.errors) EXPECT_EQ(e.message.find("now called"), std::string::npos) << spec.name;
+  }
+}
+
 TEST(ParamFile, HugeNumbersAreOutOfRangeNotUndefined) {
-  const qrterm::ParamFileContents file = parse_param_file("c2 = 99999999999999999999999\nc1 = -1e400\n");
+  const qrterm::ParamFileContents file = parse_param_file("attitude_c2 = 99999999999999999999999\nattitude_c1 = -1e400\n");
   ASSERT_EQ(file.errors.size(), 2u);
   const std::string c2_max = std::to_string(wire::find_parameter(static_cast<uint8_t>(wire::ParamId::attitude_c2))->max);
   EXPECT_NE(file.errors[0].message.find("is outside 1 .. " + c2_max), std::string::npos) << file.errors[0].message;
@@ -102,10 +115,10 @@ TEST(ParamFile, SavedFileReplacesTheOldOneWhole) {
   ASSERT_NE(::mkdtemp(folder), nullptr);
   const std::string path = std::string(folder) + "/params.txt";
   EXPECT_EQ(qrterm::write_file_atomically(path, "old\n"), "");
-  EXPECT_EQ(qrterm::write_file_atomically(path, "p1 = 4\n"), "");
+  EXPECT_EQ(qrterm::write_file_atomically(path, "roll_pitch_p1 = 4\n"), "");
   std::string text;
   ASSERT_TRUE(qrterm::read_file(path, text));
-  EXPECT_EQ(text, "p1 = 4\n");
+  EXPECT_EQ(text, "roll_pitch_p1 = 4\n");
   EXPECT_NE(qrterm::write_file_atomically(std::string(folder) + "/no/such/folder/p.txt", "x").find("cannot write"), std::string::npos);
   std::remove(path.c_str());
   ::rmdir(folder);
