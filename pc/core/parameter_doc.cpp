@@ -51,9 +51,12 @@ std::string parameters_markdown() {
   }
   text +=
       "\n"
-      "Engine units are the 0..1000 engine scale; thrust units are the mixer's per-engine thrust, 1000 =\n"
-      "one engine at full speed. `attitude_c1` and `attitude_c2` are the divisors of the attitude\n"
-      "estimator, a complementary filter ([signal-chain.md](signal-chain.md)).\n";
+      "Engine units are the 0..1000 engine scale. Thrust units are the per-engine thrust the\n"
+      "controllers' moments are expressed in: 1000 = one engine at full speed, an engine at command ae\n"
+      "gives ae²/1000 ([signal-chain.md](signal-chain.md), engine mapping). `attitude_c1` and\n"
+      "`attitude_c2` are the divisors of the attitude estimator, a complementary filter (not a Kalman\n"
+      "filter): the angle follows the accelerometer with a time constant of C1 samples, and the gyro\n"
+      "bias loop is critically damped at C2 = 4 C1².\n";
   return text;
 }
 

@@ -41,8 +41,8 @@ rate) flying in a simulated IN4073-class quadrotor.
   --seed N         seed of every random source (sensor noise, biases, vibration phases);
                    same seed, same flight (default 1)
   --vehicle FILE   vehicle parameter file (default: the compiled-in sim/vehicles/in4073.txt)
-  --param N=V      scenario: the pilot uploads parameter N (a name from docs/protocol.md,
-                   section 9) with value V in the parameter's unit before flying
+  --param N=V      scenario: the pilot uploads parameter N (a name from docs/parameters.md,
+                   e.g. attitude_c1) with value V in the parameter's unit before flying
   --no-noise       scenario: perfect sensors (no noise, bias, scale error or vibration)
   --trace FILE     scenario: write every control period to FILE as CSV (truth and estimated
                    attitude and rates, set-points, engines, position, battery)
