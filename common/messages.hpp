@@ -23,6 +23,9 @@ using AllMessages = MessageList<Control, ModeChange, ParamSet, ParamGet, LogStar
                                 TelemetryEngines, TelemetrySetpoints, TelemetrySystem, TelemetryLink,
                                 SensorLogPart, TelemetryLogPart, TelemetryTask, LogStatus>;
 
+// What the QR receives: it never decodes a message of the other direction (its parser drops them).
+using PcToQrMessages = MessageList<Control, ModeChange, ParamSet, ParamGet, LogStart, LogStop, LogDownload, Exit>;
+
 template <class... Msgs>
 constexpr bool covers_table(MessageList<Msgs...>) {
   for (const MessageSpec& spec : kMessageTable) {
@@ -31,6 +34,14 @@ constexpr bool covers_table(MessageList<Msgs...>) {
   return sizeof...(Msgs) == kMessageCount && (Message<Msgs> && ...);
 }
 static_assert(covers_table(AllMessages{}), "every table row has exactly one message struct, of the table's length");
+
+template <class... Msgs>
+constexpr bool all_of_direction(MessageList<Msgs...>, Direction direction) {
+  size_t rows = 0;
+  for (const MessageSpec& spec : kMessageTable) rows += spec.direction == direction ? 1 : 0;
+  return rows == sizeof...(Msgs) && ((message_spec(Msgs::kType)->direction == direction) && ...);
+}
+static_assert(all_of_direction(PcToQrMessages{}, Direction::pc_to_qr), "PcToQrMessages: every PC -> QR message");
 
 enum class DispatchResult : uint8_t {
   handled,          // decoded and passed to the handler
@@ -70,6 +81,12 @@ DispatchResult dispatch(const Frame& frame, Handler& handler, MessageList<Msgs..
 template <class Handler>
 DispatchResult dispatch(const Frame& frame, Handler&& handler) {
   return detail::dispatch(frame, handler, AllMessages{});
+}
+
+// The same over a subset of the messages (the QR: PcToQrMessages).
+template <class List, class Handler>
+DispatchResult dispatch(const Frame& frame, Handler&& handler) {
+  return detail::dispatch(frame, handler, List{});
 }
 
 }  // namespace wire

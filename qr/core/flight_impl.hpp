@@ -98,14 +98,18 @@ void Flight<Chain>::run_link() {
 
 template <class Chain>
 void Flight<Chain>::on_frame(const wire::Frame& frame) {
-  last_frame_us_ = tick_us_;  // any frame that passed its check proves the link alive
   const wire::Admission admission = dedup_.admit(frame, uptime_ms_);
   if (admission.duplicate) {
+    last_frame_us_ = tick_us_;  // the resend decoded when it was first applied
     send(wire::reply_frame(frame.type, admission.seq, admission.previous));
     return;
   }
   RequestHandler handler{*this};
-  const wire::DispatchResult result = wire::dispatch(frame, handler);
+  const wire::DispatchResult result = wire::dispatch<wire::PcToQrMessages>(frame, handler);
+  // Only a frame whose every field is in range proves the console alive: a console sending
+  // nothing but out-of-range controls flies on no sticks at all and ends in the link-loss panic
+  // (docs/safety.md), not in a flight on the last good ones.
+  if (result != wire::DispatchResult::invalid_payload) last_frame_us_ = tick_us_;
   if (!admission.request) return;  // control: periodic, never answered
 
   const NackReason answer = result == wire::DispatchResult::handled           ? handler.answer

@@ -36,6 +36,31 @@ TEST(RequestDedup, ANewSequenceNumberOrAnotherTypeIsANewRequest) {
   EXPECT_FALSE(dedup.admit(request(ModeChange{3, Mode::safe}), 10).duplicate) << "sequence numbers are per type";
 }
 
+TEST(RequestDedup, TheSameSequenceNumberWithOtherContentIsANewRequest) {
+  // A console restarted part-way through its numbers reuses a seq for another request: it must be
+  // applied (or refused with a reason), never acked from memory.
+  RequestDedup dedup;
+  dedup.record(request(ParamSet{17, 9, 300}), NackReason::none, 0);
+  EXPECT_FALSE(dedup.admit(request(ParamSet{17, 9, 250}), 500).duplicate) << "another value";
+  EXPECT_FALSE(dedup.admit(request(ParamSet{17, 8, 300}), 500).duplicate) << "another parameter";
+  EXPECT_TRUE(dedup.admit(request(ParamSet{17, 9, 300}), 500).duplicate) << "byte for byte the same";
+
+  dedup.record(request(LogDownload{17, LogKind::sensor, 0, 40}), NackReason::none, 0);
+  EXPECT_FALSE(dedup.admit(request(LogDownload{17, LogKind::sensor, 40, 40}), 500).duplicate);
+}
+
+TEST(RequestDedup, AStopIsNeverAResend) {
+  RequestDedup dedup;
+  for (const Mode stop : {Mode::safe, Mode::panic}) {
+    const Frame frame = request(ModeChange{17, stop});
+    dedup.record(frame, NackReason::none, 0);
+    EXPECT_FALSE(dedup.admit(frame, kResendIntervalMs).duplicate) << "a stop is applied every time it arrives";
+    EXPECT_TRUE(is_stop_request(frame));
+  }
+  EXPECT_FALSE(is_stop_request(request(ModeChange{17, Mode::manual})));
+  EXPECT_FALSE(is_stop_request(request(Exit{17})));
+}
+
 TEST(RequestDedup, UnacknowledgedMessagesAreNotRequests) {
   RequestDedup dedup;
   const Admission a = dedup.admit(request(Control{}), 0);

@@ -150,6 +150,69 @@ TEST_F(FlightTest, ResentRequestIsAnsweredAgainButAppliedOnce) {
   EXPECT_EQ(acks[1].seq, 7);
 }
 
+TEST_F(FlightTest, ARequestReusingASeqWithNewContentIsAppliedNotAckedFromMemory) {
+  // Manual with seq 17, acked and flying; then panic with the same seq 17 (a console restarted
+  // part-way through its numbers): applied, not answered as a resend of the manual request.
+  send(wire::ModeChange{17, Mode::manual});
+  run_ms(5);
+  ASSERT_EQ(flight.mode(), Mode::manual);
+  sticks.lift = 300;
+  run_ms(500);
+  ASSERT_EQ(board.engines.value[0], 300);
+  send(wire::ModeChange{17, Mode::panic});
+  run_ms(5);
+  EXPECT_EQ(flight.mode(), Mode::panic);
+  EXPECT_EQ(got<wire::Ack>().size(), 2u);
+
+  const uint8_t level = static_cast<uint8_t>(wire::ParamId::panic_level);
+  send(wire::ParamSet{17, level, 300});
+  run_ms(5);
+  send(wire::ParamSet{17, level, 250});
+  run_ms(5);
+  EXPECT_EQ(flight.parameters().get(wire::ParamId::panic_level), 250) << "the second value is the one acked";
+}
+
+TEST_F(FlightTest, AStopIsAppliedEvenWhenItIsAResend) {
+  // The stop's first copy arrived in safe (nothing to stop); the pilot then takes off. A late copy
+  // of that stop, byte for byte the same and within the dedup window, must still stop.
+  const wire::ModeChange stop{9, Mode::panic};
+  send(stop);
+  run_ms(5);
+  send(wire::ModeChange{3, Mode::manual});
+  run_ms(5);
+  ASSERT_EQ(flight.mode(), Mode::manual);
+  sticks.lift = 300;
+  run_ms(100);
+  send(stop);  // byte for byte the first copy, within the dedup window
+  run_ms(5);
+  EXPECT_EQ(flight.mode(), Mode::panic);
+}
+
+TEST_F(FlightTest, OutOfRangeControlsAreNotLifeAndEndInTheLinkLossPanic) {
+  request_mode(Mode::manual);
+  run_ms(5);
+  sticks.lift = 500;
+  run_ms(100);
+  ASSERT_EQ(board.engines.value[0], 500);
+  // Control frames with a good check but a field out of range, one field after another: ignored,
+  // so the set-points stay at the last good frame only until the link watchdog ends the flight.
+  const wire::Control bad[] = {{1001, 0, 0, 0}, {500, -1001, 0, 0}, {500, 0, 1001, 0}, {500, 0, 0, -1001}};
+  // The last good frame came 20 ms before the end of run_ms(100).
+  const uint32_t timeout_ms = flight.safety().limits().link_timeout_us / 1000u;
+  for (uint32_t t = 20; t + 20 < timeout_ms; t += 20) {
+    send(bad[(t / 20) % 4]);
+    run_ms(20, false);
+  }
+  EXPECT_EQ(flight.mode(), Mode::manual);
+  EXPECT_EQ(flight.controls().lift, 500) << "a bad frame never reaches the set-points";
+  for (uint32_t t = 0; t < 40; t += 20) {
+    send(bad[0]);
+    run_ms(20, false);
+  }
+  EXPECT_EQ(flight.mode(), Mode::panic);
+  EXPECT_EQ(flight.safety().panic_cause(), PanicCause::link_lost);
+}
+
 TEST_F(FlightTest, EnginesFollowTheMixerInManualAndStayZeroInSafe) {
   sticks.lift = 400;
   run_ms(30);
