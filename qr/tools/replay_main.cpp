@@ -3,7 +3,7 @@
 #include <cstring>
 #include <iostream>
 
-#include "replay.hpp"
+#include <qr/host/replay.hpp>
 
 namespace {
 
@@ -21,13 +21,13 @@ constexpr const char* kUsage =
 int main(int argc, char** argv) {
   const char* in = nullptr;
   const char* out = nullptr;
-  qr::tools::ReplayOptions options;
+  qr::host::ReplayOptions options;
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--help") == 0 || std::strcmp(argv[i], "-h") == 0) {
       std::cout << kUsage;
       return 0;
     } else if (std::strcmp(argv[i], "--double") == 0) {
-      options.arithmetic = qr::tools::ReplayArithmetic::reference_double;
+      options.arithmetic = qr::host::ReplayArithmetic::reference_double;
     } else if ((std::strcmp(argv[i], "--replay") == 0 || std::strcmp(argv[i], "--out") == 0) && i + 1 < argc) {
       (argv[i][2] == 'r' ? in : out) = argv[i + 1];
       ++i;
@@ -40,5 +40,5 @@ int main(int argc, char** argv) {
     std::cerr << "qrreplay: --replay IN.csv and --out OUT.csv are required\n" << kUsage;
     return 2;
   }
-  return qr::tools::run_replay(in, out, std::cerr, options);
+  return qr::host::run_replay(in, out, std::cerr, options);
 }

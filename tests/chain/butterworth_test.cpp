@@ -13,7 +13,7 @@
 #include <qr/core/chain/fixed_numbers.hpp>
 #include <qr/core/chain/sensor_units.hpp>
 #include <qr/tools/filter_response.hpp>
-#include <qr/tools/real_numbers.hpp>
+#include <qr/host/real_numbers.hpp>
 
 #include "chain_test_support.hpp"
 #include "synthetic_flight.hpp"

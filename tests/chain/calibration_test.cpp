@@ -4,7 +4,7 @@
 
 #include <qr/core/chain/fixed_numbers.hpp>
 #include <qr/core/chain/sensor_calibration.hpp>
-#include <qr/tools/real_numbers.hpp>
+#include <qr/host/real_numbers.hpp>
 
 #include "chain_test_support.hpp"
 

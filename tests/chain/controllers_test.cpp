@@ -6,7 +6,7 @@
 
 #include <qr/core/chain/controllers.hpp>
 #include <qr/core/chain/fixed_numbers.hpp>
-#include <qr/tools/real_numbers.hpp>
+#include <qr/host/real_numbers.hpp>
 
 #include "chain_test_support.hpp"
 

@@ -7,7 +7,7 @@
 
 #include <qr/core/chain/engine_mixer.hpp>
 #include <qr/core/chain/fixed_numbers.hpp>
-#include <qr/tools/real_numbers.hpp>
+#include <qr/host/real_numbers.hpp>
 
 #include "chain_test_support.hpp"
 

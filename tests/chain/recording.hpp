@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <string>
 
-#include <qr/tools/replay.hpp>
+#include <qr/host/replay.hpp>
 
 #include "synthetic_flight.hpp"
 
@@ -13,7 +13,7 @@ namespace qr::chain::test {
 
 template <uint32_t Hz>
 std::string synthetic_recording_csv() {
-  std::string csv = tools::replay_input_header() + "\n";
+  std::string csv = host::replay_input_header() + "\n";
   synthetic::Flight<Hz> flight;
   for (uint32_t n = 0; n < synthetic::Flight<Hz>::kTicks; ++n) {
     const synthetic::Tick t = flight.next();

@@ -1,4 +1,4 @@
-// Test mode (qr/tools/replay.hpp): the committed recording replays to the same bytes every time,
+// Test mode (qr/host/replay.hpp): the committed recording replays to the same bytes every time,
 // to the very values the devboard computes (the host/devboard checksum), and to the double
 // reference within stated bounds; bad input fails with its line number and leaves no output.
 #include <gtest/gtest.h>
@@ -10,12 +10,12 @@
 #include <vector>
 
 #include <qr/core/chain/flight_chain.hpp>
-#include <qr/tools/replay.hpp>
+#include <qr/host/replay.hpp>
 
 #include "chain_checksum.hpp"
 #include "recording.hpp"
 
-namespace qr::tools {
+namespace qr::host {
 namespace {
 
 namespace fs = std::filesystem;
@@ -204,4 +204,4 @@ TEST(Replay, HeaderMayEndInCarriageReturnAndBlankLinesAreSkipped) {
 }
 
 }  // namespace
-}  // namespace qr::tools
+}  // namespace qr::host

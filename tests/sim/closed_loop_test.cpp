@@ -12,7 +12,7 @@
 #include <vector>
 
 #include <qr/boards/sim/scenario.hpp>
-#include <qr/tools/replay.hpp>
+#include <qr/host/replay.hpp>
 #include <sim/random.hpp>
 
 namespace {
@@ -129,7 +129,7 @@ TEST(ClosedLoop, ReplayOfASimulatedFlightIsBitIdentical) {
   const qrsim::ScenarioResult flown = qrsim::run_scenario(options);
   ASSERT_TRUE(flown.error.empty()) << flown.error;
   std::ostringstream errors;
-  ASSERT_EQ(qr::tools::run_replay(options.record_path.c_str(), (dir + "sim_flight_replay.csv").c_str(), errors), 0)
+  ASSERT_EQ(qr::host::run_replay(options.record_path.c_str(), (dir + "sim_flight_replay.csv").c_str(), errors), 0)
       << errors.str();
 
   std::map<std::string, std::map<std::string, std::string>> flight;  // by time in µs

@@ -1,7 +1,7 @@
 // qrsim: the host firmware flying in the simulator.
 //   qrsim --serve [--stdio]        real time, the QR's serial line on a pseudo terminal or stdio
 //   qrsim --scenario NAME --json   headless, faster than real time, one JSON object of figures
-//   qrsim --replay IN --out OUT    a recording through the flight chain (qr/tools/replay.hpp)
+//   qrsim --replay IN --out OUT    a recording through the flight chain (qr/host/replay.hpp)
 // Run `qrsim --help` for everything; docs/simulator.md describes the model and the scenarios.
 #include <cmath>
 #include <cstdio>
@@ -14,7 +14,7 @@
 #include <qr/boards/sim/scenario.hpp>
 #include <qr/boards/sim/serve.hpp>
 #include <qr/core/rate.hpp>
-#include <qr/tools/replay.hpp>
+#include <qr/host/replay.hpp>
 
 namespace {
 
@@ -72,7 +72,7 @@ bool parse_number(const char* text, double& out) {
 int main(int argc, char** argv) {
   enum class Command { none, serve, scenario, replay, list, help } command = Command::none;
   std::string replay_in, replay_out;
-  qr::tools::ReplayOptions replay_options;
+  qr::host::ReplayOptions replay_options;
   qrsim::ScenarioOptions scenario;
   qrsim::ServeOptions serve;
   bool json = false;
@@ -139,7 +139,7 @@ int main(int argc, char** argv) {
       (arg == "--replay" ? replay_in : replay_out) = v;
       if (arg == "--replay") command = Command::replay;
     } else if (arg == "--double") {
-      replay_options.arithmetic = qr::tools::ReplayArithmetic::reference_double;
+      replay_options.arithmetic = qr::host::ReplayArithmetic::reference_double;
     } else if (arg == "--param") {
       const char* v = value("NAME=VALUE");
       const char* eq = v == nullptr ? nullptr : std::strchr(v, '=');
@@ -167,7 +167,7 @@ int main(int argc, char** argv) {
       return command == Command::help ? 0 : 2;
     case Command::replay:
       if (replay_out.empty()) return usage_error("--replay needs --out OUT.csv");
-      return qr::tools::run_replay(replay_in.c_str(), replay_out.c_str(), std::cerr, replay_options);
+      return qr::host::run_replay(replay_in.c_str(), replay_out.c_str(), std::cerr, replay_options);
     case Command::list:
       for (const qrsim::ScenarioSpec& s : qrsim::scenarios()) {
         std::printf("%-12s %4.0f s  %s\n", s.name, s.default_seconds, s.summary);

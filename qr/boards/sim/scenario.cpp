@@ -11,7 +11,7 @@
 #include <qr/boards/sim/pilot.hpp>
 #include <qr/boards/sim/scoring.hpp>
 #include <qr/boards/sim/sim_qr.hpp>
-#include <qr/tools/replay.hpp>
+#include <qr/host/replay.hpp>
 
 namespace qrsim {
 namespace {
@@ -92,7 +92,7 @@ ScenarioResult run_scenario(const ScenarioOptions& options) {
   int calibration_requests = 0;
   Record rec;
   FILE* record = options.record_path.empty() ? nullptr : std::fopen(options.record_path.c_str(), "w");
-  if (record != nullptr) std::fprintf(record, "%s\n", qr::tools::replay_input_header().c_str());
+  if (record != nullptr) std::fprintf(record, "%s\n", qr::host::replay_input_header().c_str());
   bool recording = false;
   FILE* trace = options.trace_path.empty() ? nullptr : std::fopen(options.trace_path.c_str(), "w");
   if (trace != nullptr) {

@@ -13,9 +13,9 @@
 #include <common/mode.hpp>
 #include <qr/core/chain/flight_chain.hpp>
 #include <qr/core/chain/replay_tick.hpp>
-#include <qr/tools/real_numbers.hpp>
+#include <qr/host/real_numbers.hpp>
 
-namespace qr::tools {
+namespace qr::host {
 namespace {
 
 // ---- input ----
@@ -124,11 +124,11 @@ void append(std::string& line, int64_t v) {
 template <class Chain>
 int fly(const std::vector<Row>& rows, std::ostream& out) {
   Chain chain;
+  chain::ChainReplay<Chain> test_mode(chain);
   out << replay_output_header() << "\n";
-  bool calibrated = false;
   std::string line;
   for (const Row& row : rows) {
-    const wire::Mode mode = chain::replay_tick(chain, row.sample, row.sticks, calibrated);
+    const wire::Mode mode = test_mode.tick(row.sample, row.sticks);
     line.clear();
     append(line, row.time_us);
     line += ',';
@@ -237,4 +237,4 @@ int run_replay(const char* in_csv, const char* out_csv, std::ostream& errors, co
 
 int run_replay(const char* in_csv, const char* out_csv) { return run_replay(in_csv, out_csv, std::cerr); }
 
-}  // namespace qr::tools
+}  // namespace qr::host

@@ -1,10 +1,11 @@
 // Instructions per operation, Q format against float, on the RV32IM devboard (QEMU -icount, so
 // minstret is exact). One JSON object a line per operation, then a summary line. The targets
 // are reported, met or not; the run fails only if something crashes.
-#include <fixedpoint/bench/ops.hpp>
-#include <fixedpoint/bench/report.hpp>
-#include <fixedpoint/bench/samples.hpp>
 #include <qr/boards/rv32virt/devboard.hpp>
+
+#include "ops.hpp"
+#include "report.hpp"
+#include "samples.hpp"
 
 namespace {
 

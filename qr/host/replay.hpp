@@ -12,7 +12,7 @@
 #include <iosfwd>
 #include <string>
 
-namespace qr::tools {
+namespace qr::host {
 
 enum class ReplayArithmetic {
   fixed,             // FixedChain: what the QR computes, bit for bit
@@ -39,4 +39,4 @@ int run_replay(std::istream& in, const char* in_name, std::ostream& out, std::os
 const std::string& replay_input_header();
 const std::string& replay_output_header();
 
-}  // namespace qr::tools
+}  // namespace qr::host

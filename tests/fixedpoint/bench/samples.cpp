@@ -1,4 +1,4 @@
-#include <fixedpoint/bench/samples.hpp>
+#include "samples.hpp"
 
 namespace bench {
 namespace {

@@ -1,7 +1,7 @@
 // The bench's Q paths without the float ones. Built to be inspected with nm (see
 // check_soft_float.cmake): whatever soft-float helper this ELF holds, Q code pulled it in.
-#include <fixedpoint/bench/ops.hpp>
-#include <fixedpoint/bench/report.hpp>
+#include "ops.hpp"
+#include "report.hpp"
 
 int main() {
   for (int i = 0; i < bench::kOpCount; ++i) {

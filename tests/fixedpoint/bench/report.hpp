@@ -1,9 +1,10 @@
 // JSON output on the devboard console: one object a line, numbers with two decimals.
 #pragma once
 
-#include <fixedpoint/bench/ops.hpp>
-#include <fixedpoint/bench/samples.hpp>
 #include <qr/boards/rv32virt/devboard.hpp>
+
+#include "ops.hpp"
+#include "samples.hpp"
 
 namespace bench {
 

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include <qr/tools/real_number_policy.hpp>
+#include <qr/host/real_number_policy.hpp>
 
 namespace qr::chain {
 

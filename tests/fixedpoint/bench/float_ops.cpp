@@ -1,10 +1,11 @@
 // The float side of the bench: the same operations and filters as fixed_ops.cpp, in float,
 // which on RV32IM means libgcc's soft-float helpers.
-#include <fixedpoint/bench/filters.hpp>
 #include <fixedpoint/bench/float_math.hpp>
-#include <fixedpoint/bench/ops.hpp>
-#include <fixedpoint/bench/samples.hpp>
 #include <fixedpoint/iir.hpp>
+
+#include "filters.hpp"
+#include "ops.hpp"
+#include "samples.hpp"
 
 namespace bench {
 namespace {

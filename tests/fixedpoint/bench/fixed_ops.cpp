@@ -1,13 +1,14 @@
 // The Q side of the bench. Every operation sits in its own function that no caller can see
 // into (noipa), so nothing is folded into the loop and each call does the whole work.
 #include <fixedpoint/atan2.hpp>
-#include <fixedpoint/bench/filters.hpp>
-#include <fixedpoint/bench/ops.hpp>
-#include <fixedpoint/bench/samples.hpp>
 #include <fixedpoint/iir.hpp>
 #include <fixedpoint/q.hpp>
 #include <fixedpoint/sincos.hpp>
 #include <fixedpoint/sqrt.hpp>
+
+#include "filters.hpp"
+#include "ops.hpp"
+#include "samples.hpp"
 
 namespace bench {
 namespace {

@@ -1,9 +1,10 @@
 // Operands for the measured loops, the same for both number types, and the loop that counts.
 #pragma once
 
-#include <fixedpoint/bench/ops.hpp>
 #include <qr/boards/rv32virt/devboard.hpp>
 #include <stdint.h>
+
+#include "ops.hpp"
 
 namespace bench {
 
