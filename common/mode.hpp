@@ -1,5 +1,7 @@
-// Flight modes as numbered on the wire (the mode change request and the telemetry mode field).
-// The QR's safety machine numbers its modes the same way.
+// Flight modes as numbered on the wire (the mode change request and the telemetry mode field),
+// and every fact about a mode in one row: its names and what it means for the vehicle. The QR's
+// safety machine, its debug text and LEDs, the console, the simulator and the tests all read
+// this table.
 #pragma once
 
 #include <stdint.h>
@@ -10,6 +12,41 @@ enum class Mode : uint8_t { safe = 0, panic = 1, manual = 2, calibration = 3, ya
 
 inline constexpr uint8_t kModeCount = 6;
 
+struct ModeSpec {
+  Mode mode;
+  const char* name;   // as the pilot reads it: screen, debug text
+  const char* key;    // one word: JSON figures, command lines
+  bool flies;              // engines follow the pilot; leaving goes through panic; watchdogs on
+  bool needs_calibration;  // uses calibrated sensors: refused until a calibration has finished
+  bool needs_attitude;     // flies on the attitude estimate: the tilt watchdog applies
+};
+
+inline constexpr ModeSpec kModeTable[] = {
+    {Mode::safe, "safe", "safe", false, false, false},
+    {Mode::panic, "panic", "panic", false, false, false},
+    {Mode::manual, "manual", "manual", true, false, false},
+    {Mode::calibration, "calibration", "calibration", false, false, false},
+    {Mode::yaw_control, "yaw control", "yaw", true, true, true},
+    {Mode::full_control, "full control", "full", true, true, true},
+};
+static_assert(sizeof(kModeTable) / sizeof(kModeTable[0]) == kModeCount, "one row per mode");
+
+constexpr bool rows_in_mode_order() {
+  for (uint8_t i = 0; i < kModeCount; ++i) {
+    if (static_cast<uint8_t>(kModeTable[i].mode) != i) return false;
+  }
+  return true;
+}
+static_assert(rows_in_mode_order(), "row i is mode i");
+
 constexpr bool valid_mode(Mode mode) { return static_cast<uint8_t>(mode) < kModeCount; }
+
+// The row of a mode; modes outside the table get the safe row's facts (they never fly).
+constexpr const ModeSpec& mode_spec(Mode mode) { return kModeTable[valid_mode(mode) ? static_cast<uint8_t>(mode) : 0]; }
+
+// "?" for a number outside the table.
+constexpr const char* mode_name(Mode mode) { return valid_mode(mode) ? mode_spec(mode).name : "?"; }
+constexpr const char* mode_key(Mode mode) { return valid_mode(mode) ? mode_spec(mode).key : "unknown"; }
+constexpr bool flies(Mode mode) { return mode_spec(mode).flies; }
 
 }  // namespace wire

@@ -5,6 +5,7 @@
 #include <pc/core/gain_steps.hpp>
 #include <pc/core/hex_log.hpp>
 #include <pc/core/key_map.hpp>
+#include <common/task_names.hpp>
 #include <pc/core/mode_names.hpp>
 #include <pc/core/telemetry_csv.hpp>
 
@@ -55,13 +56,10 @@ std::string reason_text(wire::NackReason reason) {
   return spec != nullptr ? spec->text : "refused";
 }
 
-// The QR's scheduler tasks as docs/protocol.md numbers them in telemetry_task.
-constexpr const char* kTaskNames[] = {"link", "filter", "calibration", "estimator", "attitude",
-                                      "yaw", "mixer", "manual", "safety", "telemetry"};
-
+// The QR's scheduler tasks as the wire numbers them in telemetry_task (common/task_names.hpp).
 std::string task_name(uint8_t number) {
-  constexpr size_t kCount = sizeof kTaskNames / sizeof kTaskNames[0];
-  return number < kCount ? kTaskNames[number] : "task " + std::to_string(number);
+  const char* name = wire::task_name(number);
+  return name != nullptr ? name : "task " + std::to_string(number);
 }
 
 }  // namespace
@@ -216,10 +214,10 @@ void Console::print_tasks() {
     note(Severity::warning, "no task figures from the QR yet");
     return;
   }
-  note(Severity::info, "QR task cycles      min   mean    max");
+  note(Severity::info, "QR task cycles     mean    max overruns");
   for (const auto& [number, task] : telemetry_.tasks) {
     char line[64];
-    std::snprintf(line, sizeof line, "  %-14s %6u %6u %6u", task_name(number).c_str(), task.min, task.mean, task.max);
+    std::snprintf(line, sizeof line, "  %-14s %6u %6u %8u", task_name(number).c_str(), task.mean, task.max, task.overruns);
     note(Severity::info, line);
   }
 }

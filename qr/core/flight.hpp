@@ -1,13 +1,14 @@
 // The QR's flight software as one scheduler context: the link (frames in, acks and telemetry
-// out), the safety machine, and the signal chain, run as task sets chosen by the mode.
+// out), the safety machine, and the signal chain, run as the task table says (flight_tasks.hpp).
 //
 // Data flows one way through a tick: bytes and the sensor sample come in, the link applies the
 // pilot's messages, the chain turns the sample into engine wishes, the safety machine has the
-// last word on the engines, and telemetry reports what happened.
+// last word on the engines, and telemetry and the logs report what happened.
 //
-// `Chain` is the signal chain (qr/core/chain/flight_chain.hpp in flight; a scripted one in
-// tests). It provides: set_parameters, set_pilot, filter, calibrate, calibrated, estimate,
-// control_yaw, control_attitude, mix, mix_manual and the integer read-outs used below.
+// The jobs around the tick each have a unit of their own: applying requests
+// (flight_requests.hpp), composing telemetry (flight_telemetry.hpp), assembling log lines
+// (flight_log_lines.hpp) and the LED map (led_map.hpp). `Chain` is the signal chain, any type
+// that satisfies SignalChain (signal_chain.hpp): FixedChain in flight, a scripted one in tests.
 #pragma once
 
 #include <stddef.h>
@@ -21,18 +22,22 @@
 #include <qr/core/board.hpp>
 #include <qr/core/flight_log.hpp>
 #include <qr/core/flight_tasks.hpp>
+#include <qr/core/flight_telemetry.hpp>
+#include <qr/core/led_map.hpp>
 #include <qr/core/rate.hpp>
 #include <qr/core/safety.hpp>
 #include <qr/core/scheduler.hpp>
+#include <qr/core/signal_chain.hpp>
 #include <qr/core/task.hpp>
 
 namespace qr {
 
-template <class Chain>
+template <SignalChain Chain>
 class Flight {
  public:
+  using ChainType = Chain;
   static constexpr uint8_t kTaskCount = kFlightTaskCount;
-  static const Task<Flight> kTasks[kTaskCount];
+  static const Task<Flight> (&kTasks)[kFlightTaskCount];
 
   // `log_memory`: where the loggers keep their lines (none: logging is refused).
   explicit Flight(LogArea log_memory = {}) {
@@ -41,7 +46,7 @@ class Flight {
   }
 
   // ---- the scheduler's side ----
-  TaskSet task_set() const { return kFlightTaskSets[index(safety_.mode())]; }
+  TaskSet task_set() const { return kFlightModes<Flight>[index(safety_.mode())].tasks; }
   void begin_tick(uint32_t now_us, const SensorSample& sample) {
     sub_ms_us_ += now_us - tick_us_;  // divisions by a constant: multiplies on RV32IM
     uptime_ms_ += sub_ms_us_ / 1000u;
@@ -55,54 +60,78 @@ class Flight {
   bool tx_peek(uint8_t& byte) const { return tx_.peek(byte); }
   void tx_pop() { tx_.drop(); }
   EngineCommand engines() const { return engines_; }
-  uint8_t leds() const;
+  uint8_t leds() const { return led_pattern(safety_.mode(), safety_.battery_warning()); }
   // Stops once the exit has been carried out and its last bytes are out.
   bool running() const { return !(safety_.stopped() && tx_.empty()); }
   void account(const TickReport& report, const SchedulerStats<kTaskCount>& stats) {
     last_busy_us_ = report.busy_us;
-    if (report.busy_us > loop_time_us_) loop_time_us_ = report.busy_us;
-    deadline_misses_ = report.deadline_misses;
-    cpu_load_permille_ = report.cpu_load_permille;
+    telemetry_.note_tick(report);
     task_stats_ = &stats;
   }
 
-  // ---- read-outs for boards, tests and the simulator ----
+  // ---- the tasks (rows of kFlightTaskTable) ----
+  void run_link();
+  void run_filter() { chain_.filter(sample_); }
+  void run_calibration() {
+    if (chain_.calibrate()) {
+      safety_.calibration_finished();
+      enter_modes();
+    }
+  }
+  void run_mixer() { wanted_ = chain_.mix(); }
+  void run_manual_mixer() { wanted_ = chain_.mix_manual(); }
+  void run_safety();
+  void run_telemetry() { telemetry_.period(*this, [this](const wire::FrameBytes& f) { send(f); }); }
+  void run_logger();
+  void run_log_download();
+  // The rates that are parameters, as dividers of the control rate.
+  uint16_t telemetry_divider() const { return divider_for(static_cast<uint32_t>(params_.get(wire::ParamId::telemetry_rate_hz))); }
+  uint16_t log_divider() const { return static_cast<uint16_t>(params_.get(wire::ParamId::log_divider)); }
+
+  // ---- read-outs for the units around the tick, boards, tests and the simulator ----
   Mode mode() const { return safety_.mode(); }
   // The pilot's input as of the last control frame this tick's link task read.
   const ControlInput& controls() const { return controls_; }
+  const SensorSample& sample() const { return sample_; }
+  uint32_t tick_us() const { return tick_us_; }
+  uint32_t last_busy_us() const { return last_busy_us_; }
   const SafetyMachine& safety() const { return safety_; }
   const Chain& chain() const { return chain_; }
   Chain& chain() { return chain_; }
   const wire::LinkCounters& link_counters() const { return parser_.counters(); }
   const wire::ParameterValues& parameters() const { return params_; }
   const FlightLog& log() const { return log_; }
+  const FlightTelemetry& telemetry() const { return telemetry_; }
+  const SchedulerStats<kTaskCount>* task_stats() const { return task_stats_; }
   uint32_t tx_dropped_frames() const { return tx_dropped_; }
+  uint8_t telemetry_flags() const;
 
  private:
-  struct RequestHandler;
-
-  // ---- tasks ----
-  void run_link();
-  void run_filter() { chain_.filter(sample_); }
-  void run_calibration() {
-    if (chain_.calibrate()) safety_.calibration_finished();
-  }
-  void run_estimator() { chain_.estimate(); }
-  void run_attitude_control() { chain_.control_attitude(); }
-  void run_yaw_control() { chain_.control_yaw(); }
-  void run_mixer() { wanted_ = chain_.mix(); }
-  void run_manual_mixer() { wanted_ = chain_.mix_manual(); }
-  void run_safety();
-  void run_telemetry();
-  void run_logger();
+  template <class F>
+  friend struct FlightRequests;
 
   void on_frame(const wire::Frame& frame);
-  void apply_parameters();
-  void send(const wire::FrameBytes& frame);
+  // Parameter fan-out, when a parameter changes (never per tick): the safety machine's limits
+  // and the chain's coefficients. The task rates that are parameters are read by the scheduler
+  // through the task table.
+  void apply_parameters() {
+    safety_.limits() = safety_limits(params_);
+    chain_.set_parameters(params_);
+  }
+  // Runs the entry action of every mode the safety machine has just entered.
+  void enter_modes() {
+    static_assert(modes_in_order<Flight>(), "kFlightModes: row i is mode i");
+    static_assert(rows_in_task_order<Flight>(), "kFlightTaskTable: row i is task i");
+    const uint8_t entered = safety_.take_entered();
+    if (entered == 0) return;
+    for (uint8_t m = 0; m < kModeCount; ++m) {
+      if ((entered & (1u << m)) != 0 && kFlightModes<Flight>[m].enter != nullptr) kFlightModes<Flight>[m].enter(*this);
+    }
+  }
+  void send(const wire::FrameBytes& frame) {
+    if (!tx_.push(frame.bytes, frame.size)) ++tx_dropped_;
+  }
   void say(const char* text);
-  void send_slow_group();
-  uint8_t telemetry_flags() const;
-  static uint16_t saturate_u16(uint32_t v) { return v > 0xFFFFu ? uint16_t{0xFFFF} : static_cast<uint16_t>(v); }
   Situation situation() const {
     Situation s;
     s.now_us = tick_us_;
@@ -122,8 +151,9 @@ class Flight {
   wire::FrameParser parser_{wire::Listen::pc_to_qr};
   wire::RequestDedup dedup_;
   wire::ParameterValues params_;
-  SafetyMachine safety_{SafetyLimits{}};
+  SafetyMachine safety_;
   Chain chain_;
+  FlightTelemetry telemetry_;
 
   uint32_t tick_us_ = 0;      // time of this tick
   uint32_t uptime_ms_ = 0;    // for the dedup window; wraps after 49 days
@@ -135,18 +165,9 @@ class Flight {
   uint32_t last_frame_us_ = 0;
   uint32_t last_byte_us_ = 0;
   Mode announced_mode_ = Mode::safe;
-
-  uint16_t telemetry_divider_ = 1;
-  uint16_t telemetry_count_ = 0;
-  uint8_t telemetry_seq_ = 0;
-  uint8_t slow_group_ = 0;
-  uint32_t loop_time_us_ = 0;     // longest tick since the last system report
   uint32_t last_busy_us_ = 0;
-  uint32_t deadline_misses_ = 0;
-  uint16_t cpu_load_permille_ = 0;
   uint32_t tx_dropped_ = 0;
   const SchedulerStats<kTaskCount>* task_stats_ = nullptr;  // the scheduler's, once it ran
-  uint8_t stats_task_ = 0;  // whose figures the next telemetry_task carries
 
   FlightLog log_;
   bool log_status_owed_ = false;  // after a log request, its effect is reported at once
@@ -155,6 +176,9 @@ class Flight {
   uint8_t report_next_ = 0;
   uint8_t report_end_ = 0;
 };
+
+template <SignalChain Chain>
+const Task<Flight<Chain>> (&Flight<Chain>::kTasks)[kFlightTaskCount] = kFlightTaskTable<Flight<Chain>>;
 
 }  // namespace qr
 

@@ -1,5 +1,6 @@
-// The QR's two logs (sensor and telemetry) over the board's log memory: start, stop, the line
-// rate, and a download that sends the stored lines as log parts while the link has room.
+// The QR's two logs (sensor and telemetry) over the board's log memory: start, stop, writing a
+// line, and a download that sends the stored lines as log parts while the link has room. How
+// often a line is written is the logger task's row (its rate is the log_divider parameter).
 #pragma once
 
 #include <stddef.h>
@@ -26,7 +27,6 @@ class FlightLog {
     telemetry_.attach(area.data == nullptr ? nullptr : area.data + sensor_bytes,
                       lines * RecordLog<wire::TelemetryLogRecord>::kRecordBytes);
   }
-  void set_divider(uint16_t divider) { divider_ = divider == 0 ? 1 : divider; }
 
   wire::NackReason start(uint8_t logs) {
     if (sensor_.capacity() == 0) return wire::NackReason::not_supported;  // no log memory
@@ -40,7 +40,6 @@ class FlightLog {
       telemetry_.clear();
       telemetry_on_ = true;
     }
-    count_ = 0;
     return wire::NackReason::none;
   }
   wire::NackReason stop() {
@@ -61,12 +60,6 @@ class FlightLog {
   }
 
   bool logging() const { return sensor_on_ || telemetry_on_; }
-  // True on the ticks a line is due (every divider-th tick while logging).
-  bool due() {
-    if (!logging() || ++count_ < divider_) return false;
-    count_ = 0;
-    return true;
-  }
   void write(const wire::SensorLogRecord& s, const wire::TelemetryLogRecord& t) {
     if (sensor_on_ && !sensor_.append(s)) full_ = true;
     if (telemetry_on_ && !telemetry_.append(t)) full_ = true;
@@ -105,8 +98,6 @@ class FlightLog {
   bool sensor_on_ = false;
   bool telemetry_on_ = false;
   bool full_ = false;
-  uint16_t divider_ = 1;
-  uint16_t count_ = 0;
 
   bool downloading_ = false;
   wire::LogKind kind_ = wire::LogKind::sensor;

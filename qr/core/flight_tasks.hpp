@@ -1,10 +1,18 @@
-// The QR's tasks and which of them each mode runs, in data-flow order: link first (the pilot's
-// messages), then sensors to engines, then the safety machine's last word, then telemetry.
+// The tick in two tables: the tasks (one row each: name, what it runs, rate, phase, budget) and
+// the modes (one row each: the tasks it runs, in data-flow order, and what entering it does).
+// Link first (the pilot's messages), then sensors to engines, then the safety machine's last
+// word, then telemetry and the logs. docs/architecture.md prints both tables.
+//
+// Both are templates over the context that runs them: qr::Flight in flight, and the replay's
+// context (qr/core/chain/replay_tick.hpp), which runs the same rows for its chain work so test
+// mode runs the tick the flight runs.
 #pragma once
 
 #include <stdint.h>
 
 #include <common/mode.hpp>
+#include <common/task_names.hpp>
+#include <qr/core/flight_types.hpp>
 #include <qr/core/task.hpp>
 
 namespace qr {
@@ -13,6 +21,7 @@ enum FlightTask : uint8_t {
   kLinkTask,
   kFilterTask,
   kCalibrationTask,
+  kAccelAnglesTask,
   kEstimatorTask,
   kAttitudeControlTask,
   kYawControlTask,
@@ -21,19 +30,61 @@ enum FlightTask : uint8_t {
   kSafetyTask,
   kTelemetryTask,
   kLoggerTask,
+  kLogDownloadTask,
   kFlightTaskCount,
 };
+static_assert(kFlightTaskCount == wire::kTaskCount, "one wire task number per row");
+
+// Budgets are RV32IM instructions per run: the largest run `scripts/devboard --bench` measures in
+// any mode, with room for the worst case the bench does not reach (a request burst on the link,
+// a full telemetry period). The rv32 test Devboard.TaskBudgetsHold fails when a measured maximum
+// exceeds its budget. Phases keep the divided tasks off each other's ticks: the accelerometer
+// angles fall on ticks 0 mod 4, telemetry and the logger on odd ones.
+template <class Flight>
+inline constexpr Task<Flight> kFlightTaskTable[kFlightTaskCount] = {
+    // name          run                                                   divider  phase  budget
+    {wire::kTaskNames[kLinkTask], [](Flight& f) { f.run_link(); }, 1, 0, 3600},
+    {wire::kTaskNames[kFilterTask], [](Flight& f) { f.run_filter(); }, 1, 0, 600},
+    {wire::kTaskNames[kCalibrationTask], [](Flight& f) { f.run_calibration(); }, 1, 0, 200},
+    {wire::kTaskNames[kAccelAnglesTask], [](Flight& f) { f.chain().estimate_accel_angles(); }, Flight::ChainType::kAccelDivider, 0, 800},
+    {wire::kTaskNames[kEstimatorTask], [](Flight& f) { f.chain().estimate(); }, 1, 0, 600},
+    {wire::kTaskNames[kAttitudeControlTask], [](Flight& f) { f.chain().control_attitude(); }, 1, 0, 300},
+    {wire::kTaskNames[kYawControlTask], [](Flight& f) { f.chain().control_yaw(); }, 1, 0, 80},
+    {wire::kTaskNames[kMixerTask], [](Flight& f) { f.run_mixer(); }, 1, 0, 700},
+    {wire::kTaskNames[kManualMixerTask], [](Flight& f) { f.run_manual_mixer(); }, 1, 0, 700},
+    {wire::kTaskNames[kSafetyTask], [](Flight& f) { f.run_safety(); }, 1, 0, 1500},
+    // Rates that are parameters: telemetry_rate_hz and log_divider.
+    {wire::kTaskNames[kTelemetryTask], [](Flight& f) { f.run_telemetry(); }, 1, 1, 1800, [](const Flight& f) { return f.telemetry_divider(); }},
+    {wire::kTaskNames[kLoggerTask], [](Flight& f) { f.run_logger(); }, 1, 3, 900, [](const Flight& f) { return f.log_divider(); }},
+    {wire::kTaskNames[kLogDownloadTask], [](Flight& f) { f.run_log_download(); }, 1, 0, 1000},
+};
+
+// Row i is task i: its name is wire::kTaskNames[i], the number telemetry_task reports.
+template <class Flight>
+constexpr bool rows_in_task_order() {
+  for (uint8_t i = 0; i < kFlightTaskCount; ++i) {
+    if (kFlightTaskTable<Flight>[i].name != wire::kTaskNames[i]) return false;
+  }
+  return true;
+}
 
 namespace task_sets {
 // The filter and estimator also run in safe and panic, so the pilot sees attitude on the bench
 // and the filters are settled when a flight mode starts. The logger runs in every mode: a log
 // covers the whole flight, panic included.
-inline constexpr uint8_t kSafe[] = {kLinkTask, kFilterTask, kEstimatorTask, kSafetyTask, kTelemetryTask, kLoggerTask};
-inline constexpr uint8_t kPanic[] = {kLinkTask, kFilterTask, kEstimatorTask, kSafetyTask, kTelemetryTask, kLoggerTask};
-inline constexpr uint8_t kManual[] = {kLinkTask, kFilterTask, kEstimatorTask, kManualMixerTask, kSafetyTask, kTelemetryTask, kLoggerTask};
-inline constexpr uint8_t kCalibration[] = {kLinkTask, kFilterTask, kCalibrationTask, kSafetyTask, kTelemetryTask, kLoggerTask};
-inline constexpr uint8_t kYawControl[] = {kLinkTask, kFilterTask, kEstimatorTask, kYawControlTask, kMixerTask, kSafetyTask, kTelemetryTask, kLoggerTask};
-inline constexpr uint8_t kFullControl[] = {kLinkTask, kFilterTask, kEstimatorTask, kAttitudeControlTask, kYawControlTask, kMixerTask, kSafetyTask, kTelemetryTask, kLoggerTask};
+inline constexpr uint8_t kSafe[] = {kLinkTask,   kFilterTask,    kAccelAnglesTask, kEstimatorTask,
+                                    kSafetyTask, kTelemetryTask, kLoggerTask,      kLogDownloadTask};
+inline constexpr uint8_t kPanic[] = {kLinkTask,   kFilterTask,    kAccelAnglesTask, kEstimatorTask,
+                                     kSafetyTask, kTelemetryTask, kLoggerTask,      kLogDownloadTask};
+inline constexpr uint8_t kManual[] = {kLinkTask,        kFilterTask, kAccelAnglesTask, kEstimatorTask,  kManualMixerTask,
+                                      kSafetyTask,      kTelemetryTask, kLoggerTask,   kLogDownloadTask};
+inline constexpr uint8_t kCalibration[] = {kLinkTask,      kFilterTask, kCalibrationTask, kSafetyTask,
+                                           kTelemetryTask, kLoggerTask, kLogDownloadTask};
+inline constexpr uint8_t kYawControl[] = {kLinkTask,  kFilterTask, kAccelAnglesTask, kEstimatorTask, kYawControlTask,
+                                          kMixerTask, kSafetyTask, kTelemetryTask,   kLoggerTask,    kLogDownloadTask};
+inline constexpr uint8_t kFullControl[] = {kLinkTask,       kFilterTask,     kAccelAnglesTask, kEstimatorTask,
+                                           kAttitudeControlTask, kYawControlTask, kMixerTask,   kSafetyTask,
+                                           kTelemetryTask,  kLoggerTask,     kLogDownloadTask};
 
 template <size_t N>
 constexpr TaskSet set(const uint8_t (&ids)[N]) {
@@ -41,11 +92,33 @@ constexpr TaskSet set(const uint8_t (&ids)[N]) {
 }
 }  // namespace task_sets
 
-// Indexed by wire::Mode.
-inline constexpr TaskSet kFlightTaskSets[wire::kModeCount] = {
-    task_sets::set(task_sets::kSafe),        task_sets::set(task_sets::kPanic),
-    task_sets::set(task_sets::kManual),      task_sets::set(task_sets::kCalibration),
-    task_sets::set(task_sets::kYawControl),  task_sets::set(task_sets::kFullControl),
+// A mode as the QR runs it: its tasks, and its entry action, run once by the transition into it
+// (nullptr: nothing to do). The mode's other facts are the shared table's (common/mode.hpp).
+template <class Flight>
+struct FlightMode {
+  Mode mode;
+  TaskSet tasks;
+  void (*enter)(Flight&);
 };
+
+template <class Flight>
+inline constexpr FlightMode<Flight> kFlightModes[kModeCount] = {
+    {Mode::safe, task_sets::set(task_sets::kSafe), nullptr},
+    {Mode::panic, task_sets::set(task_sets::kPanic), nullptr},
+    {Mode::manual, task_sets::set(task_sets::kManual), nullptr},
+    // A calibration run starts over whenever the mode is entered.
+    {Mode::calibration, task_sets::set(task_sets::kCalibration), [](Flight& f) { f.chain().enter_calibration(); }},
+    {Mode::yaw_control, task_sets::set(task_sets::kYawControl), nullptr},
+    // The attitude loops' integrals start empty.
+    {Mode::full_control, task_sets::set(task_sets::kFullControl), [](Flight& f) { f.chain().enter_attitude_control(); }},
+};
+
+template <class Flight>
+constexpr bool modes_in_order() {
+  for (uint8_t i = 0; i < kModeCount; ++i) {
+    if (index(kFlightModes<Flight>[i].mode) != i) return false;
+  }
+  return true;
+}
 
 }  // namespace qr

@@ -3,22 +3,7 @@
 namespace qr {
 namespace {
 
-struct ModeRule {
-  bool flying;             // engines follow the pilot; leaving goes through panic; watchdogs on
-  bool needs_calibration;  // uses calibrated sensors
-  bool needs_attitude;     // the tilt watchdog applies
-};
-
-constexpr ModeRule kModeRules[kModeCount] = {
-    /* safe        */ {false, false, false},
-    /* panic       */ {false, false, false},
-    /* manual      */ {true, false, false},
-    /* calibration */ {false, false, false},
-    /* yaw         */ {true, true, true},
-    /* full        */ {true, true, true},
-};
-
-constexpr const ModeRule& rule(Mode m) { return kModeRules[index(m)]; }
+constexpr const wire::ModeSpec& rule(Mode m) { return wire::mode_spec(m); }
 
 // A request into a mode other than safe/panic must pass every guard, in this order.
 struct Guard {
@@ -52,16 +37,31 @@ uint16_t scale(uint16_t v, uint32_t num, uint32_t den) {
 
 }  // namespace
 
+SafetyLimits safety_limits(const wire::ParameterValues& p) {
+  using wire::ParamId;
+  const auto get = [&p](ParamId id) { return static_cast<uint32_t>(p.get(id)); };
+  SafetyLimits l{};
+  l.link_timeout_us = get(ParamId::link_timeout_ms) * 1000u;
+  l.battery_warn_mv = static_cast<uint16_t>(get(ParamId::battery_warning_mv));
+  l.battery_panic_mv = static_cast<uint16_t>(get(ParamId::battery_panic_mv));
+  l.tilt_limit_mrad = static_cast<int32_t>(get(ParamId::tilt_limit_mrad));
+  l.panic_level = static_cast<uint16_t>(get(ParamId::panic_level));
+  l.panic_hold_us = get(ParamId::panic_hold_ms) * 1000u;
+  l.panic_ramp_us = get(ParamId::panic_ramp_ms) * 1000u;
+  l.idle = static_cast<uint16_t>(get(ParamId::idle_level));
+  return l;
+}
+
 NackReason SafetyMachine::request(uint8_t wanted, const Situation& s) {
   if (wanted >= kModeCount) return NackReason::unknown_mode;
   const Mode to = static_cast<Mode>(wanted);
   if (to == mode_) return NackReason::none;
 
   if (to == Mode::safe || to == Mode::panic) {
-    if (rule(mode_).flying) {
+    if (rule(mode_).flies) {
       enter_panic(PanicCause::requested, s);
     } else if (mode_ != Mode::panic) {
-      mode_ = Mode::safe;  // engines are not turning: nothing to ramp down
+      enter(Mode::safe);  // engines are not turning: nothing to ramp down
     }
     return NackReason::none;
   }
@@ -69,7 +69,7 @@ NackReason SafetyMachine::request(uint8_t wanted, const Situation& s) {
   for (const Guard& g : kGuards) {
     if (g.blocks(mode_, to, s, limits_)) return g.reason;
   }
-  mode_ = to;
+  enter(to);
   return NackReason::none;
 }
 
@@ -80,7 +80,7 @@ void SafetyMachine::request_exit(const Situation& s) {
 }
 
 void SafetyMachine::calibration_finished() {
-  if (mode_ == Mode::calibration) mode_ = Mode::safe;
+  if (mode_ == Mode::calibration) enter(Mode::safe);
 }
 
 void SafetyMachine::supervise(const Situation& s) {
@@ -90,7 +90,7 @@ void SafetyMachine::supervise(const Situation& s) {
   battery_low_ = below;
   const bool battery_low_long = below && s.now_us - battery_low_since_us_ >= limits_.battery_trip_us;
 
-  if (rule(mode_).flying) {
+  if (rule(mode_).flies) {
     for (const Watchdog& w : kWatchdogs) {
       if (w.tripped(s, limits_, mode_, battery_low_long)) {
         enter_panic(w.cause, s);
@@ -101,7 +101,7 @@ void SafetyMachine::supervise(const Situation& s) {
 
   if (mode_ == Mode::panic &&
       s.now_us - panic_start_us_ >= limits_.panic_hold_us + limits_.panic_ramp_us) {
-    mode_ = Mode::safe;
+    enter(Mode::safe);
   }
   if (exit_pending_ && mode_ == Mode::safe) stopped_ = true;
 }
@@ -120,7 +120,7 @@ EngineCommand SafetyMachine::limit_engines(const EngineCommand& wanted, const Si
     }
     return out;
   }
-  if (!rule(mode_).flying || s.controls.lift == 0) return out;
+  if (!rule(mode_).flies || s.controls.lift == 0) return out;
   for (int i = 0; i < 4; ++i) {
     const uint16_t v = wanted.value[i];
     out.value[i] = v < limits_.idle ? limits_.idle : v > kEngineMax ? kEngineMax : v;
@@ -129,7 +129,7 @@ EngineCommand SafetyMachine::limit_engines(const EngineCommand& wanted, const Si
 }
 
 void SafetyMachine::enter_panic(PanicCause cause, const Situation& s) {
-  mode_ = Mode::panic;
+  enter(Mode::panic);
   panic_cause_ = cause;
   panic_start_us_ = s.now_us;
   panic_from_ = s.engines;

@@ -6,41 +6,29 @@
 #include <stdint.h>
 
 #include <qr/core/board.hpp>
-#include <common/mode.hpp>
-#include <common/nack_reason.hpp>
+#include <qr/core/flight_types.hpp>
+#include <common/parameter_table.hpp>
 
 namespace qr {
 
-// Pilot's set-points as they come off the link: lift 0..1000, roll/pitch/yaw -1000..1000,
-// centred at 0.
-struct ControlInput {
-  uint16_t lift = 0;
-  int16_t roll = 0;
-  int16_t pitch = 0;
-  int16_t yaw = 0;
-
-  bool neutral() const { return lift == 0 && roll == 0 && pitch == 0 && yaw == 0; }
-};
-
-using wire::Mode;
-using wire::NackReason;  // the machine's refusals are the first reasons on the wire's list
-
-constexpr uint8_t index(Mode m) { return static_cast<uint8_t>(m); }
-inline constexpr uint8_t kModeCount = wire::kModeCount;
-
 enum class PanicCause : uint8_t { none = 0, requested, link_lost, battery_low, tilt };
 
+// The machine's thresholds: all but the battery trip time are parameters, so they come from the
+// parameter table (safety_limits below), never from a second set of defaults here.
 struct SafetyLimits {
-  uint32_t link_timeout_us = 250000;
-  uint16_t battery_panic_mv = 10500;
-  uint16_t battery_warn_mv = 11100;
+  uint32_t link_timeout_us;
+  uint16_t battery_panic_mv;
+  uint16_t battery_warn_mv;
+  int32_t tilt_limit_mrad;
+  uint16_t panic_level;     // engines hold at most this while panicking
+  uint32_t panic_hold_us;
+  uint32_t panic_ramp_us;
+  uint16_t idle;            // no engine below this while lift > 0 in flight
   uint32_t battery_trip_us = 100000;  // a dip shorter than this (a load spike) is not a panic
-  int32_t tilt_limit_mrad = 785;      // 45 degrees
-  uint16_t panic_level = 350;         // engines hold at most this while panicking
-  uint32_t panic_hold_us = 2000000;
-  uint32_t panic_ramp_us = 1000000;
-  uint16_t idle = 180;                // no engine below this while lift > 0 in flight
 };
+
+// The limits the parameters say (the defaults when `p` is default-constructed).
+SafetyLimits safety_limits(const wire::ParameterValues& p);
 
 // What the machine looks at, assembled once per tick.
 struct Situation {
@@ -55,7 +43,7 @@ struct Situation {
 
 class SafetyMachine {
  public:
-  explicit SafetyMachine(const SafetyLimits& limits) : limits_(limits) {}
+  explicit SafetyMachine(const SafetyLimits& limits = safety_limits(wire::ParameterValues{})) : limits_(limits) {}
 
   Mode mode() const { return mode_; }
   bool stopped() const { return stopped_; }
@@ -71,6 +59,15 @@ class SafetyMachine {
   void request_exit(const Situation& s);
   void calibration_finished();
 
+  // The modes entered since the last call, one bit per mode (1 << index(mode)), then cleared.
+  // Every transition goes through one place that sets its bit; the owner runs each entered
+  // mode's entry action (flight_modes.hpp) right after the call that made the transition.
+  uint8_t take_entered() {
+    const uint8_t entered = entered_;
+    entered_ = 0;
+    return entered;
+  }
+
   // Every tick: watchdogs (link, battery, tilt), the panic timeline and a pending exit.
   void supervise(const Situation& s);
 
@@ -79,10 +76,15 @@ class SafetyMachine {
   EngineCommand limit_engines(const EngineCommand& wanted, const Situation& s) const;
 
  private:
+  void enter(Mode to) {
+    mode_ = to;
+    entered_ = static_cast<uint8_t>(entered_ | (1u << index(to)));
+  }
   void enter_panic(PanicCause cause, const Situation& s);
 
   SafetyLimits limits_;
   Mode mode_ = Mode::safe;
+  uint8_t entered_ = 0;
   bool exit_pending_ = false;
   bool stopped_ = false;
   bool battery_warning_ = false;

@@ -13,6 +13,8 @@
 //   bool tx_peek(uint8_t&) const;  void tx_pop();            bytes for the serial line
 //   EngineCommand engines() const;  uint8_t leds() const;  bool running() const;
 //   void account(const TickReport&, const SchedulerStats<kTaskCount>&);   after each tick
+//
+// Every rate, phase and budget is in the context's task table (task.hpp); no task divides itself.
 #pragma once
 
 #include <stdint.h>
@@ -46,6 +48,7 @@ struct TickReport {
 template <uint8_t TaskCount>
 struct SchedulerStats {
   CycleStats task[TaskCount];
+  uint32_t overruns[TaskCount] = {};  // runs that took more than the task's budget
   CycleStats tick;                  // cycles from the kick to the end of the tick's work
   uint32_t ticks = 0;               // executed ticks
   uint32_t deadline_misses = 0;     // kicks that arrived while a tick was still running
@@ -58,9 +61,13 @@ class Scheduler {
   static constexpr uint8_t kTaskCount = Context::kTaskCount;
   using Stats = SchedulerStats<kTaskCount>;
 
-  Scheduler(B& board, Context& context, SchedulerLimits limits = {})
+  // `first_tick`: the number of the first tick, for the dividers' phases (a replay that starts
+  // part-way through a flight continues the flight's count).
+  Scheduler(B& board, Context& context, SchedulerLimits limits = {}, uint32_t first_tick = 0)
       : board_(board), context_(context), limits_(limits), seen_kick_(board.kicks()),
-        next_set_(context.task_set()), window_start_us_(board.now_us()) {}
+        next_set_(context.task_set()), ticks_(first_tick), window_start_us_(board.now_us()) {
+    for (uint8_t id = 0; id < kTaskCount; ++id) retime(id);
+  }
 
   // One control period. Returns false once the context has stopped.
   bool tick() {
@@ -80,6 +87,9 @@ class Scheduler {
 
   const Stats& stats() const { return stats_; }
   void reset_stats() { stats_ = Stats{}; }
+  // The row running now, kNoTask between tasks: what a fault handler reports.
+  uint8_t running_task() const { return running_; }
+  uint16_t divider(uint8_t id) const { return divider_[id]; }
 
  private:
   void run(uint32_t now_us) {
@@ -90,14 +100,19 @@ class Scheduler {
       context_.receive(byte);
     }
 
-    for (uint8_t i = 0; i < next_set_.count; ++i) {
-      const uint8_t id = next_set_.ids[i];
-      const Task<Context>& task = Context::kTasks[id];
-      if (stats_.ticks % task.divider != 0) continue;
+    const uint32_t t = ticks_;
+    for (const uint8_t *id = next_set_.ids, *end = next_set_.ids + next_set_.count; id != end; ++id) {
+      if (t % divider_[*id] != phase_[*id]) continue;
+      const Task<Context>& task = Context::kTasks[*id];
+      running_ = *id;
       const uint32_t before = board_.cycles();
       task.run(context_);
-      stats_.task[id].add(board_.cycles() - before);
+      const uint32_t cycles = board_.cycles() - before;
+      stats_.task[*id].add(cycles);
+      if (cycles > task.budget) ++stats_.overruns[*id];
+      if (task.divider_from != nullptr) retime(*id);
     }
+    running_ = kNoTask;
 
     board_.set_engines(context_.engines());
     board_.set_leds(context_.leds());
@@ -110,6 +125,7 @@ class Scheduler {
   void finish(uint32_t kick, uint32_t start_us, uint32_t start_cycles) {
     stats_.tick.add(board_.cycles() - start_cycles);
     ++stats_.ticks;
+    ++ticks_;
 
     // Kicks that came while we ran are periods we cannot have on time: count each one and skip
     // them, so the next tick starts on the next fresh kick, in phase.
@@ -134,12 +150,23 @@ class Scheduler {
     next_set_ = context_.task_set();
   }
 
+  void retime(uint8_t id) {
+    const Task<Context>& task = Context::kTasks[id];
+    const uint16_t d = task.divider_from != nullptr ? task.divider_from(context_) : task.divider;
+    divider_[id] = d == 0 ? uint16_t{1} : d;
+    phase_[id] = static_cast<uint16_t>(task.phase % divider_[id]);
+  }
+
   B& board_;
   Context& context_;
   SchedulerLimits limits_;
   uint32_t seen_kick_;
   TaskSet next_set_;
+  uint32_t ticks_;  // executed ticks since start: the clock of dividers and phases
   Stats stats_{};
+  uint16_t divider_[kTaskCount] = {};
+  uint16_t phase_[kTaskCount] = {};
+  volatile uint8_t running_ = kNoTask;
   uint32_t window_start_us_;
   uint32_t window_busy_us_ = 0;
 };

@@ -124,7 +124,7 @@ void append(std::string& line, int64_t v) {
 template <class Chain>
 int fly(const std::vector<Row>& rows, std::ostream& out) {
   Chain chain;
-  chain::ChainReplay<Chain> test_mode(chain);
+  chain::ChainReplay<Chain> test_mode(chain, rows.empty() ? chain::ChainReplay<Chain>::kPeriodUs : rows.front().time_us);
   out << replay_output_header() << "\n";
   std::string line;
   for (const Row& row : rows) {

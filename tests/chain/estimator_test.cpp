@@ -33,6 +33,7 @@ struct Rig {
     const double fx = std::sin(pitch), fy = -std::sin(roll) * std::cos(pitch), fz = -std::cos(roll) * std::cos(pitch);
     const Rate rate[3] = {to<Rate>(p + bias_p), to<Rate>(q + bias_q), to<Rate>(r)};
     const Accel accel[3] = {to<Accel>(fx), to<Accel>(fy), to<Accel>(fz)};
+    e.update_accel(accel);  // every tick here: the flight runs it at 250 Hz (its task table)
     e.update(rate, accel);
   }
   template <class T>
@@ -241,11 +242,11 @@ TEST(Estimator, ACoordinatedTurnLeavesTheAnglesAloneInFixedPoint) {
 }
 TEST(Estimator, ACoordinatedTurnLeavesTheAnglesAloneInDouble) { ACoordinatedTurnLeavesTheAnglesAlone<DoubleNumbers>(); }
 
-// With an accelerometer divider the angles from the accelerometer are taken on updates 0, 4, 8,
-// ... counted from the start, held in between, and the count starts over with restart().
-TEST(Estimator, AccelerometerAnglesAreTakenEveryDividerthUpdateFromTheStart) {
+// The accelerometer angles are taken by the slow step (update_accel) and held in between; a
+// restart takes fresh ones itself at the next update, whatever tick that falls on.
+TEST(Estimator, AccelerometerAnglesAreTakenByTheSlowStepAndAtARestart) {
   using N = FixedNumbers;
-  AttitudeEstimator<N, 1000, 4> e;
+  AttitudeEstimator<N, 1000> e;
   e.set_divisors(256, 1000000);
   const N::Rate still[3] = {};
   const auto accel_at = [](double roll) {
@@ -256,13 +257,14 @@ TEST(Estimator, AccelerometerAnglesAreTakenEveryDividerthUpdateFromTheStart) {
   for (int n = 0; n < 10; ++n) {
     const auto a = accel_at(0.01 * n);
     const N::Accel accel[3] = {a[0], a[1], a[2]};
+    if (n % 4 == 0) e.update_accel(accel);
     e.update(still, accel);
     seen.push_back(e.roll_from_accel().to_double());
     if (n == 5) e.restart();
   }
-  // Taken at 0 and 4; restarted after update 5, so taken again at 6 (the start) and then at 10.
+  // Taken at 0 and 4; restarted after update 5, so taken again at 6 (the start), then at 8.
   for (int n = 0; n < 10; ++n) {
-    const int taken = n < 4 ? 0 : n < 6 ? 4 : 6;
+    const int taken = n < 4 ? 0 : n < 6 ? 4 : n < 8 ? 6 : 8;
     EXPECT_NEAR(seen[static_cast<size_t>(n)], 0.01 * taken, 1e-7) << "update " << n;
   }
 }

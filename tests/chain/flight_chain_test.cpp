@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include <qr/core/chain/flight_chain.hpp>
+#include <qr/core/chain/replay_tick.hpp>
 #include <qr/host/real_numbers.hpp>
 
 #include "chain_checksum.hpp"
@@ -20,12 +21,17 @@ using DoubleChain = FlightChain<chain::DoubleNumbers>;
 
 enum class Mode { manual, yaw, full };
 
-// Drives a chain tick by tick as the flight task sets do (qr/core/flight_tasks.hpp).
+// Drives a chain tick by tick as the flight task sets do (qr/core/flight_tasks.hpp): the
+// accelerometer angles every kAccelDivider-th tick, the modes' entry actions on a change of mode.
 template <class Chain>
 struct Pilot {
   Chain chain;
+  uint32_t ticks_run = 0;
+  bool in_full = false;
 
   void calibrate_level(const double (&gyro_offset)[3] = {0, 0, 0}, const double (&accel_offset)[3] = {0, 0, 0}) {
+    chain.enter_calibration();
+    in_full = false;
     for (int32_t n = 0;; ++n) {
       chain.set_pilot({});
       chain.filter(sample_at(0, 0, 0, 0, 0, gyro_offset, accel_offset));
@@ -34,8 +40,11 @@ struct Pilot {
     }
   }
   EngineCommand tick(Mode mode, const SensorSample& s, const ControlInput& sticks) {
+    if (mode == Mode::full && !in_full) chain.enter_attitude_control();
+    in_full = mode == Mode::full;
     chain.set_pilot(sticks);
     chain.filter(s);
+    if (ticks_run++ % Chain::kAccelDivider == 0) chain.estimate_accel_angles();
     chain.estimate();
     if (mode == Mode::manual) return chain.mix_manual();
     if (mode == Mode::full) chain.control_attitude();
@@ -167,6 +176,7 @@ TEST(FlightChain, CalibrationStartsOverWhenEnteredAgain) {
   p.run(Mode::full, sample_at(0, 0, 0, 0, 0, {10, 0, 0}), sticks(0), 10);
   EXPECT_EQ(p.chain.p_e3(), 0);
   // Calibration mode again, the gyro offset has moved: a new run of kCalibrationSamples.
+  p.chain.enter_calibration();
   p.chain.filter(sample_at(0, 0, 0, 0, 0, {30, 0, 0}));
   EXPECT_FALSE(p.chain.calibrate());
   p.calibrate_level({30, 0, 0});
@@ -236,28 +246,17 @@ TEST(FlightChain, LiftZeroKeepsTheEnginesStopped) {
 TEST(FlightChain, FixedFollowsDoubleOverTheSyntheticFlight) {
   FixedChain q;
   DoubleChain d;
+  chain::ChainReplay<FixedChain> rq(q);
+  chain::ChainReplay<DoubleChain> rd(d);
   chain::synthetic::Flight<1000> flight;
-  bool calibrated = false;
   double angle = 0, rate = 0, moment = 0;
   int engine = 0, engine_differs = 0, readout = 0;
   for (uint32_t n = 0; n < chain::synthetic::Flight<1000>::kTicks; ++n) {
     const auto t = flight.next();
-    q.set_pilot(t.sticks);
-    d.set_pilot(t.sticks);
-    q.filter(t.sample);
-    d.filter(t.sample);
-    if (!calibrated) {
-      calibrated = q.calibrate();
-      ASSERT_EQ(calibrated, d.calibrate());
-      continue;
-    }
-    q.estimate();
-    d.estimate();
-    q.control_attitude();
-    d.control_attitude();
-    q.control_yaw();
-    d.control_yaw();
-    const EngineCommand eq = q.mix(), ed = d.mix();
+    const wire::Mode mq = rq.tick(t.sample, t.sticks);
+    ASSERT_EQ(mq, rd.tick(t.sample, t.sticks));
+    if (mq != wire::Mode::full_control) continue;
+    const EngineCommand eq = q.engines(), ed = d.engines();
     const auto& xq = q.estimator();
     const auto& xd = d.estimator();
     angle = std::max({angle, std::fabs(xq.roll().to_double() - xd.roll()), std::fabs(xq.pitch().to_double() - xd.pitch()),
@@ -289,28 +288,17 @@ TEST(FlightChain, FixedFollowsDoubleOverTheSyntheticFlight) {
 TEST(FlightChain, FloatInstantiationFollowsDouble) {
   FlightChain<chain::FloatNumbers> f;
   DoubleChain d;
+  chain::ChainReplay<FlightChain<chain::FloatNumbers>> rf(f);
+  chain::ChainReplay<DoubleChain> rd(d);
   chain::synthetic::Flight<1000> flight;
-  bool calibrated = false;
   double angle = 0;
   int engine = 0;
   for (uint32_t n = 0; n < chain::synthetic::Flight<1000>::kTicks; ++n) {
     const auto t = flight.next();
-    f.set_pilot(t.sticks);
-    d.set_pilot(t.sticks);
-    f.filter(t.sample);
-    d.filter(t.sample);
-    if (!calibrated) {
-      calibrated = f.calibrate();
-      ASSERT_EQ(calibrated, d.calibrate());
-      continue;
-    }
-    f.estimate();
-    d.estimate();
-    f.control_attitude();
-    d.control_attitude();
-    f.control_yaw();
-    d.control_yaw();
-    const EngineCommand ef = f.mix(), ed = d.mix();
+    const wire::Mode mf = rf.tick(t.sample, t.sticks);
+    ASSERT_EQ(mf, rd.tick(t.sample, t.sticks));
+    if (mf != wire::Mode::full_control) continue;
+    const EngineCommand ef = f.engines(), ed = d.engines();
     angle = std::max({angle, std::fabs(double(f.estimator().roll()) - d.estimator().roll()),
                       std::fabs(double(f.estimator().pitch()) - d.estimator().pitch())});
     for (int k = 0; k < 4; ++k) engine = std::max(engine, std::abs(ef.value[k] - ed.value[k]));
@@ -328,18 +316,12 @@ TEST(FlightChain, FloatInstantiationFollowsDouble) {
 template <uint32_t Hz>
 void check_truth(double bound) {
   FlightChain<chain::FixedNumbers, Hz> c;
+  chain::ChainReplay<FlightChain<chain::FixedNumbers, Hz>> replay(c);
   chain::synthetic::Flight<Hz> flight;
-  bool calibrated = false;
   double worst = 0;
   for (uint32_t n = 0; n < chain::synthetic::Flight<Hz>::kTicks; ++n) {
     const auto t = flight.next();
-    c.set_pilot(t.sticks);
-    c.filter(t.sample);
-    if (!calibrated) {
-      calibrated = c.calibrate();
-      continue;
-    }
-    c.estimate();
+    if (replay.tick(t.sample, t.sticks) != wire::Mode::full_control) continue;
     worst = std::max({worst, std::fabs(c.estimator().roll().to_double() - t.truth.roll.to_double()),
                       std::fabs(c.estimator().pitch().to_double() - t.truth.pitch.to_double())});
   }

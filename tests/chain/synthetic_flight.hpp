@@ -20,9 +20,12 @@
 
 #include <fixedpoint/fixedpoint.hpp>
 #include <qr/core/board.hpp>
-#include <qr/core/safety.hpp>
+#include <qr/core/flight_types.hpp>
 
 namespace qr::chain::synthetic {
+
+// The QR clock at the first tick of the script (a recording of it starts at 1 s of uptime).
+inline constexpr uint32_t kStartUs = 1000000u;
 
 using Angle = fx::Q<28>;
 using Unit = fx::Q<30>;  // sin, cos

@@ -83,7 +83,7 @@ inline std::vector<GoldenFrame> golden_frames() {
       golden("G20", make_log_part(golden_sensor_record(), 4), "4D 95 E8 03 04 4F FF FC 3F 4A 2E A2"),
       golden("G21", make_log_part(golden_telemetry_record(), 0), "4D 96 11 00 00 40 4B 4C 00 05 03 AC"),
       golden("G22", make_log_part(golden_telemetry_record(), 6), "4D 96 11 00 06 4A 2E 6F 02 03 00 84"),
-      golden("G23", TelemetryTask{6, 180, 212, 530}, "4D 99 06 B4 00 D4 00 12 02 32"),
+      golden("G23", TelemetryTask{7, 212, 530, 3}, "4D 99 07 D4 00 12 02 03 00 BB"),
       golden("G24", LogStatus{0x03, 1200, 1190, 2340}, "4D 9C 03 B0 04 A6 04 24 09 0E"),
       // The dedup's content rule (section 6): one seq, two requests.
       golden("G25", ModeChange{17, Mode::manual}, "4D 12 11 02 0E"),

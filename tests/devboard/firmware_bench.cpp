@@ -47,7 +47,7 @@ using FloatChain = qr::FlightChain<qr::chain::RealNumbers<float, SoftFloatMath>>
 
 constexpr uint32_t kMeasuredTicks = 2000;
 constexpr uint32_t kArmingTicksMax = 5000;
-constexpr const char* kModeNames[] = {"safe", "panic", "manual", "calibration", "yaw", "full"};
+
 
 class BenchBoard {
  public:
@@ -136,7 +136,7 @@ void print_stats_field(const char* name, const qr::CycleStats& s) {
 template <class Chain>
 uint32_t bench_mode(Rig<Chain>& rig, Mode mode, const char* suffix) {
   rv32virt::puts("{\"mode\":\"");
-  rv32virt::puts(kModeNames[qr::index(mode)]);
+  rv32virt::puts(wire::mode_key(mode));
   rv32virt::puts(suffix);
   rv32virt::puts("\"");
   if (!rig.arm(mode)) {

@@ -6,10 +6,11 @@ requested with the same seq 17. The firmware must apply it (telemetry says panic
 resend of the manual request and fly on.
 """
 import argparse
+import subprocess
 import sys
 import time
 
-from wire import ACK, MODE_CHANGE, TELEMETRY_ATTITUDE, Devboard, control, frame, frames_in
+from wire import ACK, EXIT, MODE_CHANGE, TELEMETRY_ATTITUDE, Devboard, control, frame, frames_in
 
 MANUAL, PANIC = 2, 1
 TELEMETRY_ENGINES = 0x8D
@@ -67,7 +68,13 @@ def main():
     if attitude is None or attitude[1] != PANIC:
         fail(f"panic acked but not applied: telemetry mode {attitude[1] if attitude else None}")
     print("panic with the reused seq 17: acked and applied")
-    board.kill()
+    board.send(frame(EXIT, [1]))  # panic runs out (3 s), then the firmware stops
+    try:
+        status = board.process.wait(timeout=15)
+    except subprocess.TimeoutExpired:
+        fail("firmware did not stop after exit")
+    if status != 0:
+        fail(f"firmware exit status {status}")
 
 
 if __name__ == "__main__":

@@ -599,12 +599,12 @@ TEST(Console, TaskTableIsPrintedOnRequest) {
   Bench b;
   b.key('b');
   EXPECT_TRUE(b.logged("no task figures"));
-  const wire::FrameBytes frame = wire::encode(wire::TelemetryTask{6, 180, 212, 530});
+  const wire::FrameBytes frame = wire::encode(wire::TelemetryTask{7, 212, 530, 3});
   b.console.receive(frame.bytes, frame.size, b.now);
   b.key('b');
   const qrterm::LogLine* line = b.log.find_last("mixer");
   ASSERT_NE(line, nullptr);
-  EXPECT_NE(line->text.find("180    212    530"), std::string::npos) << line->text;
+  EXPECT_NE(line->text.find("212    530        3"), std::string::npos) << line->text;
 }
 
 // One of every message the QR may send, as the wire library lists them: the console must have a

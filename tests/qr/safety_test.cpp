@@ -10,7 +10,7 @@ constexpr uint8_t m(Mode mode) { return index(mode); }
 constexpr Mode kAllModes[] = {Mode::safe, Mode::panic, Mode::manual, Mode::calibration, Mode::yaw_control, Mode::full_control};
 
 struct Safety : ::testing::Test {
-  SafetyLimits limits;
+  SafetyLimits limits = safety_limits(wire::ParameterValues{});
   SafetyMachine machine{limits};
   Situation s;
 

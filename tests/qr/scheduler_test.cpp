@@ -2,6 +2,9 @@
 // per-tick I/O bounds.
 #include <gtest/gtest.h>
 
+#include <deque>
+#include <vector>
+
 #include <qr/boards/fake/fake_board.hpp>
 #include <qr/core/scheduler.hpp>
 
@@ -24,11 +27,17 @@ struct TestContext {
   uint32_t overrun_on_run = 0;   // run number of task 0 that takes overrun_us more
   uint32_t overrun_us = 0;
   bool switch_to_b_in_task = false;  // a task changes the mode, as the link task would
+  uint16_t slow_divider = 10;        // the slow task's rate, as a parameter would set it
+  std::vector<uint32_t> slow_ticks;  // the ticks (counted from 0) the slow task ran on
+  uint32_t tick = 0;
+  uint8_t running_seen = kNoTask;    // what the scheduler said was running, seen from task 1
+  const void* scheduler = nullptr;
+  void (*on_other)(TestContext&) = nullptr;
   std::deque<uint8_t> rx;
   std::deque<uint8_t> tx;
 
   TaskSet task_set() const { return use_b ? TaskSet{kSetB, 1} : TaskSet{kSetA, 2}; }
-  void begin_tick(uint32_t, const SensorSample&) {}
+  void begin_tick(uint32_t, const SensorSample&) { ++tick; }
   uint32_t rx_space() const { return 1000; }
   void receive(uint8_t b) { rx.push_back(b); }
   bool tx_peek(uint8_t& b) const {
@@ -49,13 +58,17 @@ struct TestContext {
     board->spend_us(work_us[id]);
     if (id == 0 && overrun_us != 0 && runs[0] == overrun_on_run) board->spend_us(overrun_us);
     if (id == 0 && switch_to_b_in_task) use_b = true;
+    if (id == 2) slow_ticks.push_back(tick - 1);
+    if (id == 1 && on_other != nullptr) on_other(*this);
   }
 };
 
+// Budgets in the fake board's cycles (kCyclesPerUs a µs).
 const Task<TestContext> TestContext::kTasks[kTaskCount] = {
-    {"fast", [](TestContext& c) { c.work(0); }, 1},
-    {"other", [](TestContext& c) { c.work(1); }, 1},
-    {"slow", [](TestContext& c) { c.work(2); }, 10},
+    {"fast", [](TestContext& c) { c.work(0); }, 1, 0, 50 * FakeBoard::kCyclesPerUs},
+    {"other", [](TestContext& c) { c.work(1); }, 1, 0, 50 * FakeBoard::kCyclesPerUs},
+    {"slow", [](TestContext& c) { c.work(2); }, 10, 3, 50 * FakeBoard::kCyclesPerUs,
+     [](const TestContext& c) { return c.slow_divider; }},
 };
 
 struct SchedulerTest : ::testing::Test {
@@ -112,6 +125,43 @@ TEST_F(SchedulerTest, SlowTasksRunAtTheirDivider) {
   for (int i = 0; i < 100; ++i) scheduler.tick();
   EXPECT_EQ(context.runs[0], 100u);
   EXPECT_EQ(context.runs[2], 10u);
+}
+
+TEST_F(SchedulerTest, ADividedTaskRunsOnItsPhaseAndTakesANewRateAfterItsNextRun) {
+  Scheduler scheduler(board, context);
+  for (int i = 0; i < 30; ++i) scheduler.tick();
+  EXPECT_EQ(context.slow_ticks, (std::vector<uint32_t>{3, 13, 23}));
+  context.slow_divider = 4;  // the parameter changes: read again after the next run
+  context.slow_ticks.clear();
+  for (int i = 0; i < 22; ++i) scheduler.tick();  // ticks 30..51
+  EXPECT_EQ(context.slow_ticks, (std::vector<uint32_t>{33, 35, 39, 43, 47, 51}));
+  EXPECT_EQ(scheduler.divider(2), 4);
+}
+
+TEST_F(SchedulerTest, ARunOverItsBudgetIsAnOverrunOfThatTask) {
+  Scheduler scheduler(board, context);
+  context.work_us[0] = 50;  // at the budget: not an overrun
+  scheduler.tick();
+  context.work_us[0] = 51;
+  scheduler.tick();
+  scheduler.tick();
+  EXPECT_EQ(scheduler.stats().overruns[0], 2u);
+  EXPECT_EQ(scheduler.stats().overruns[2], 0u);
+}
+
+TEST_F(SchedulerTest, TheRunningTaskIsKnownWhileItRunsAndNoneBetweenTasks) {
+  struct Spy {
+    static void check(TestContext& c) {
+      c.running_seen = static_cast<const Scheduler<FakeBoard, TestContext>*>(c.scheduler)->running_task();
+    }
+  };
+  context.use_b = true;  // set B: task 1 only
+  Scheduler scheduler(board, context);
+  context.scheduler = &scheduler;
+  context.on_other = &Spy::check;
+  scheduler.tick();
+  EXPECT_EQ(context.running_seen, 1);
+  EXPECT_EQ(scheduler.running_task(), kNoTask);
 }
 
 TEST_F(SchedulerTest, TaskStatisticsInCycles) {

@@ -6,11 +6,13 @@
 
 #include <common/parameter_table.hpp>
 #include <qr/core/board.hpp>
-#include <qr/core/safety.hpp>
+#include <qr/core/flight_types.hpp>
 
 namespace qr::test {
 
 struct ScriptedChain {
+  static constexpr uint32_t kAccelDivider = 4;
+
   // Scripted behaviour
   uint32_t calibration_samples = 10;
   int32_t tilt = 0;
@@ -18,6 +20,9 @@ struct ScriptedChain {
   // What the firmware did to it
   uint32_t filtered = 0;
   uint32_t estimated = 0;
+  uint32_t accel_angles = 0;
+  uint32_t calibrations_entered = 0;
+  uint32_t attitude_entered = 0;
   uint32_t yaw_controlled = 0;
   uint32_t attitude_controlled = 0;
   uint32_t parameter_updates = 0;
@@ -31,11 +36,18 @@ struct ScriptedChain {
   void set_pilot(const ControlInput& c) { pilot = c; }
   void filter(const SensorSample&) { ++filtered; }
   bool calibrate() {
-    if (calibration_count_ < calibration_samples) ++calibration_count_;
-    return calibrated();
+    if (run_samples_ < calibration_samples) ++run_samples_;
+    if (run_samples_ == calibration_samples) calibrated_ = true;
+    return run_samples_ == calibration_samples;
   }
-  bool calibrated() const { return calibration_count_ >= calibration_samples; }
+  bool calibrated() const { return calibrated_; }
+  void enter_calibration() {
+    ++calibrations_entered;
+    run_samples_ = 0;
+  }
+  void estimate_accel_angles() { ++accel_angles; }
   void estimate() { ++estimated; }
+  void enter_attitude_control() { ++attitude_entered; }
   void control_yaw() { ++yaw_controlled; }
   void control_attitude() { ++attitude_controlled; }
   // Every engine at the lift stick: enough to see that the mixer ran and what the safety
@@ -58,7 +70,8 @@ struct ScriptedChain {
 
  private:
   static EngineCommand all(uint16_t v) { return EngineCommand{{v, v, v, v}}; }
-  uint32_t calibration_count_ = 0;
+  uint32_t run_samples_ = 0;
+  bool calibrated_ = false;
 };
 
 }  // namespace qr::test

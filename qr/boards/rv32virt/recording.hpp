@@ -11,7 +11,7 @@
 #include <stdint.h>
 
 #include <qr/core/board.hpp>
-#include <qr/core/safety.hpp>
+#include <qr/core/flight_types.hpp>
 
 namespace rv32virt {
 

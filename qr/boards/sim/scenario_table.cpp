@@ -1,6 +1,7 @@
 // The scenarios: one row each, what the pilot does after take-off and the bands the flight is
 // judged by. Bands from issue 6. Every flying scenario must also end where it flew, in full
 // control (a tilt panic or a refused mode fails it); the stops must end in safe, engines still.
+#include <common/mode.hpp>
 #include <qr/boards/sim/scenario.hpp>
 
 namespace qrsim {
@@ -42,10 +43,7 @@ const std::vector<ScenarioSpec> kScenarios = {
 
 }  // namespace
 
-const char* mode_name(uint8_t mode) {
-  static const char* const kNames[] = {"safe", "panic", "manual", "calibration", "yaw", "full"};
-  return mode < 6 ? kNames[mode] : "unknown";
-}
+const char* mode_name(uint8_t mode) { return wire::mode_key(static_cast<wire::Mode>(mode)); }
 
 const std::vector<ScenarioSpec>& scenarios() { return kScenarios; }
 

@@ -134,11 +134,11 @@ class TiltEstimator {
   typename N::BiasSum bias_sum_{};
 };
 
-// AccelDivider: the accelerometer angles (two atan2 and a square root) are taken on every
-// AccelDivider-th update from the start, and held in between (flight_chain.hpp says why that is
-// enough). Counted from the (re)start, not from power-up, so that a replay that starts at the
-// calibration computes on the very ticks the flight did.
-template <class N, uint32_t SampleHz, uint32_t AccelDivider = 1>
+// Two steps: update_accel() takes the accelerometer's angles (two atan2 and a square root) and
+// may run at a fraction of the rate (the flight's task table runs it at 250 Hz: flight_chain.hpp
+// says why that is enough); update() integrates the gyro every tick and corrects towards the
+// angles last taken. A (re)start takes fresh angles itself, whatever tick it falls on.
+template <class N, uint32_t SampleHz>
 class AttitudeEstimator {
  public:
   using Rate = typename N::Rate;
@@ -155,35 +155,32 @@ class AttitudeEstimator {
   }
 
   // The next update starts over from the accelerometer's angles, with no bias and yaw 0.
-  void restart() {
-    started_ = false;
-    accel_phase_ = 0;
+  void restart() { started_ = false; }
+
+  // The slow step: calibrated, filtered specific force (g), x y z -> the accelerometer's angles,
+  // and the Euler factors refreshed from the current attitude.
+  void update_accel(const Accel (&accel)[3]) {
+    take_accel_angles(accel);
+    if (started_) euler_ = euler_terms(roll_.angle(), pitch_.angle());
   }
 
-  // Calibrated, filtered body rates (rad/s) and specific force (g), x y z.
+  // Every tick: calibrated, filtered body rates (rad/s); the specific force is used only to
+  // (re)start from the accelerometer's angles.
   void update(const Rate (&rate)[3], const Accel (&accel)[3]) {
-    const bool slow_tick = accel_phase_ == 0;
-    if (++accel_phase_ == AccelDivider) accel_phase_ = 0;
-    if (slow_tick) {
-      roll_from_accel_ = N::atan2(-accel[1], -accel[2]);
-      const auto horizontal_squared = fx::mul_wide(accel[1], accel[1]) + fx::mul_wide(accel[2], accel[2]);
-      const Magnitude horizontal = N::sqrt(N::template convert<Magnitude>(horizontal_squared));
-      pitch_from_accel_ = N::atan2(N::template convert<Magnitude>(accel[0]), horizontal);
-    }
     if (!started_) {
+      take_accel_angles(accel);
       roll_.start(roll_from_accel_);
       pitch_.start(pitch_from_accel_);
       yaw_.set(Angle{});
+      euler_ = euler_terms(roll_.angle(), pitch_.angle());
       started_ = true;
     }
     // Body rates to Euler rates (Z-Y-X): roll' = p + (q sin roll + r cos roll) tan pitch,
     // pitch' = q cos roll - r sin roll. Without this a yaw turn while tilted reads as a roll or
     // pitch rate, and the accelerometer, which in free flight may only pull slowly (C1 of
     // seconds), would take that long to undo it. The rates are this tick's; the factors, which
-    // move with the attitude, are refreshed with the accelerometer angles (they are then at most
-    // AccelDivider - 1 ticks old: 3 ms at 1 kHz, against the 11 ms the gyro's own low-pass
-    // delays the rates by).
-    if (slow_tick) euler_ = euler_terms(roll_.angle(), pitch_.angle());
+    // move with the attitude, are refreshed with the accelerometer angles (update_accel: at 250
+    // Hz they are at most 3 ms old, against the 11 ms the gyro's own low-pass delays the rates by).
     yaw_rate_ = rate[2];
     const Rate q = rate[1] - pitch_.bias();
     const EulerTerms& k = euler_;
@@ -215,6 +212,13 @@ class AttitudeEstimator {
   static constexpr typename N::Scale kDt = typename N::Scale(1.0 / SampleHz);
   static constexpr Unit kOne = Unit(1.0);
 
+  void take_accel_angles(const Accel (&accel)[3]) {
+    roll_from_accel_ = N::atan2(-accel[1], -accel[2]);
+    const auto horizontal_squared = fx::mul_wide(accel[1], accel[1]) + fx::mul_wide(accel[2], accel[2]);
+    const Magnitude horizontal = N::sqrt(N::template convert<Magnitude>(horizontal_squared));
+    pitch_from_accel_ = N::atan2(N::template convert<Magnitude>(accel[0]), horizontal);
+  }
+
   struct EulerTerms {
     Unit sin_roll, cos_roll, tan_pitch;
   };
@@ -242,7 +246,6 @@ class AttitudeEstimator {
   Angle roll_from_accel_{};
   Angle pitch_from_accel_{};
   EulerTerms euler_{Unit{}, kOne, Unit{}};  // at level
-  uint32_t accel_phase_ = 0;  // updates since the accelerometer angles were last taken
   bool started_ = false;
 };
 

@@ -1,10 +1,13 @@
 // The signal chain as the firmware runs it: one object, one method per scheduler task, data
 // flowing one way through a tick:
 //
-//   set_pilot -> filter -> (calibrate) -> estimate -> (control_attitude) (control_yaw) -> mix
-//                                                                       (manual: mix_manual)
+//   set_pilot -> filter -> (calibrate) -> (estimate_accel_angles) -> estimate
+//             -> (control_attitude) (control_yaw) -> mix          (manual: mix_manual)
 //
 // Each method reads what the ones before it left and writes its own outputs; none reaches back.
+// Which of them run in a tick, and how often, is the flight's task table (qr/core/flight_tasks.hpp);
+// what happens on entering a mode is its mode table (enter_calibration, enter_attitude_control),
+// called by the transition. Nothing here counts ticks.
 //
 // Num is the number policy: FixedNumbers in flight (FixedChain below); the host tests also run
 // FlightChain<DoubleNumbers> (qr/tools/real_numbers.hpp) as the accuracy reference. SampleHz is
@@ -27,7 +30,7 @@
 #include <qr/core/chain/sensor_calibration.hpp>
 #include <qr/core/chain/sensor_filters.hpp>
 #include <qr/core/rate.hpp>
-#include <qr/core/safety.hpp>
+#include <qr/core/flight_types.hpp>
 
 namespace qr {
 
@@ -40,8 +43,8 @@ class FlightChain {
   using Thrust = typename Num::Thrust;
   static constexpr uint32_t kSampleHz = SampleHz;
 
-  // The estimator takes new accelerometer angles (two atan2 and a square root, about 600 RV32
-  // instructions) at 250 Hz, not every tick. They enter through C1, seconds in free flight
+  // The task table runs estimate_accel_angles() (two atan2 and a square root, about 600 RV32
+  // instructions) at 250 Hz, not every tick. The angles enter through C1, seconds in free flight
   // (docs/signal-chain.md), so an angle held for 4 ms changes nothing the filter can show; the
   // accelerometer is still low-passed at the full rate, so what is sampled has no content near
   // 125 Hz for the sampling to fold down.
@@ -69,26 +72,31 @@ class FlightChain {
 
   // Task "filter": one raw sample through the low-pass filters.
   void filter(const SensorSample& s) {
-    ++ticks_;
     sample_ = s;
     filters_.update(s);
   }
 
   // Task "calibration": averages the samples filter() was given; true once this run is done.
-  // A run starts whenever calibrate() is called after a tick without it (entering calibration
-  // mode), or after restart_calibration(). A finished run restarts the estimator from the
-  // accelerometer's angles; until the next run finishes, the previous offsets stay in use.
+  // A run starts at enter_calibration() (the calibration mode's entry action). A finished run
+  // restarts the estimator from the accelerometer's angles; until the next run finishes, the
+  // previous offsets stay in use.
   bool calibrate() {
-    if (calibrated_at_tick_ + 1 != ticks_) calibration_.restart();
-    calibrated_at_tick_ = ticks_;
     const bool was_done = calibration_.samples() >= chain::kCalibrationSamples;
     const bool done = calibration_.add(sample_);
     if (done && !was_done) estimator_.restart();
     return done;
   }
-  void restart_calibration() { calibration_.restart(); }
+  void enter_calibration() { calibration_.restart(); }
   // Offsets exist (some calibration run has finished since start-up).
   bool calibrated() const { return calibration_.done(); }
+
+  // Task "accel angles": calibrated filtered accelerometer -> its roll and pitch angles, which
+  // the estimator corrects towards until they are taken again.
+  void estimate_accel_angles() {
+    Accel accel[3];
+    for (int i = 0; i < 3; ++i) accel[i] = filters_.accel(i) - calibration_.accel_offset(i);
+    estimator_.update_accel(accel);
+  }
 
   // Task "estimator": calibrated filtered sensors -> attitude, bias-corrected rates.
   void estimate() {
@@ -108,17 +116,22 @@ class FlightChain {
     yaw_ran_ = true;
   }
 
+  // Entry action of full control: the rate loops' integrals start empty, and the first tick
+  // integrates whatever the mixer did in the mode before.
+  void enter_attitude_control() {
+    for (auto& axis : tilt_) axis.reset();
+    attitude_entered_ = true;
+  }
+
   // Task "attitude control": the roll and pitch moments from the angle/rate cascades.
-  // The rate loops' integrals start empty whenever this runs after a tick without it (entering
-  // full control), stay empty while the lift stick is at 0 (engines stopped: on the ground, or
-  // the pilot cut them), and hold while the mixer had to scale the last moments down.
+  // The rate loops' integrals stay empty while the lift stick is at 0 (engines stopped: on the
+  // ground, or the pilot cut them), and hold while the mixer had to scale the last moments down.
   void control_attitude() {
-    const bool entered = attitude_at_tick_ + 1 != ticks_;
-    attitude_at_tick_ = ticks_;
-    if (entered || pilot_.lift() == 0) {
+    if (pilot_.lift() == 0) {
       for (auto& axis : tilt_) axis.reset();
     }
-    const bool integrate = pilot_.lift() != 0 && (entered || !mixer_.limited());
+    const bool integrate = pilot_.lift() != 0 && (attitude_entered_ || !mixer_.limited());
+    attitude_entered_ = false;
     roll_moment_ = tilt_[0].moment(pilot_.roll_angle(), estimator_.roll(), estimator_.p(), integrate);
     pitch_moment_ = tilt_[1].moment(pilot_.pitch_angle(), estimator_.pitch(), estimator_.q(), integrate);
     attitude_ran_ = true;
@@ -179,7 +192,7 @@ class FlightChain {
   int32_t cutoff_hz() const { return filters_.cutoff_hz(); }
 
   // The blocks themselves, for tests and tools that look inside.
-  const chain::AttitudeEstimator<Num, SampleHz, kAccelDivider>& estimator() const { return estimator_; }
+  const chain::AttitudeEstimator<Num, SampleHz>& estimator() const { return estimator_; }
   const chain::SensorCalibration<Num>& calibration() const { return calibration_; }
 
  private:
@@ -199,7 +212,7 @@ class FlightChain {
 
   chain::SensorFilters<Num, SampleHz> filters_{chain::parameter_spec(wire::ParamId::filter_cutoff_hz).default_value};
   chain::SensorCalibration<Num> calibration_;
-  chain::AttitudeEstimator<Num, SampleHz, kAccelDivider> estimator_;
+  chain::AttitudeEstimator<Num, SampleHz> estimator_;
   chain::PilotSetpoints<Num> pilot_;
   chain::YawRateController<Num> yaw_;
   chain::AttitudeController<Num, SampleHz> tilt_[2];  // roll, pitch
@@ -209,9 +222,7 @@ class FlightChain {
   chain::Moments<Thrust> moments_{};                      // what the last mix asked for
   EngineCommand engines_{};
   SensorSample sample_{};
-  uint32_t ticks_ = 0;  // filter() calls: one per tick
-  uint32_t calibrated_at_tick_ = 0;
-  uint32_t attitude_at_tick_ = 0;  // last tick control_attitude() ran
+  bool attitude_entered_ = false;  // full control entered: the next control_attitude() integrates
 };
 
 using FixedChain = FlightChain<chain::FixedNumbers>;

@@ -13,7 +13,7 @@
 #include <common/units.hpp>
 #include <qr/core/chain/chain_parameters.hpp>
 #include <qr/core/chain/numeric.hpp>
-#include <qr/core/safety.hpp>
+#include <qr/core/flight_types.hpp>
 
 namespace qr::chain {
 

@@ -1,6 +1,11 @@
-// Test mode, one tick at a time: what the replay runs for each recorded sample, and the columns
-// it reports. Shared by the host replay (qr/tools/replay.cpp) and the devboard's
+// Test mode, one tick at a time: recorded samples and sticks through the flight's own tick
+// (the task table and mode table of qr/core/flight_tasks.hpp, run by the flight's scheduler), and
+// the columns it reports. Shared by the host replay (qr/host/replay.cpp) and the devboard's
 // (qr/boards/rv32virt/replay_main.cpp), so both write the same CSV, bit for bit.
+//
+// The replay is calibration until it is done, then full control: the chain's tasks of those
+// modes' sets, at their rates and phases, with the modes' entry actions. The link, safety,
+// telemetry and logger rows have nothing to do here: the recording is the pilot.
 #pragma once
 
 #include <stddef.h>
@@ -8,26 +13,109 @@
 
 #include <common/mode.hpp>
 #include <qr/core/board.hpp>
-#include <qr/core/safety.hpp>
+#include <qr/core/flight_tasks.hpp>
+#include <qr/core/flight_types.hpp>
+#include <qr/core/rate.hpp>
+#include <qr/core/scheduler.hpp>
 
 namespace qr::chain {
 
-// The tick as the flight task sets run it: calibration until it is done, then full control.
-// Returns the mode the tick ran in.
-template <class Chain>
-wire::Mode replay_tick(Chain& chain, const SensorSample& sample, const ControlInput& sticks, bool& calibrated) {
-  chain.set_pilot(sticks);
-  chain.filter(sample);
-  if (!calibrated) {
-    calibrated = chain.calibrate();
-    return wire::Mode::calibration;
+// A cycle counter for the replay's task statistics: none on the host (`NoCycles`); the devboard
+// passes one that reads minstret.
+struct NoCycles {
+  static uint32_t now() { return 0; }
+};
+
+template <class Chain, class Cycles = NoCycles>
+class ChainReplay {
+ public:
+  using ChainType = Chain;
+  static constexpr uint8_t kTaskCount = kFlightTaskCount;
+  static const Task<ChainReplay> (&kTasks)[kFlightTaskCount];
+
+  // `first_time_us`: the QR clock of the first recorded tick. The flight's tick t runs at
+  // (t + 1) periods (its first kick comes one period after start), so the recording's time says
+  // which tick of the flight it starts at, and the divided rows fall on the ticks they fell on
+  // in flight.
+  static constexpr uint32_t kPeriodUs = 1000000u / Chain::kSampleHz;  // the recording's rate
+
+  explicit ChainReplay(Chain& chain, uint32_t first_time_us = kPeriodUs)
+      : chain_(chain), scheduler_{board_, *this, SchedulerLimits{}, first_tick(first_time_us)} {
+    enter(wire::Mode::calibration);
   }
-  chain.estimate();
-  chain.control_attitude();
-  chain.control_yaw();
-  chain.mix();
-  return wire::Mode::full_control;
-}
+
+  // One recorded tick; returns the mode the tick ran in.
+  wire::Mode tick(const SensorSample& sample, const ControlInput& sticks) {
+    board_.sample = sample;
+    sticks_ = sticks;
+    const wire::Mode ran_in = mode_;
+    scheduler_.tick();
+    return ran_in;
+  }
+  const SchedulerStats<kTaskCount>& stats() const { return scheduler_.stats(); }
+
+  // ---- the rows' side (flight_tasks.hpp) ----
+  Chain& chain() { return chain_; }
+  void run_link() { chain_.set_pilot(sticks_); }
+  void run_filter() { chain_.filter(board_.sample); }
+  void run_calibration() {
+    if (chain_.calibrate()) enter(wire::Mode::full_control);
+  }
+  void run_mixer() { chain_.mix(); }
+  void run_manual_mixer() { chain_.mix_manual(); }
+  void run_safety() {}
+  void run_telemetry() {}
+  void run_logger() {}
+  void run_log_download() {}
+  uint16_t telemetry_divider() const { return 1; }
+  uint16_t log_divider() const { return 1; }
+
+  // ---- the scheduler's side ----
+  TaskSet task_set() const { return kFlightModes<ChainReplay>[index(mode_)].tasks; }
+  void begin_tick(uint32_t, const SensorSample&) {}
+  uint32_t rx_space() const { return 0; }
+  void receive(uint8_t) {}
+  bool tx_peek(uint8_t&) const { return false; }
+  void tx_pop() {}
+  EngineCommand engines() const { return {}; }
+  uint8_t leds() const { return 0; }
+  bool running() const { return true; }
+  void account(const TickReport&, const SchedulerStats<kTaskCount>&) {}
+
+ private:
+  // Time is the recording's: one tick a kick, never late.
+  struct ReplayBoard {
+    SensorSample sample;
+    uint32_t kick = 0;
+    uint32_t wait_kick(uint32_t seen) { return kick = seen + 1; }
+    uint32_t kicks() const { return kick; }
+    uint32_t now_us() const { return kick * kPeriodUs; }
+    uint32_t cycles() const { return Cycles::now(); }
+    SensorSample read_sensors() const { return sample; }
+    void set_engines(EngineCommand) {}
+    bool serial_read(uint8_t&) { return false; }
+    bool serial_write(uint8_t) { return true; }
+    void set_leds(uint8_t) {}
+    LogArea log_area() { return {}; }
+  };
+
+  static uint32_t first_tick(uint32_t time_us) { return time_us < kPeriodUs ? 0 : time_us / kPeriodUs - 1; }
+
+  void enter(wire::Mode m) {
+    mode_ = m;
+    if (kFlightModes<ChainReplay>[index(m)].enter != nullptr) kFlightModes<ChainReplay>[index(m)].enter(*this);
+  }
+
+  Chain& chain_;
+  ControlInput sticks_;
+  wire::Mode mode_ = wire::Mode::calibration;
+  ReplayBoard board_;
+  Scheduler<ReplayBoard, ChainReplay> scheduler_;  // last: it reads the rows at construction
+};
+
+template <class Chain, class Cycles>
+const Task<ChainReplay<Chain, Cycles>> (&ChainReplay<Chain, Cycles>::kTasks)[kFlightTaskCount] =
+    kFlightTaskTable<ChainReplay<Chain, Cycles>>;
 
 template <class Chain>
 struct ReplayColumn {

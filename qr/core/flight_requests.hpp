@@ -1,0 +1,58 @@
+// Applying the pilot's messages: each decoded message from the console becomes a change to the
+// flight (sticks, a mode request, a parameter, a log command); for a request, `answer` is what
+// its ack or nack says. Included by flight_impl.hpp.
+#pragma once
+
+#include <common/messages.hpp>
+#include <common/parameter_table.hpp>
+
+namespace qr {
+
+template <class Flight>
+struct FlightRequests {
+  Flight& f;
+  NackReason answer = NackReason::none;
+  wire::ParamReport report{};  // id 0: nothing to report
+
+  void operator()(const wire::Control& c) { f.controls_ = ControlInput{c.lift, c.roll, c.pitch, c.yaw}; }
+  void operator()(const wire::ModeChange& m) {
+    answer = f.safety_.request(static_cast<uint8_t>(m.mode), f.situation());
+    f.enter_modes();
+  }
+  void operator()(const wire::ParamSet& p) {
+    answer = f.params_.set(p.id, p.value);
+    if (answer != NackReason::none) return;
+    f.apply_parameters();
+    report = wire::ParamReport{p.id, p.value};  // after the ack: the value now in force
+  }
+  void operator()(const wire::ParamGet& g) {
+    if (g.id == wire::kAllParameters) {
+      f.report_next_ = 0;
+      f.report_end_ = static_cast<uint8_t>(wire::kParameterCount);
+      return;
+    }
+    for (uint8_t row = 0; row < wire::kParameterCount; ++row) {
+      if (static_cast<uint8_t>(wire::kParameterTable[row].id) == g.id) {
+        f.report_next_ = row;
+        f.report_end_ = static_cast<uint8_t>(row + 1);
+        return;
+      }
+    }
+    answer = NackReason::unknown_parameter;
+  }
+  void operator()(const wire::Exit&) {
+    f.safety_.request_exit(f.situation());
+    f.enter_modes();
+  }
+  void operator()(const wire::LogStart& l) { log(f.log_.start(l.logs)); }
+  void operator()(const wire::LogStop&) { log(f.log_.stop()); }
+  void operator()(const wire::LogDownload& d) { log(f.log_.download(d)); }
+
+ private:
+  void log(NackReason reason) {
+    answer = reason;
+    f.log_status_owed_ = true;
+  }
+};
+
+}  // namespace qr

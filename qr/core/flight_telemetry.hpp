@@ -1,0 +1,77 @@
+// What the QR tells the console every telemetry period (docs/protocol.md section 7): attitude and
+// rates always; engines, set-points, system, link and log status in turn; one task's figures.
+#pragma once
+
+#include <stdint.h>
+
+#include <common/messages.hpp>
+#include <common/units.hpp>
+#include <qr/core/scheduler.hpp>
+
+namespace qr {
+
+class FlightTelemetry {
+ public:
+  // After every tick: the longest since the last system report, and the scheduler's figures.
+  void note_tick(const TickReport& report) {
+    if (report.busy_us > loop_time_us_) loop_time_us_ = report.busy_us;
+    deadline_misses_ = report.deadline_misses;
+    cpu_load_permille_ = report.cpu_load_permille;
+  }
+  uint16_t cpu_load_permille() const { return cpu_load_permille_; }
+  uint32_t deadline_misses() const { return deadline_misses_; }
+
+  // One telemetry period's frames from the flight's read-outs, each handed to `send`.
+  template <class Flight, class Send>
+  void period(const Flight& f, Send&& send) {
+    const auto& chain = f.chain();
+    send(wire::encode(wire::TelemetryAttitude{seq_++, f.mode(), f.telemetry_flags(), chain.roll_e4(), chain.pitch_e4(),
+                                              chain.yaw_e4()}));
+    send(wire::encode(wire::TelemetryRates{chain.p_e3(), chain.q_e3(), chain.r_e3()}));
+    slow_group(f, send);
+    if (f.task_stats() != nullptr) {
+      const CycleStats& c = f.task_stats()->task[stats_task_];
+      send(wire::encode(wire::TelemetryTask{stats_task_, wire::saturate_u16(c.mean()), wire::saturate_u16(c.max),
+                                            wire::saturate_u16(f.task_stats()->overruns[stats_task_])}));
+      stats_task_ = static_cast<uint8_t>(stats_task_ + 1 == Flight::kTaskCount ? 0 : stats_task_ + 1);
+    }
+  }
+
+ private:
+  // Engines, set-points, system, link and log status take turns, each at a fifth of the rate.
+  template <class Flight, class Send>
+  void slow_group(const Flight& f, Send& send) {
+    const uint8_t group = slow_group_;
+    slow_group_ = static_cast<uint8_t>(slow_group_ == 4 ? 0 : slow_group_ + 1);
+    if (group == 0) {
+      wire::TelemetryEngines m;
+      for (int i = 0; i < 4; ++i) m.engine[i] = f.engines().value[i];
+      send(wire::encode(m));
+    } else if (group == 1) {
+      const auto& chain = f.chain();
+      send(wire::encode(wire::TelemetrySetpoints{f.controls().lift, chain.roll_setpoint_e4(), chain.pitch_setpoint_e4(),
+                                                 chain.yaw_rate_setpoint_e3()}));
+    } else if (group == 2) {
+      const uint16_t loop = wire::saturate_u16(loop_time_us_);
+      loop_time_us_ = 0;
+      send(wire::encode(wire::TelemetrySystem{f.sample().battery_mv, cpu_load_permille_, loop,
+                                              static_cast<uint16_t>(deadline_misses_)}));
+    } else if (group == 4) {
+      send(wire::encode(f.log().status()));
+    } else {
+      const wire::LinkCounters& c = f.link_counters();
+      send(wire::encode(wire::TelemetryLink{static_cast<uint16_t>(c.frames_ok), static_cast<uint16_t>(c.check_failures),
+                                            static_cast<uint16_t>(c.unknown_types),
+                                            static_cast<uint16_t>(c.bytes_skipped)}));
+    }
+  }
+
+  uint8_t seq_ = 0;
+  uint8_t slow_group_ = 0;
+  uint8_t stats_task_ = 0;      // whose figures the next telemetry_task carries
+  uint32_t loop_time_us_ = 0;   // longest tick since the last system report
+  uint32_t deadline_misses_ = 0;
+  uint16_t cpu_load_permille_ = 0;
+};
+
+}  // namespace qr

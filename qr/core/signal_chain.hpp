@@ -1,0 +1,52 @@
+// What the flight asks of a signal chain, as the Board concept says what it asks of a board: the
+// chain's tasks and entry actions (called from the task and mode tables, flight_tasks.hpp) and the
+// read-outs telemetry, the logs and the safety machine use. FlightChain (chain/flight_chain.hpp)
+// is the one that flies; tests use scripted ones.
+#pragma once
+
+#include <stdint.h>
+
+#include <common/parameter_table.hpp>
+#include <qr/core/board.hpp>
+#include <qr/core/flight_types.hpp>
+
+namespace qr {
+
+template <class T>
+concept ConvertibleToEngines = requires(T t) { EngineCommand{t}; };
+
+template <class C>
+concept SignalChain = requires(C& c, const C& cc, const wire::ParameterValues& p, const ControlInput& sticks,
+                               const SensorSample& sample) {
+  { C::kAccelDivider };  // the accelerometer-angle task's divider of the control rate
+  c.set_parameters(p);  // when a parameter changes, never per tick
+  c.set_pilot(sticks);
+  // tasks
+  c.filter(sample);
+  { c.calibrate() };  // true once the running calibration has finished
+  c.estimate_accel_angles();
+  c.estimate();
+  c.control_attitude();
+  c.control_yaw();
+  { c.mix() } -> ConvertibleToEngines;
+  { c.mix_manual() } -> ConvertibleToEngines;
+  // entry actions
+  c.enter_calibration();
+  c.enter_attitude_control();
+  // read-outs, in the wire's units
+  { cc.calibrated() };
+  { cc.tilt_mrad() };
+  { cc.roll_e4() };
+  { cc.pitch_e4() };
+  { cc.yaw_e4() };
+  { cc.p_e3() };
+  { cc.q_e3() };
+  { cc.r_e3() };
+  { cc.roll_setpoint_e4() };
+  { cc.pitch_setpoint_e4() };
+  { cc.yaw_rate_setpoint_e3() };
+  { cc.gyro_filtered(0) };
+  { cc.accel_filtered(0) };
+};
+
+}  // namespace qr
