@@ -12,7 +12,7 @@ struct CycleStats {
   uint64_t sum = 0;  // 64 bits: a million ticks of 4,000 cycles overflows 32
 
   void add(uint32_t cycles) {
-    if (count == 0 || cycles < min) min = cycles;
+    if (cycles < min || count == 0) min = cycles;
     if (cycles > max) max = cycles;
     sum += cycles;
     ++count;

@@ -83,7 +83,6 @@ class Flight {
   void run_safety();
   void run_telemetry() { telemetry_.period(*this, [this](const wire::FrameBytes& f) { send(f); }); }
   void run_logger();
-  void run_log_download();
   // The rates that are parameters, as dividers of the control rate.
   uint16_t telemetry_divider() const { return divider_for(static_cast<uint32_t>(params_.get(wire::ParamId::telemetry_rate_hz))); }
   uint16_t log_divider() const { return static_cast<uint16_t>(params_.get(wire::ParamId::log_divider)); }
@@ -111,12 +110,14 @@ class Flight {
   friend struct FlightRequests;
 
   void on_frame(const wire::Frame& frame);
+  void send_download_parts();
   // Parameter fan-out, when a parameter changes (never per tick): the safety machine's limits
   // and the chain's coefficients. The task rates that are parameters are read by the scheduler
   // through the task table.
   void apply_parameters() {
     safety_.limits() = safety_limits(params_);
     chain_.set_parameters(params_);
+    pilot_changed_ = true;
   }
   // Runs the entry action of every mode the safety machine has just entered.
   void enter_modes() {
@@ -160,6 +161,7 @@ class Flight {
   uint32_t sub_ms_us_ = 0;
   SensorSample sample_;
   ControlInput controls_;
+  bool pilot_changed_ = true;  // the chain's set-points must be made again from controls_
   EngineCommand wanted_;      // what the mixer asks for this tick
   EngineCommand engines_;     // what the engines get (after the safety machine)
   uint32_t last_frame_us_ = 0;

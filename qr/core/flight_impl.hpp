@@ -22,7 +22,11 @@ void Flight<Chain>::run_link() {
   // the start of a frame whose sender stopped (docs/protocol.md, section 4).
   if (parser_.buffered() != 0 && tick_us_ - last_byte_us_ > 50000u) parser_.line_idle();
 
-  chain_.set_pilot(controls_);
+  // The set-points change only with the sticks (or a parameter that scales them).
+  if (pilot_changed_) {
+    pilot_changed_ = false;
+    chain_.set_pilot(controls_);
+  }
 
   if (log_status_owed_) {
     log_status_owed_ = false;
@@ -35,6 +39,7 @@ void Flight<Chain>::run_link() {
     const wire::ParameterSpec& spec = wire::kParameterTable[report_next_++];
     send(wire::encode(wire::ParamReport{static_cast<uint8_t>(spec.id), params_.get(spec.id)}));
   }
+  send_download_parts();
 }
 
 template <SignalChain Chain>
@@ -99,7 +104,7 @@ void Flight<Chain>::run_logger() {
 
 // Parts of a download while the link has room for them next to a telemetry period's frames.
 template <SignalChain Chain>
-void Flight<Chain>::run_log_download() {
+void Flight<Chain>::send_download_parts() {
   if (!log_.downloading()) return;
   // Room is kept for a telemetry period (attitude, rates, a slow group, a task figure) and a reply.
   constexpr size_t kTxReserve = 64;

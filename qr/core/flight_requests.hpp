@@ -14,7 +14,10 @@ struct FlightRequests {
   NackReason answer = NackReason::none;
   wire::ParamReport report{};  // id 0: nothing to report
 
-  void operator()(const wire::Control& c) { f.controls_ = ControlInput{c.lift, c.roll, c.pitch, c.yaw}; }
+  void operator()(const wire::Control& c) {
+    f.controls_ = ControlInput{c.lift, c.roll, c.pitch, c.yaw};
+    f.pilot_changed_ = true;
+  }
   void operator()(const wire::ModeChange& m) {
     answer = f.safety_.request(static_cast<uint8_t>(m.mode), f.situation());
     f.enter_modes();

@@ -30,9 +30,9 @@ class FlightTelemetry {
     send(wire::encode(wire::TelemetryRates{chain.p_e3(), chain.q_e3(), chain.r_e3()}));
     slow_group(f, send);
     if (f.task_stats() != nullptr) {
-      const CycleStats& c = f.task_stats()->task[stats_task_];
+      const TaskStats& c = f.task_stats()->task[stats_task_];
       send(wire::encode(wire::TelemetryTask{stats_task_, wire::saturate_u16(c.mean()), wire::saturate_u16(c.max),
-                                            wire::saturate_u16(f.task_stats()->overruns[stats_task_])}));
+                                            wire::saturate_u16(c.overruns)}));
       stats_task_ = static_cast<uint8_t>(stats_task_ + 1 == Flight::kTaskCount ? 0 : stats_task_ + 1);
     }
   }

@@ -45,10 +45,14 @@ struct TickReport {
   uint16_t cpu_load_permille = 0;
 };
 
+// One task's runs: count, min, mean, max cycles, and the runs over its budget.
+struct TaskStats : CycleStats {
+  uint32_t overruns = 0;
+};
+
 template <uint8_t TaskCount>
 struct SchedulerStats {
-  CycleStats task[TaskCount];
-  uint32_t overruns[TaskCount] = {};  // runs that took more than the task's budget
+  TaskStats task[TaskCount];
   CycleStats tick;                  // cycles from the kick to the end of the tick's work
   uint32_t ticks = 0;               // executed ticks
   uint32_t deadline_misses = 0;     // kicks that arrived while a tick was still running
@@ -89,7 +93,7 @@ class Scheduler {
   void reset_stats() { stats_ = Stats{}; }
   // The row running now, kNoTask between tasks: what a fault handler reports.
   uint8_t running_task() const { return running_; }
-  uint16_t divider(uint8_t id) const { return divider_[id]; }
+  uint16_t divider(uint8_t id) const { return slots_[id].divider; }
 
  private:
   void run(uint32_t now_us) {
@@ -100,17 +104,23 @@ class Scheduler {
       context_.receive(byte);
     }
 
+    // Everything a task's bookkeeping needs is read into locals before it runs: the task may
+    // change anything reachable, and reloading after the call would cost every task again.
     const uint32_t t = ticks_;
-    for (const uint8_t *id = next_set_.ids, *end = next_set_.ids + next_set_.count; id != end; ++id) {
-      if (t % divider_[*id] != phase_[*id]) continue;
-      const Task<Context>& task = Context::kTasks[*id];
-      running_ = *id;
+    const uint8_t* const ids = next_set_.ids;
+    const uint8_t count = next_set_.count;
+    for (uint8_t i = 0; i < count; ++i) {
+      const uint8_t id = ids[i];
+      Slot* const slot = &slots_[id];
+      if (t % slot->divider != slot->phase) continue;
+      running_ = id;
       const uint32_t before = board_.cycles();
-      task.run(context_);
+      slot->run(context_);
       const uint32_t cycles = board_.cycles() - before;
-      stats_.task[*id].add(cycles);
-      if (cycles > task.budget) ++stats_.overruns[*id];
-      if (task.divider_from != nullptr) retime(*id);
+      TaskStats* const figures = &stats_.task[id];
+      figures->add(cycles);
+      if (cycles > slot->budget) ++figures->overruns;
+      if (slot->divider_from != nullptr) retime(id);
     }
     running_ = kNoTask;
 
@@ -150,11 +160,16 @@ class Scheduler {
     next_set_ = context_.task_set();
   }
 
+  // A row's rate from the table, or from the context where the row says so.
   void retime(uint8_t id) {
     const Task<Context>& task = Context::kTasks[id];
+    Slot& slot = slots_[id];
+    slot.run = task.run;
+    slot.budget = task.budget;
+    slot.divider_from = task.divider_from;
     const uint16_t d = task.divider_from != nullptr ? task.divider_from(context_) : task.divider;
-    divider_[id] = d == 0 ? uint16_t{1} : d;
-    phase_[id] = static_cast<uint16_t>(task.phase % divider_[id]);
+    slot.divider = d == 0 ? uint16_t{1} : d;
+    slot.phase = static_cast<uint16_t>(task.phase % slot.divider);
   }
 
   B& board_;
@@ -164,8 +179,16 @@ class Scheduler {
   TaskSet next_set_;
   uint32_t ticks_;  // executed ticks since start: the clock of dividers and phases
   Stats stats_{};
-  uint16_t divider_[kTaskCount] = {};
-  uint16_t phase_[kTaskCount] = {};
+  // What the loop needs of a row, in one place per task: the table's row as of its last
+  // retime(), with the rate resolved (the table stays the truth; this is its working copy).
+  struct Slot {
+    uint16_t divider;
+    uint16_t phase;  // < divider
+    uint32_t budget;
+    void (*run)(Context&);
+    uint16_t (*divider_from)(const Context&);
+  };
+  Slot slots_[kTaskCount] = {};
   volatile uint8_t running_ = kNoTask;
   uint32_t window_start_us_;
   uint32_t window_busy_us_ = 0;

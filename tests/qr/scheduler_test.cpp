@@ -145,8 +145,8 @@ TEST_F(SchedulerTest, ARunOverItsBudgetIsAnOverrunOfThatTask) {
   context.work_us[0] = 51;
   scheduler.tick();
   scheduler.tick();
-  EXPECT_EQ(scheduler.stats().overruns[0], 2u);
-  EXPECT_EQ(scheduler.stats().overruns[2], 0u);
+  EXPECT_EQ(scheduler.stats().task[0].overruns, 2u);
+  EXPECT_EQ(scheduler.stats().task[2].overruns, 0u);
 }
 
 TEST_F(SchedulerTest, TheRunningTaskIsKnownWhileItRunsAndNoneBetweenTasks) {

@@ -65,12 +65,6 @@ void put_ratio(uint32_t num, uint32_t den) {
   putc(static_cast<char>('0' + frac % 10u));
 }
 
-uint32_t instret() {
-  uint32_t v;
-  asm volatile("csrr %0, minstret" : "=r"(v));
-  return v;
-}
-
 void exit(int code) {
   if (__stack_limit[0] != kStackCanary) {
     puts("\nrv32virt: stack overflow (canary overwritten)\n");

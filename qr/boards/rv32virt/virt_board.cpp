@@ -118,11 +118,6 @@ uint32_t VirtBoard::now_us() const {
   return base_us + (mtime_lo - base_mtime) / (map::kTimebaseHz / 1000000u);
 }
 
-uint32_t VirtBoard::cycles() const {
-  uint32_t v;
-  asm volatile("csrr %0, minstret" : "=r"(v));
-  return v;
-}
 
 qr::SensorSample VirtBoard::read_sensors() const {
   if (!recording_.valid()) {

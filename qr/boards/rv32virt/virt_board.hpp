@@ -5,6 +5,7 @@
 
 #include <stdint.h>
 
+#include <qr/boards/rv32virt/devboard.hpp>
 #include <qr/boards/rv32virt/recording.hpp>
 #include <qr/core/board.hpp>
 
@@ -18,7 +19,7 @@ class VirtBoard {
   uint32_t wait_kick(uint32_t seen);
   uint32_t kicks() const;
   uint32_t now_us() const;
-  uint32_t cycles() const;  // instructions retired: exact and repeatable under -icount
+  uint32_t cycles() const { return instret(); }  // instructions retired: exact and repeatable under -icount
   qr::SensorSample read_sensors() const;
   qr::ControlInput recorded_sticks() const;
   bool recording_ended() const;

@@ -66,7 +66,6 @@ class ChainReplay {
   void run_safety() {}
   void run_telemetry() {}
   void run_logger() {}
-  void run_log_download() {}
   uint16_t telemetry_divider() const { return 1; }
   uint16_t log_divider() const { return 1; }
 
