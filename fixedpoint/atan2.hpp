@@ -42,10 +42,10 @@ constexpr Out atan2(Q<F, R> y, Q<F, R> x) {
 
   // Unfold, on magnitudes in Q<30> as uint32: pi * 2^30 still fits 32 bits unsigned.
   constexpr uint32_t kHalfPi = static_cast<uint32_t>(Q<30>(detail::kPi / 2).raw());
-  constexpr uint32_t kPi = 3373259426u;  // round(pi * 2^30); Q<30> cannot hold it signed
+  constexpr uint32_t kPiRaw = 3373259426u;  // round(pi * 2^30); Q<30> cannot hold it signed
   uint32_t angle = static_cast<uint32_t>(detail::arctan_unit(t).raw());
   if (steep) angle = kHalfPi - angle;
-  if (x.raw() < 0) angle = kPi - angle;
+  if (x.raw() < 0) angle = kPiRaw - angle;
 
   // To Out: round half up on the magnitude, then the sign of y.
   constexpr int kDrop = 30 - Out::frac_bits;

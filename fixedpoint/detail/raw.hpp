@@ -7,6 +7,8 @@
 
 #include <stdint.h>
 
+#include <fixedpoint/design_constants.hpp>
+
 namespace fx::detail {
 
 template <typename A, typename B>
@@ -91,12 +93,7 @@ constexpr U magnitude(V v) {
   return v < 0 ? static_cast<U>(U{0} - static_cast<U>(v)) : static_cast<U>(v);
 }
 
-constexpr double pow2(int n) {
-  double p = 1.0;
-  for (; n > 0; --n) p *= 2.0;
-  for (; n < 0; ++n) p *= 0.5;
-  return p;
-}
+using fx::pow2;
 
 // Never defined: reaching a call to one of these while evaluating a constant is what turns a
 // bad constant into a compile error, and its name is what the compiler prints.

@@ -3,12 +3,13 @@
 // bench into float), so the numbers are written down once.
 #pragma once
 
+#include <fixedpoint/design_constants.hpp>
 #include <fixedpoint/q.hpp>
 #include <stddef.h>
 
 namespace fx::detail {
 
-inline constexpr double kPi = 3.14159265358979323846;
+using fx::kPi;
 
 // Coefficients of c[0] + c[1] x + c[2] x^2 + ... in a polynomial of x = t^2.
 template <size_t N>

@@ -19,6 +19,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include <common/units.hpp>
+
 namespace qr {
 
 // Raw MPU-6050-style sample: 16-bit gyro and accelerometer counts in body axes x (forward),
@@ -32,7 +34,7 @@ struct SensorSample {
   int32_t pressure_pa = 0;
 };
 
-inline constexpr uint16_t kEngineMax = 1000;
+using wire::kEngineMax;  // engine commands 0..kEngineMax (common/units.hpp)
 
 // Engine order: 0 front, 1 right, 2 back, 3 left (the IN4073 "+" layout).
 struct EngineCommand {

@@ -4,11 +4,12 @@
 
 #include <stdint.h>
 
+#include <fixedpoint/design_constants.hpp>
+
 namespace qr::sensor {
 
 inline constexpr double kGyroCountsPerDegPerSec = 65.5;
-inline constexpr double kPi = 3.14159265358979323846;
-inline constexpr double kGyroCountsPerRadPerSec = kGyroCountsPerDegPerSec * 180.0 / kPi;
+inline constexpr double kGyroCountsPerRadPerSec = kGyroCountsPerDegPerSec * 180.0 / fx::kPi;
 inline constexpr double kAccelCountsPerG = 8192.0;
 inline constexpr double kStandardGravity = 9.80665;  // m/s²
 

@@ -385,6 +385,22 @@ TEST(Layering, EveryIncludePointsDown) {
   }
 }
 
+// The signal chain is an algorithm library: it knows the flight's shared types
+// (qr/core/flight_types.hpp), never the safety machine, the scheduler's context or the flight.
+TEST(Layering, TheSignalChainKnowsNothingOfTheFlightAroundIt) {
+  const std::set<std::string> forbidden = {"qr/core/safety.hpp", "qr/core/flight.hpp", "qr/core/flight_impl.hpp"};
+  int checked = 0;
+  for (const std::string& file : tree_files(is_source)) {
+    if (file.rfind("qr/core/chain/", 0) != 0) continue;
+    const std::string dir = fs::path(file).parent_path().generic_string();
+    for (const std::string& header : project_includes(read_text(fs::path(QR_SOURCE_DIR) / file), dir)) {
+      ++checked;
+      EXPECT_EQ(forbidden.count(header), 0u) << file << " includes " << header;
+    }
+  }
+  EXPECT_GT(checked, 20);
+}
+
 TEST(Layering, ProductionCMakeNamesNoPathUnderTests) {
   const std::regex tests_path(R"((^|[^A-Za-z0-9_.-])tests/)");
   int checked = 0;

@@ -271,6 +271,42 @@ TEST_F(FlightTest, TaskSetsFollowTheMode) {
   EXPECT_GT(flight.chain().attitude_controlled, 0u);
 }
 
+TEST_F(FlightTest, EnteringAModeRunsItsEntryActionOnceByTheTransition) {
+  calibrate();
+  EXPECT_EQ(flight.chain().calibrations_entered, 1u) << "calibration restarts its run on entry";
+  request_mode(Mode::full_control);
+  run_ms(100);
+  ASSERT_EQ(flight.mode(), Mode::full_control);
+  EXPECT_EQ(flight.chain().attitude_entered, 1u) << "full control empties the integrals on entry, once";
+  request_mode(Mode::panic);
+  run_ms(3100);  // panic, then safe
+  ASSERT_EQ(flight.mode(), Mode::safe);
+  request_mode(Mode::yaw_control);
+  run_ms(10);
+  EXPECT_EQ(flight.chain().attitude_entered, 1u) << "yaw control has no attitude loops to empty";
+  request_mode(Mode::panic);
+  run_ms(3100);
+  request_mode(Mode::full_control);
+  run_ms(10);
+  EXPECT_EQ(flight.chain().attitude_entered, 2u);
+  request_mode(Mode::calibration);
+  run_ms(10);
+  EXPECT_EQ(flight.mode(), Mode::full_control);
+  EXPECT_EQ(flight.chain().calibrations_entered, 1u) << "refused from full control: no entry";
+}
+
+TEST_F(FlightTest, DividedTasksRunAtTheirRowsRates) {
+  run_ms(1000);
+  EXPECT_EQ(flight.chain().accel_angles, kControlHz / test::ScriptedChain::kAccelDivider);
+  EXPECT_EQ(flight.chain().estimated, kControlHz);
+  const uint8_t rate = static_cast<uint8_t>(wire::ParamId::telemetry_rate_hz);
+  send(wire::ParamSet{++seq, rate, 10});
+  run_ms(100);
+  received.clear();
+  run_ms(1000);
+  EXPECT_NEAR(static_cast<double>(got<wire::TelemetryAttitude>().size()), 10.0, 1.0) << "the new rate after the next run";
+}
+
 TEST_F(FlightTest, ParameterSetIsRangeCheckedAppliedAndReported) {
   send(wire::ParamSet{++seq, static_cast<uint8_t>(wire::ParamId::link_timeout_ms), 500});
   send(wire::ParamSet{++seq, static_cast<uint8_t>(wire::ParamId::link_timeout_ms), 5});  // below range

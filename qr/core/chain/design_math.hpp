@@ -7,9 +7,11 @@
 
 #include <stdint.h>
 
+#include <fixedpoint/design_constants.hpp>
+
 namespace qr::chain::design {
 
-inline constexpr double kPi = 3.14159265358979323846;
+using fx::kPi;
 inline constexpr double kSqrt2 = 1.41421356237309504880;
 
 // sin and cos by their Taylor series, for |x| <= pi/4, where 13 terms leave a remainder below
@@ -50,11 +52,6 @@ constexpr int64_t round_half_up(double v) {
   return n;
 }
 
-constexpr double pow2(int n) {
-  double p = 1.0;
-  for (; n > 0; --n) p *= 2.0;
-  for (; n < 0; ++n) p *= 0.5;
-  return p;
-}
+using fx::pow2;
 
 }  // namespace qr::chain::design
