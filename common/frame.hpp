@@ -10,7 +10,7 @@
 
 namespace wire {
 
-inline constexpr uint8_t kStartByte = 0x4D;  // 'M'
+inline constexpr uint8_t kStartByte = 0x4D;   // 'M'
 inline constexpr uint8_t kFrameOverhead = 3;  // start, type, check
 
 // The longest payload for which the check still catches every 2-bit error: type + payload +

@@ -20,10 +20,10 @@ inline constexpr uint8_t kLogPartDataBytes = 6;
 struct SensorLogRecord {
   static constexpr MessageType kPartType = MessageType::sensor_log_part;
   static constexpr uint8_t kParts = 5;
-  uint16_t line = 0;  // carried in every part, not in the flat record
-  uint32_t time_us = 0;  // QR clock, wraps after 71 minutes
-  int16_t gyro[3] = {0, 0, 0};    // raw counts x, y, z
-  int16_t accel[3] = {0, 0, 0};   // raw counts x, y, z
+  uint16_t line = 0;                      // carried in every part, not in the flat record
+  uint32_t time_us = 0;                   // QR clock, wraps after 71 minutes
+  int16_t gyro[3] = {0, 0, 0};            // raw counts x, y, z
+  int16_t accel[3] = {0, 0, 0};           // raw counts x, y, z
   int16_t gyro_filtered[3] = {0, 0, 0};   // same counts, after the low-pass filter
   int16_t accel_filtered[3] = {0, 0, 0};  // same counts, after the low-pass filter
   uint16_t battery_mv = 0;
@@ -32,7 +32,12 @@ struct SensorLogRecord {
 
   template <class Self, class Visit>
   static constexpr void fields(Self& m, Visit& v) {
-    v(m.time_us); v(m.gyro); v(m.accel); v(m.gyro_filtered); v(m.accel_filtered); v(m.battery_mv);
+    v(m.time_us);
+    v(m.gyro);
+    v(m.accel);
+    v(m.gyro_filtered);
+    v(m.accel_filtered);
+    v(m.battery_mv);
   }
   constexpr bool valid() const { return true; }
 };
@@ -65,10 +70,24 @@ struct TelemetryLogRecord {
 
   template <class Self, class Visit>
   static constexpr void fields(Self& m, Visit& v) {
-    v(m.time_us); v(m.mode); v(m.flags);
-    v(m.lift); v(m.roll); v(m.pitch); v(m.yaw_rate);
-    v(m.phi); v(m.theta); v(m.psi); v(m.p); v(m.q); v(m.r);
-    v(m.engine); v(m.loop_time_us); v(m.battery_mv); v(m.cpu_load); v(m.deadline_misses);
+    v(m.time_us);
+    v(m.mode);
+    v(m.flags);
+    v(m.lift);
+    v(m.roll);
+    v(m.pitch);
+    v(m.yaw_rate);
+    v(m.phi);
+    v(m.theta);
+    v(m.psi);
+    v(m.p);
+    v(m.q);
+    v(m.r);
+    v(m.engine);
+    v(m.loop_time_us);
+    v(m.battery_mv);
+    v(m.cpu_load);
+    v(m.deadline_misses);
   }
   constexpr bool valid() const {
     bool engines_in_range = true;
@@ -86,16 +105,19 @@ inline constexpr uint8_t kLogStatusFull = 0x04;  // a log filled up and stopped 
 // console knows how many lines a download must bring (lines lost at the end are noticed too).
 struct LogStatus {
   static constexpr MessageType kType = MessageType::log_status;
-  uint8_t flags = 0;             // kLogStatus* bits
-  uint16_t sensor_lines = 0;     // lines 0..sensor_lines-1 exist
+  uint8_t flags = 0;          // kLogStatus* bits
+  uint16_t sensor_lines = 0;  // lines 0..sensor_lines-1 exist
   uint16_t telemetry_lines = 0;
-  uint16_t capacity_lines = 0;   // lines each log can hold
+  uint16_t capacity_lines = 0;  // lines each log can hold
 
   constexpr bool operator==(const LogStatus&) const = default;
 
   template <class Self, class Visit>
   static constexpr void fields(Self& m, Visit& v) {
-    v(m.flags); v(m.sensor_lines); v(m.telemetry_lines); v(m.capacity_lines);
+    v(m.flags);
+    v(m.sensor_lines);
+    v(m.telemetry_lines);
+    v(m.capacity_lines);
   }
   constexpr bool valid() const {
     return (flags & ~(kLogStatusSensorOn | kLogStatusTelemetryOn | kLogStatusFull)) == 0 &&
@@ -104,21 +126,26 @@ struct LogStatus {
 };
 
 template <class Record>
-concept LogRecord = requires { Record::kPartType; Record::kParts; } &&
-                    wire_size<Record>() == size_t{Record::kParts} * kLogPartDataBytes;
+concept LogRecord = requires {
+  Record::kPartType;
+  Record::kParts;
+}
+&&wire_size<Record>() == size_t{Record::kParts} * kLogPartDataBytes;
 
 template <LogRecord Record>
 struct LogPart {
   static constexpr MessageType kType = Record::kPartType;
   uint16_t line = 0;
-  uint8_t part = 0;  // 0..Record::kParts-1
+  uint8_t part = 0;                      // 0..Record::kParts-1
   uint8_t data[kLogPartDataBytes] = {};  // bytes [6*part, 6*part+6) of the flat record
 
   constexpr bool operator==(const LogPart&) const = default;
 
   template <class Self, class Visit>
   static constexpr void fields(Self& m, Visit& v) {
-    v(m.line); v(m.part); v(m.data);
+    v(m.line);
+    v(m.part);
+    v(m.data);
   }
   constexpr bool valid() const { return part < Record::kParts; }
 };

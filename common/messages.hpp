@@ -18,10 +18,10 @@ struct MessageList {
 };
 
 // One struct per row of kMessageTable. The static checks below keep the two in step.
-using AllMessages = MessageList<Control, ModeChange, ParamSet, ParamGet, LogStart, LogStop, LogDownload, Exit,
-                                Ack, Nack, ParamReport, DebugText, TelemetryAttitude, TelemetryRates,
-                                TelemetryEngines, TelemetrySetpoints, TelemetrySystem, TelemetryLink,
-                                SensorLogPart, TelemetryLogPart, TelemetryTask, LogStatus>;
+using AllMessages =
+    MessageList<Control, ModeChange, ParamSet, ParamGet, LogStart, LogStop, LogDownload, Exit, Ack, Nack, ParamReport,
+                DebugText, TelemetryAttitude, TelemetryRates, TelemetryEngines, TelemetrySetpoints, TelemetrySystem,
+                TelemetryLink, SensorLogPart, TelemetryLogPart, TelemetryTask, LogStatus>;
 
 // What the QR receives: it never decodes a message of the other direction (its parser drops them).
 using PcToQrMessages = MessageList<Control, ModeChange, ParamSet, ParamGet, LogStart, LogStop, LogDownload, Exit>;

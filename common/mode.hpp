@@ -14,8 +14,8 @@ inline constexpr uint8_t kModeCount = 6;
 
 struct ModeSpec {
   Mode mode;
-  const char* name;   // as the pilot reads it: screen, debug text
-  const char* key;    // one word: JSON figures, command lines
+  const char* name;        // as the pilot reads it: screen, debug text
+  const char* key;         // one word: JSON figures, command lines
   bool flies;              // engines follow the pilot; leaving goes through panic; watchdogs on
   bool needs_calibration;  // uses calibrated sensors: refused until a calibration has finished
   bool needs_attitude;     // flies on the attitude estimate: the tilt watchdog applies

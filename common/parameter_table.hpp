@@ -22,30 +22,30 @@ namespace wire {
 // sample the angle moves 1/C1 of its error toward the accelerometer angle, and the gyro bias
 // moves by the error x fs / C2; sqrt(C2) / (2 C1) is the damping, so C2 = 4 C1^2 is critical.
 // docs/parameters.md is generated from these rows (qrparams --markdown).
-#define WIRE_PARAMETER_ROWS(ROW)                                                                                  \
-  ROW(yaw_p, 1, 4, 0, 16000, 4800, "thrust units per rad/s", "yaw rate controller gain")                          \
-  ROW(roll_pitch_p1, 2, 8, 0, 5120, 1408, "1/s", "roll/pitch angle loop: rate set-point per rad of angle error")  \
-  ROW(roll_pitch_p2, 3, 4, 0, 16000, 2560, "thrust units per rad/s", "roll/pitch rate loop gain")                 \
-  ROW(attitude_c1, 4, 0, 1, 65535, 8000, "samples",                                                               \
-      "attitude estimator (complementary filter): accelerometer angle correction divisor; the angle follows "    \
-      "the accelerometer with a time constant of C1 samples")                                                    \
-  ROW(attitude_c2, 5, 0, 1, 1073741824, 256000000, "samples^2",                                                   \
+#define WIRE_PARAMETER_ROWS(ROW) \
+  ROW(yaw_p, 1, 4, 0, 16000, 4800, "thrust units per rad/s", "yaw rate controller gain") \
+  ROW(roll_pitch_p1, 2, 8, 0, 5120, 1408, "1/s", "roll/pitch angle loop: rate set-point per rad of angle error") \
+  ROW(roll_pitch_p2, 3, 4, 0, 16000, 2560, "thrust units per rad/s", "roll/pitch rate loop gain") \
+  ROW(attitude_c1, 4, 0, 1, 65535, 8000, "samples", \
+      "attitude estimator (complementary filter): accelerometer angle correction divisor; the angle follows " \
+      "the accelerometer with a time constant of C1 samples") \
+  ROW(attitude_c2, 5, 0, 1, 1073741824, 256000000, "samples^2", \
       "attitude estimator (complementary filter): gyro bias correction divisor; bias += angle error x fs / C2, " \
-      "C2 = 4 C1^2 is critically damped")                                                                        \
-  ROW(filter_cutoff_hz, 6, 0, 1, 250, 20, "Hz", "sensor low-pass cut-off")                                        \
-  ROW(telemetry_rate_hz, 7, 0, 1, 100, 50, "Hz", "fast telemetry group rate")                                     \
-  ROW(link_timeout_ms, 8, 0, 50, 2000, 250, "ms", "no valid frame for this long in flight: panic")                \
-  ROW(battery_warning_mv, 9, 0, 9000, 12600, 11100, "mV", "below this: warning")                                  \
-  ROW(battery_panic_mv, 10, 0, 9000, 12600, 10500, "mV", "below this in flight: panic")                           \
+      "C2 = 4 C1^2 is critically damped") \
+  ROW(filter_cutoff_hz, 6, 0, 1, 250, 20, "Hz", "sensor low-pass cut-off") \
+  ROW(telemetry_rate_hz, 7, 0, 1, 100, 50, "Hz", "fast telemetry group rate") \
+  ROW(link_timeout_ms, 8, 0, 50, 2000, 250, "ms", "no valid frame for this long in flight: panic") \
+  ROW(battery_warning_mv, 9, 0, 9000, 12600, 11100, "mV", "below this: warning") \
+  ROW(battery_panic_mv, 10, 0, 9000, 12600, 10500, "mV", "below this in flight: panic") \
   ROW(tilt_limit_mrad, 11, 0, 87, 1396, 785, "mrad", "tilt beyond this in yaw/full control: panic (785 = 45 deg)") \
-  ROW(max_yaw_rate_rad_s, 12, 10, 0, 8192, 2048, "rad/s", "yaw rate set-point at full stick")                     \
-  ROW(panic_level, 13, 0, 0, 1000, 350, "engine units", "engines hold at most this while panicking")              \
-  ROW(panic_hold_ms, 14, 0, 0, 10000, 2000, "ms", "panic: time at the panic level before ramping down")           \
-  ROW(panic_ramp_ms, 15, 0, 0, 10000, 1000, "ms", "panic: ramp from panic level to zero")                         \
-  ROW(idle_level, 16, 0, 0, 500, 180, "engine units", "lowest engine value while lift > 0 in flight")             \
-  ROW(log_divider, 17, 0, 1, 1000, 10, "control periods", "write a log line every this many periods")             \
-  ROW(roll_pitch_i, 18, 4, 0, 16000, 1280, "thrust units per rad", "roll/pitch rate loop integral gain")          \
-  ROW(roll_pitch_d, 19, 8, 0, 5120, 1280, "thrust units per rad/s^2",                                             \
+  ROW(max_yaw_rate_rad_s, 12, 10, 0, 8192, 2048, "rad/s", "yaw rate set-point at full stick") \
+  ROW(panic_level, 13, 0, 0, 1000, 350, "engine units", "engines hold at most this while panicking") \
+  ROW(panic_hold_ms, 14, 0, 0, 10000, 2000, "ms", "panic: time at the panic level before ramping down") \
+  ROW(panic_ramp_ms, 15, 0, 0, 10000, 1000, "ms", "panic: ramp from panic level to zero") \
+  ROW(idle_level, 16, 0, 0, 500, 180, "engine units", "lowest engine value while lift > 0 in flight") \
+  ROW(log_divider, 17, 0, 1, 1000, 10, "control periods", "write a log line every this many periods") \
+  ROW(roll_pitch_i, 18, 4, 0, 16000, 1280, "thrust units per rad", "roll/pitch rate loop integral gain") \
+  ROW(roll_pitch_d, 19, 8, 0, 5120, 1280, "thrust units per rad/s^2", \
       "roll/pitch rate loop derivative gain (on the measured rate)")
 
 enum class ParamId : uint8_t {
@@ -56,10 +56,10 @@ enum class ParamId : uint8_t {
 
 struct ParameterSpec {
   ParamId id;
-  const char* name;   // the enumerator's identifier, spelled the same
-  uint8_t frac_bits;  // Q format: value = raw / 2^frac_bits
-  int32_t min;        // raw, inclusive
-  int32_t max;        // raw, inclusive
+  const char* name;       // the enumerator's identifier, spelled the same
+  uint8_t frac_bits;      // Q format: value = raw / 2^frac_bits
+  int32_t min;            // raw, inclusive
+  int32_t max;            // raw, inclusive
   int32_t default_value;  // raw
   const char* unit;
   const char* meaning;

@@ -163,8 +163,10 @@ constexpr bool read_fields(const uint8_t* in, size_t length, Record& out) {
 
 // A message is a record with a type in the table whose payload length matches its fields.
 template <class Msg>
-concept Message = requires { Msg::kType; } && message_spec(Msg::kType) != nullptr &&
-                  message_spec(Msg::kType)->payload_length == wire_size<Msg>();
+concept Message = requires {
+  Msg::kType;
+}
+&&message_spec(Msg::kType) != nullptr&& message_spec(Msg::kType)->payload_length == wire_size<Msg>();
 
 template <Message Msg>
 FrameBytes encode(const Msg& message) {

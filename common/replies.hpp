@@ -25,7 +25,8 @@ struct Ack {
 
   template <class Self, class Visit>
   static constexpr void fields(Self& m, Visit& v) {
-    v(m.type); v(m.seq);
+    v(m.type);
+    v(m.seq);
   }
   constexpr bool valid() const { return is_acked_type(type); }
 };
@@ -42,7 +43,9 @@ struct Nack {
 
   template <class Self, class Visit>
   static constexpr void fields(Self& m, Visit& v) {
-    v(m.type); v(m.seq); v(m.reason);
+    v(m.type);
+    v(m.seq);
+    v(m.reason);
   }
   constexpr bool valid() const {
     return is_acked_type(type) && reason != NackReason::none && find_nack_reason(reason) != nullptr;
@@ -59,7 +62,8 @@ struct ParamReport {
 
   template <class Self, class Visit>
   static constexpr void fields(Self& m, Visit& v) {
-    v(m.id); v(m.value);
+    v(m.id);
+    v(m.value);
   }
   constexpr bool valid() const { return true; }
 };

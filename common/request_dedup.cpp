@@ -20,8 +20,7 @@ Admission RequestDedup::admit(const Frame& frame, uint32_t now_ms) {
   admission.request = true;
   admission.seq = request_seq(frame);
   Entry& e = entries_[slot];
-  if (e.seen && e.request == frame && !is_stop_request(frame) &&
-      !reached(now_ms, e.last_seen_ms + kDedupWindowMs)) {
+  if (e.seen && e.request == frame && !is_stop_request(frame) && !reached(now_ms, e.last_seen_ms + kDedupWindowMs)) {
     admission.duplicate = true;
     admission.previous = e.answer;
     e.last_seen_ms = now_ms;  // each resend extends the window

@@ -24,7 +24,10 @@ struct Control {
 
   template <class Self, class Visit>
   static constexpr void fields(Self& m, Visit& v) {
-    v(m.lift); v(m.roll); v(m.pitch); v(m.yaw);
+    v(m.lift);
+    v(m.roll);
+    v(m.pitch);
+    v(m.yaw);
   }
   static constexpr bool stick_ok(int16_t s) { return s >= -kStickMax && s <= kStickMax; }
   constexpr bool valid() const { return lift <= kLiftMax && stick_ok(roll) && stick_ok(pitch) && stick_ok(yaw); }
@@ -39,7 +42,8 @@ struct ModeChange {
 
   template <class Self, class Visit>
   static constexpr void fields(Self& m, Visit& v) {
-    v(m.seq); v(m.mode);
+    v(m.seq);
+    v(m.mode);
   }
   // Every mode byte decodes: a number with no mode (6..255) is a well-formed request the QR's
   // safety machine refuses with nack unknown_mode (bad_value would call the frame malformed).
@@ -57,7 +61,9 @@ struct ParamSet {
 
   template <class Self, class Visit>
   static constexpr void fields(Self& m, Visit& v) {
-    v(m.seq); v(m.id); v(m.value);
+    v(m.seq);
+    v(m.id);
+    v(m.value);
   }
   constexpr bool valid() const { return true; }  // id and range are the table's business: nack
 };
@@ -74,7 +80,8 @@ struct ParamGet {
 
   template <class Self, class Visit>
   static constexpr void fields(Self& m, Visit& v) {
-    v(m.seq); v(m.id);
+    v(m.seq);
+    v(m.id);
   }
   constexpr bool valid() const { return true; }
 };
@@ -93,7 +100,8 @@ struct LogStart {
 
   template <class Self, class Visit>
   static constexpr void fields(Self& m, Visit& v) {
-    v(m.seq); v(m.logs);
+    v(m.seq);
+    v(m.logs);
   }
   constexpr bool valid() const { return logs != 0 && (logs & ~(kLogSensor | kLogTelemetry)) == 0; }
 };
@@ -124,7 +132,10 @@ struct LogDownload {
 
   template <class Self, class Visit>
   static constexpr void fields(Self& m, Visit& v) {
-    v(m.seq); v(m.log); v(m.first_line); v(m.count);
+    v(m.seq);
+    v(m.log);
+    v(m.first_line);
+    v(m.count);
   }
   constexpr bool valid() const { return log == LogKind::sensor || log == LogKind::telemetry; }
 };

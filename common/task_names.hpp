@@ -8,8 +8,8 @@
 namespace wire {
 
 inline constexpr const char* kTaskNames[] = {
-    "link",  "filter", "calibration", "accel_angles", "estimator", "attitude",
-    "yaw",   "mixer",  "manual",      "safety",       "telemetry", "logger",
+    "link", "filter", "calibration", "accel_angles", "estimator", "attitude",
+    "yaw",  "mixer",  "manual",      "safety",       "telemetry", "logger",
 };
 inline constexpr uint8_t kTaskCount = sizeof(kTaskNames) / sizeof(kTaskNames[0]);
 

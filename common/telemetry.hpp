@@ -31,7 +31,12 @@ struct TelemetryAttitude {
 
   template <class Self, class Visit>
   static constexpr void fields(Self& m, Visit& v) {
-    v(m.tick); v(m.mode); v(m.flags); v(m.phi); v(m.theta); v(m.psi);
+    v(m.tick);
+    v(m.mode);
+    v(m.flags);
+    v(m.phi);
+    v(m.theta);
+    v(m.psi);
   }
   constexpr bool valid() const { return valid_mode(mode); }
 };
@@ -46,7 +51,9 @@ struct TelemetryRates {
 
   template <class Self, class Visit>
   static constexpr void fields(Self& m, Visit& v) {
-    v(m.p); v(m.q); v(m.r);
+    v(m.p);
+    v(m.q);
+    v(m.r);
   }
   constexpr bool valid() const { return true; }
 };
@@ -74,16 +81,19 @@ struct TelemetryEngines {
 // What the controllers are steering to, after stick scaling and trim.
 struct TelemetrySetpoints {
   static constexpr MessageType kType = MessageType::telemetry_setpoints;
-  uint16_t lift = 0;      // 0..1000
-  int16_t roll = 0;       // roll angle set-point, 1e-4 rad
-  int16_t pitch = 0;      // pitch angle set-point, 1e-4 rad
-  int16_t yaw_rate = 0;   // yaw rate set-point, 1e-3 rad/s
+  uint16_t lift = 0;     // 0..1000
+  int16_t roll = 0;      // roll angle set-point, 1e-4 rad
+  int16_t pitch = 0;     // pitch angle set-point, 1e-4 rad
+  int16_t yaw_rate = 0;  // yaw rate set-point, 1e-3 rad/s
 
   constexpr bool operator==(const TelemetrySetpoints&) const = default;
 
   template <class Self, class Visit>
   static constexpr void fields(Self& m, Visit& v) {
-    v(m.lift); v(m.roll); v(m.pitch); v(m.yaw_rate);
+    v(m.lift);
+    v(m.roll);
+    v(m.pitch);
+    v(m.yaw_rate);
   }
   constexpr bool valid() const { return lift <= kLiftMax; }
 };
@@ -99,7 +109,10 @@ struct TelemetrySystem {
 
   template <class Self, class Visit>
   static constexpr void fields(Self& m, Visit& v) {
-    v(m.battery_mv); v(m.cpu_load); v(m.loop_time_us); v(m.deadline_misses);
+    v(m.battery_mv);
+    v(m.cpu_load);
+    v(m.loop_time_us);
+    v(m.deadline_misses);
   }
   constexpr bool valid() const { return cpu_load <= kPermilleMax; }
 };
@@ -117,7 +130,10 @@ struct TelemetryLink {
 
   template <class Self, class Visit>
   static constexpr void fields(Self& m, Visit& v) {
-    v(m.frames_ok); v(m.check_failures); v(m.unknown_types); v(m.bytes_skipped);
+    v(m.frames_ok);
+    v(m.check_failures);
+    v(m.unknown_types);
+    v(m.bytes_skipped);
   }
   constexpr bool valid() const { return true; }
 };
@@ -137,7 +153,10 @@ struct TelemetryTask {
 
   template <class Self, class Visit>
   static constexpr void fields(Self& m, Visit& v) {
-    v(m.task); v(m.mean); v(m.max); v(m.overruns);
+    v(m.task);
+    v(m.mean);
+    v(m.max);
+    v(m.overruns);
   }
   constexpr bool valid() const { return mean <= max; }
 };

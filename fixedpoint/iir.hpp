@@ -49,8 +49,8 @@ constexpr T iir1_step(Iir1State<T>& s, const Iir1Coefficients<C>& c, T x) {
 // y = b0 x + b1 x1 + b2 x2 - a1 y1 - a2 y2
 template <typename T, typename C>
 constexpr T iir2_step(Iir2State<T>& s, const Iir2Coefficients<C>& c, T x) {
-  const T y = narrow<T>(mul_wide(c.b0, x) + mul_wide(c.b1, s.x1) + mul_wide(c.b2, s.x2) -
-                        mul_wide(c.a1, s.y1) - mul_wide(c.a2, s.y2));
+  const T y = narrow<T>(mul_wide(c.b0, x) + mul_wide(c.b1, s.x1) + mul_wide(c.b2, s.x2) - mul_wide(c.a1, s.y1) -
+                        mul_wide(c.a2, s.y2));
   s.x2 = s.x1;
   s.x1 = x;
   s.y2 = s.y1;

@@ -45,9 +45,7 @@ class Q {
     return from_raw(detail::saturate<Raw>(static_cast<int64_t>(n) * (int64_t{1} << Frac)));
   }
   // Nearest integer, halves up.
-  constexpr int32_t to_int() const {
-    return static_cast<int32_t>(detail::round_shr(static_cast<int32_t>(raw_), Frac));
-  }
+  constexpr int32_t to_int() const { return static_cast<int32_t>(detail::round_shr(static_cast<int32_t>(raw_), Frac)); }
 
   // For host tests and tools; on the target it would pull in soft-float.
   constexpr double to_double() const { return static_cast<double>(raw_) * detail::pow2(-Frac); }
@@ -59,12 +57,8 @@ class Q {
   friend constexpr Q operator+(Q a, Q b) { return from_raw(detail::wrap<Raw>(word(a) + word(b))); }
   friend constexpr Q operator-(Q a, Q b) { return from_raw(detail::wrap<Raw>(word(a) - word(b))); }
   friend constexpr Q operator-(Q a) { return from_raw(detail::wrap<Raw>(Word{0} - word(a))); }
-  friend constexpr Q operator*(Q a, Q b) {
-    return from_raw(detail::wrap<Raw>(detail::round_shr(product(a, b), Frac)));
-  }
-  friend constexpr Q operator*(Q a, int32_t n) {
-    return from_raw(detail::wrap<Raw>(static_cast<int64_t>(a.raw_) * n));
-  }
+  friend constexpr Q operator*(Q a, Q b) { return from_raw(detail::wrap<Raw>(detail::round_shr(product(a, b), Frac))); }
+  friend constexpr Q operator*(Q a, int32_t n) { return from_raw(detail::wrap<Raw>(static_cast<int64_t>(a.raw_) * n)); }
   friend constexpr Q operator*(int32_t n, Q a) { return a * n; }
   friend constexpr Q operator/(Q a, Q b) { return div_sat(a, b); }
 
@@ -142,9 +136,7 @@ class Q {
   using Product = typename Traits::Product;
 
   static constexpr Word word(Q a) { return static_cast<Word>(a.raw_); }
-  static constexpr Product product(Q a, Q b) {
-    return static_cast<Product>(a.raw_) * static_cast<Product>(b.raw_);
-  }
+  static constexpr Product product(Q a, Q b) { return static_cast<Product>(a.raw_) * static_cast<Product>(b.raw_); }
 
   Raw raw_ = 0;
 };

@@ -75,9 +75,7 @@ constexpr int64_t rescaled(Wide<G> from) {
 // cost a 64-bit range check on every tick.
 template <typename To, int G>
   requires is_q<To>
-constexpr To narrow(Wide<G> w) {
-  return To::from_raw(detail::wrap<typename To::raw_type>(detail::rescaled<To>(w)));
-}
+constexpr To narrow(Wide<G> w) { return To::from_raw(detail::wrap<typename To::raw_type>(detail::rescaled<To>(w))); }
 
 template <typename To, int G>
   requires is_q<To>
@@ -91,23 +89,15 @@ constexpr float mul_wide(float a, float b) { return a * b; }
 
 template <typename To>
   requires detail::is_same<To, double>
-constexpr double narrow(double w) {
-  return w;
-}
+constexpr double narrow(double w) { return w; }
 template <typename To>
   requires detail::is_same<To, float>
-constexpr float narrow(float w) {
-  return w;
-}
+constexpr float narrow(float w) { return w; }
 template <typename To>
   requires detail::is_same<To, double>
-constexpr double narrow_sat(double w) {
-  return w;
-}
+constexpr double narrow_sat(double w) { return w; }
 template <typename To>
   requires detail::is_same<To, float>
-constexpr float narrow_sat(float w) {
-  return w;
-}
+constexpr float narrow_sat(float w) { return w; }
 
 }  // namespace fx

@@ -1,8 +1,8 @@
 // Drag of the centre body and arms, quadratic in air speed, each body axis with its own Cd·A.
 #pragma once
 
-#include <sim/vehicle.hpp>
 #include <sim/vec3.hpp>
+#include <sim/vehicle.hpp>
 
 namespace sim {
 

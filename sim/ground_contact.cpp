@@ -13,9 +13,15 @@ constexpr double kStickSpeed = 0.02;  // m/s
 std::array<Vec3, kContactPoints> contact_points(const VehicleParams& v) {
   const double r = v.foot_radius_m, d = v.foot_depth_m, l = v.arm_m, h = -v.hub_height_m;
   return {{
-      {r, 0, d}, {0, r, d}, {-r, 0, d}, {0, -r, d},  // feet
-      {l, 0, h}, {0, l, h}, {-l, 0, h}, {0, -l, h},  // motor hubs
-      {0, 0, -v.top_height_m},                       // battery on top
+      {r, 0, d},
+      {0, r, d},
+      {-r, 0, d},
+      {0, -r, d},  // feet
+      {l, 0, h},
+      {0, l, h},
+      {-l, 0, h},
+      {0, -l, h},               // motor hubs
+      {0, 0, -v.top_height_m},  // battery on top
   }};
 }
 

@@ -18,9 +18,9 @@ namespace sim {
 inline constexpr int kContactPoints = 9;
 
 struct ContactResult {
-  Wrench wrench;             // on the airframe, body axes
-  double deepest_m = 0;      // how far the lowest point is below the ground (<= 0: above; when
-                             // far above, a bound: the centre's height less the farthest point)
+  Wrench wrench;         // on the airframe, body axes
+  double deepest_m = 0;  // how far the lowest point is below the ground (<= 0: above; when
+                         // far above, a bound: the centre's height less the farthest point)
   bool touching = false;
 };
 

@@ -13,7 +13,8 @@ constexpr double kAccelCountsPerMps2 = kAccelCountsPerG / kStandardGravity;
 
 // Datasheet tolerances are read as 3 sigma of a normal spread over parts.
 Vec3 draw(Random& random, const Vec3& three_sigma) {
-  return {random.normal() * three_sigma.x / 3, random.normal() * three_sigma.y / 3, random.normal() * three_sigma.z / 3};
+  return {random.normal() * three_sigma.x / 3, random.normal() * three_sigma.y / 3,
+          random.normal() * three_sigma.z / 3};
 }
 
 }  // namespace

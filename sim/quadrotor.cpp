@@ -23,8 +23,8 @@ PlantState advance(const PlantState& s, const auto& d, double h) {
 }  // namespace
 
 Quadrotor::Quadrotor(const VehicleParams& vehicle)
-    : vehicle_(vehicle), rotors_(rotor_geometry(vehicle)), ground_(vehicle),
-      battery_(vehicle), volts_(battery_.open_circuit_volts()) {
+    : vehicle_(vehicle), rotors_(rotor_geometry(vehicle)), ground_(vehicle), battery_(vehicle),
+      volts_(battery_.open_circuit_volts()) {
   current_ = vehicle_.avionics_current_a;
   volts_ = battery_.terminal_volts(current_);
   rest_on_ground();
@@ -97,12 +97,13 @@ void Quadrotor::step(double dt) {
                        (k1.attitude_rate.x + 2 * k2.attitude_rate.x + 2 * k3.attitude_rate.x + k4.attitude_rate.x) / 6,
                        (k1.attitude_rate.y + 2 * k2.attitude_rate.y + 2 * k3.attitude_rate.y + k4.attitude_rate.y) / 6,
                        (k1.attitude_rate.z + 2 * k2.attitude_rate.z + 2 * k3.attitude_rate.z + k4.attitude_rate.z) / 6};
-  sum.angular_acceleration = (k1.angular_acceleration + 2.0 * k2.angular_acceleration +
-                              2.0 * k3.angular_acceleration + k4.angular_acceleration) *
+  sum.angular_acceleration = (k1.angular_acceleration + 2.0 * k2.angular_acceleration + 2.0 * k3.angular_acceleration +
+                              k4.angular_acceleration) *
                              (1.0 / 6);
   for (size_t i = 0; i < kRotorCount; ++i) {
     sum.rotor_acceleration[i] = (k1.rotor_acceleration[i] + 2 * k2.rotor_acceleration[i] +
-                                 2 * k3.rotor_acceleration[i] + k4.rotor_acceleration[i]) / 6;
+                                 2 * k3.rotor_acceleration[i] + k4.rotor_acceleration[i]) /
+                                6;
   }
   state_ = advance(state_, sum, dt);
   state_.attitude = normalized(state_.attitude);

@@ -26,10 +26,10 @@ namespace sim {
 inline constexpr double kGravity = 9.80665;  // m/s², standard gravity
 
 struct PlantState {
-  Vec3 position;  // world frame (north, east, down), m; the ground is z = 0
-  Vec3 velocity;  // world frame, m/s
-  Quat attitude;  // body -> world
-  Vec3 rate;      // body rates p, q, r, rad/s
+  Vec3 position;                                  // world frame (north, east, down), m; the ground is z = 0
+  Vec3 velocity;                                  // world frame, m/s
+  Quat attitude;                                  // body -> world
+  Vec3 rate;                                      // body rates p, q, r, rad/s
   std::array<double, kRotorCount> rotor_speed{};  // rad/s, each in its own spin direction
 };
 

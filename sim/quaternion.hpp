@@ -17,10 +17,8 @@ struct Quat {
 };
 
 constexpr Quat operator*(const Quat& a, const Quat& b) {
-  return {a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z,
-          a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
-          a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x,
-          a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w};
+  return {a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z, a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
+          a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x, a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w};
 }
 
 inline Quat normalized(const Quat& q) {
@@ -63,7 +61,9 @@ inline Quat from_euler(const Euler& e) {
 inline Euler to_euler(const Quat& q) {
   const double sin_pitch = 2 * (q.w * q.y - q.z * q.x);
   return {std::atan2(2 * (q.w * q.x + q.y * q.z), 1 - 2 * (q.x * q.x + q.y * q.y)),
-          std::asin(sin_pitch > 1 ? 1 : sin_pitch < -1 ? -1 : sin_pitch),
+          std::asin(sin_pitch > 1    ? 1
+                    : sin_pitch < -1 ? -1
+                                     : sin_pitch),
           std::atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z))};
 }
 

@@ -13,9 +13,9 @@ class Random {
   explicit Random(uint64_t seed);
 
   uint64_t next();
-  double uniform();         // [0, 1), 53 random bits
+  double uniform();  // [0, 1), 53 random bits
   double uniform(double low, double high);
-  double normal();          // mean 0, standard deviation 1
+  double normal();  // mean 0, standard deviation 1
 
   // An independent generator for one part of the world (an IMU, a battery sensor), derived from
   // the seed and a stream number: adding a draw to one part does not change what another gets.

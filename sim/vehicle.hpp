@@ -25,9 +25,9 @@ struct VehicleParams {
   double rotor_inertia = 0;     // rotor + motor bell, kg·m²
   double rotor_drag_coeff = 0;  // in-plane drag per rotor = coeff · ω · in-plane air speed, N/((rad/s)·(m/s))
   double motor_kv_rpm_per_v = 0;
-  double motor_load_factor = 0;  // full-throttle speed with the prop / no-load speed
-  double motor_tau_up_s = 0;     // spin-up time constant
-  double motor_tau_down_s = 0;   // spin-down time constant (no active braking: slower)
+  double motor_load_factor = 0;      // full-throttle speed with the prop / no-load speed
+  double motor_tau_up_s = 0;         // spin-up time constant
+  double motor_tau_down_s = 0;       // spin-down time constant (no active braking: slower)
   double powertrain_efficiency = 0;  // shaft power / battery power, motor and ESC together
 
   // Battery (lithium-polymer cells in series)
@@ -38,36 +38,36 @@ struct VehicleParams {
   double avionics_current_a = 0;      // flight computer, receiver, LEDs
 
   // Landing gear and ground
-  double foot_radius_m = 0;  // feet sit under the arms at this distance from the centre
-  double foot_depth_m = 0;   // feet below the centre of mass
-  double top_height_m = 0;   // highest point (battery) above the centre of mass
+  double foot_radius_m = 0;      // feet sit under the arms at this distance from the centre
+  double foot_depth_m = 0;       // feet below the centre of mass
+  double top_height_m = 0;       // highest point (battery) above the centre of mass
   double contact_stiffness = 0;  // N/m per contact point
   double contact_damping = 0;    // N·s/m per contact point
   double ground_friction = 0;    // Coulomb coefficient
 
   // Vibration at the IMU, per rotor, at the reference rotor speed; scales with speed squared
   // (imbalance force m·r·ω²). Harmonics 1, 2, 3 of the rotation frequency.
-  double vibration_ref_speed = 0;  // rad/s
-  Vec3 vibration_accel_g;          // amplitude of harmonics 1, 2, 3 in the rotor plane, g
+  double vibration_ref_speed = 0;      // rad/s
+  Vec3 vibration_accel_g;              // amplitude of harmonics 1, 2, 3 in the rotor plane, g
   double vibration_accel_z_ratio = 0;  // along z, relative to the in-plane amplitude
-  Vec3 vibration_gyro_dps;         // amplitude of harmonics 1, 2, 3, °/s, about each axis
+  Vec3 vibration_gyro_dps;             // amplitude of harmonics 1, 2, 3, °/s, about each axis
 
   // IMU (MPU-6050 class)
-  double gyro_noise_dps_rthz = 0;   // rate noise spectral density, °/s/√Hz
-  double accel_noise_ug_rthz = 0;   // accelerometer noise density, µg/√Hz
-  double imu_bandwidth_hz = 0;      // digital low-pass setting: noise bandwidth
-  double gyro_bias_dps = 0;         // turn-on zero-rate offset tolerance (3σ), °/s
-  double accel_bias_xy_mg = 0;      // zero-g offset tolerance x, y (3σ), mg
-  double accel_bias_z_mg = 0;       // zero-g offset tolerance z (3σ), mg
-  double scale_error = 0;           // sensitivity tolerance (3σ), fraction
+  double gyro_noise_dps_rthz = 0;  // rate noise spectral density, °/s/√Hz
+  double accel_noise_ug_rthz = 0;  // accelerometer noise density, µg/√Hz
+  double imu_bandwidth_hz = 0;     // digital low-pass setting: noise bandwidth
+  double gyro_bias_dps = 0;        // turn-on zero-rate offset tolerance (3σ), °/s
+  double accel_bias_xy_mg = 0;     // zero-g offset tolerance x, y (3σ), mg
+  double accel_bias_z_mg = 0;      // zero-g offset tolerance z (3σ), mg
+  double scale_error = 0;          // sensitivity tolerance (3σ), fraction
 
   // Battery voltage sensor
   double battery_sense_noise_mv = 0;
   double battery_sense_lsb_mv = 0;
 
   // Derived
-  double speed_per_volt() const;    // rad/s per volt at full command
-  double hover_speed() const;       // rad/s per rotor for thrust = weight
+  double speed_per_volt() const;  // rad/s per volt at full command
+  double hover_speed() const;     // rad/s per rotor for thrust = weight
 };
 
 // The default vehicle, an IN4073-class quadrotor (sim/vehicles/in4073.txt, compiled in).

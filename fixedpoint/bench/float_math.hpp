@@ -3,10 +3,10 @@
 // They exist to be measured against, not to be used.
 #pragma once
 
-#include <fixedpoint/detail/horner.hpp>
-#include <fixedpoint/detail/series.hpp>
 #include <stddef.h>
 #include <stdint.h>
+#include <fixedpoint/detail/horner.hpp>
+#include <fixedpoint/detail/series.hpp>
 
 namespace bench::flt {
 

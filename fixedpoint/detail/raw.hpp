@@ -43,7 +43,9 @@ struct RawTraits<int32_t> {
 };
 
 template <typename Raw>
-concept Storage = requires { RawTraits<Raw>::bits; };
+concept Storage = requires {
+  RawTraits<Raw>::bits;
+};
 
 template <typename V>
 struct UnsignedOf;

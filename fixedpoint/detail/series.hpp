@@ -3,9 +3,9 @@
 // bench into float), so the numbers are written down once.
 #pragma once
 
+#include <stddef.h>
 #include <fixedpoint/design_constants.hpp>
 #include <fixedpoint/q.hpp>
-#include <stddef.h>
 
 namespace fx::detail {
 
@@ -19,14 +19,12 @@ struct Series {
 
 // Abramowitz & Stegun, Handbook of Mathematical Functions (1964), 4.4.49:
 //   arctan t / t = 1 + a2 t^2 + a4 t^4 + ... + a16 t^16 + e(t),  |e| <= 2e-8 for 0 <= t <= 1.
-inline constexpr Series<9> kArctanOverT{{1.0, -0.3333314528, 0.1999355085, -0.1420889944,
-                                        0.1065626393, -0.0752896400, 0.0429096138, -0.0161657367,
-                                        0.0028662257}};
+inline constexpr Series<9> kArctanOverT{{1.0, -0.3333314528, 0.1999355085, -0.1420889944, 0.1065626393, -0.0752896400,
+                                         0.0429096138, -0.0161657367, 0.0028662257}};
 
 // Abramowitz & Stegun 4.3.97:
 //   sin x / x = 1 + a2 x^2 + a4 x^4 + ... + a10 x^10 + e(x),  |e| <= 2e-9 for 0 <= x <= pi/2.
-inline constexpr Series<6> kSineOverX{{1.0, -0.1666666664, 0.0083333315, -0.0001984090,
-                                      0.0000027526, -0.0000000239}};
+inline constexpr Series<6> kSineOverX{{1.0, -0.1666666664, 0.0083333315, -0.0001984090, 0.0000027526, -0.0000000239}};
 
 // 4.3.97 with x = pi/2 u: sin(pi/2 u) / u as a polynomial of u^2 on 0 <= u <= 1, whose
 // coefficients are a_2k (pi/2)^(2k+1). Working in quarter turns means the reduced angle never

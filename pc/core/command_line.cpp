@@ -19,7 +19,9 @@ constexpr OptionSpec kOptions[] = {
     {"--baud", "N", "serial line speed (default 115200)",
      [](Options& o, const std::string& v) {
        const auto [end, error] = std::from_chars(v.data(), v.data() + v.size(), o.baud);
-       return error == std::errc{} && end == v.data() + v.size() && o.baud > 0 ? std::string() : "--baud: \"" + v + "\" is not a number";
+       return error == std::errc{} && end == v.data() + v.size() && o.baud > 0
+                  ? std::string()
+                  : "--baud: \"" + v + "\" is not a number";
      }},
     {"--sim", "PATH", "the simulator to start (default: ../qr/qrsim next to qrterm)",
      [](Options& o, const std::string& v) { return o.sim = v, std::string(); }},
@@ -73,7 +75,8 @@ ParsedCommandLine parse_command_line(const std::vector<std::string>& arguments) 
     out.error = spec->set(out.options, value);
     if (!out.error.empty()) return out;
   }
-  if (out.options.port && !out.options.sim.empty()) out.error = "--port and --sim exclude each other: fly a QR or the simulator";
+  if (out.options.port && !out.options.sim.empty())
+    out.error = "--port and --sim exclude each other: fly a QR or the simulator";
   return out;
 }
 

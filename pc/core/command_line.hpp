@@ -13,13 +13,13 @@ namespace qrterm {
 struct Options {
   std::optional<std::string> port;  // fly a QR on this serial device; absent: start the simulator
   uint32_t baud = 115200;
-  std::string sim;                  // empty: <folder of qrterm>/../qr/qrsim
+  std::string sim;                         // empty: <folder of qrterm>/../qr/qrsim
   std::vector<std::string> sim_arguments;  // passed to the simulator after --serve
   std::string joystick = "/dev/input/js0";
   bool no_joystick = false;
   std::string joystick_map = "./qrterm-joystick.txt";
   std::string params = "./qrterm-params.txt";
-  std::string log_dir;              // empty: ./logs/<date>-<time>
+  std::string log_dir;  // empty: ./logs/<date>-<time>
   bool help = false;
 };
 

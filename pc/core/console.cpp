@@ -2,10 +2,10 @@
 
 #include <cstdio>
 
+#include <common/task_names.hpp>
 #include <pc/core/gain_steps.hpp>
 #include <pc/core/hex_log.hpp>
 #include <pc/core/key_map.hpp>
-#include <common/task_names.hpp>
 #include <pc/core/mode_names.hpp>
 #include <pc/core/telemetry_csv.hpp>
 
@@ -91,16 +91,12 @@ struct Console::Receiver {
 };
 
 Console::Console(ConsoleLog& log, ConsoleFiles files, const Setup& setup, uint32_t now_ms)
-    : log_(log),
-      files_(std::move(files)),
-      start_ms_(now_ms),
-      now_ms_(now_ms),
-      link_(now_ms, setup.first_seq),
+    : log_(log), files_(std::move(files)), start_ms_(now_ms), now_ms_(now_ms), link_(now_ms, setup.first_seq),
       parameters_(setup.params, [this](Severity severity, const std::string& text) { note(severity, text); }),
-      downloader_(LogDownloader::Hooks{
-          [this](const wire::LogDownload& request) { link_.request(request, now_ms_); },
-          [this](Severity severity, const std::string& text) { note(severity, text); },
-          [this](const std::string& name) { return files_.open ? files_.open(name) : nullptr; }}),
+      downloader_(
+          LogDownloader::Hooks{[this](const wire::LogDownload& request) { link_.request(request, now_ms_); },
+                               [this](Severity severity, const std::string& text) { note(severity, text); },
+                               [this](const std::string& name) { return files_.open ? files_.open(name) : nullptr; }}),
       joystick_(setup.joystick ? JoystickState::ok : JoystickState::none) {
   if (files_.telemetry_csv != nullptr) telemetry_csv_.emplace(*files_.telemetry_csv, telemetry_csv_header());
 }
@@ -140,12 +136,8 @@ void Console::act(Action action, uint32_t now_ms) {
     if (mode_key.action == action) return request_mode(mode_key.mode);
   }
   switch (action) {
-    case Action::log_start:
-      link_.request(wire::LogStart{0, wire::kLogSensor | wire::kLogTelemetry}, now_ms_);
-      break;
-    case Action::log_stop:
-      link_.request(wire::LogStop{}, now_ms_);
-      break;
+    case Action::log_start: link_.request(wire::LogStart{0, wire::kLogSensor | wire::kLogTelemetry}, now_ms_); break;
+    case Action::log_stop: link_.request(wire::LogStop{}, now_ms_); break;
     case Action::log_download:
       if (downloader_.active()) {
         note(Severity::warning, "a log download is running already (" + downloader_.status() + ")");
@@ -155,14 +147,9 @@ void Console::act(Action action, uint32_t now_ms) {
         downloader_.start(*telemetry_.log_status, now_ms_);
       }
       break;
-    case Action::params_read:
-      link_.request(wire::ParamGet{0, wire::kAllParameters}, now_ms_);
-      break;
-    case Action::tasks_print:
-      print_tasks();
-      break;
-    default:
-      break;
+    case Action::params_read: link_.request(wire::ParamGet{0, wire::kAllParameters}, now_ms_); break;
+    case Action::tasks_print: print_tasks(); break;
+    default: break;
   }
 }
 
@@ -217,7 +204,8 @@ void Console::print_tasks() {
   note(Severity::info, "QR task cycles     mean    max overruns");
   for (const auto& [number, task] : telemetry_.tasks) {
     char line[64];
-    std::snprintf(line, sizeof line, "  %-14s %6u %6u %8u", task_name(number).c_str(), task.mean, task.max, task.overruns);
+    std::snprintf(line, sizeof line, "  %-14s %6u %6u %8u", task_name(number).c_str(), task.mean, task.max,
+                  task.overruns);
     note(Severity::info, line);
   }
 }
@@ -269,7 +257,8 @@ void Console::on_frame(const wire::Frame& frame) {
   ++unhandled_frames_;
   const uint8_t type = static_cast<uint8_t>(frame.type);
   if (!unhandled_types_.insert(type).second) return;
-  note(Severity::warning, std::string("the QR sends ") + wire::message_name(frame.type) + ", which this console ignores");
+  note(Severity::warning,
+       std::string("the QR sends ") + wire::message_name(frame.type) + ", which this console ignores");
 }
 
 void Console::on_attitude(const wire::TelemetryAttitude& attitude) {
@@ -289,7 +278,8 @@ void Console::on_log_status(const wire::LogStatus& status) {
   const bool was_full = telemetry_.log_status && (telemetry_.log_status->flags & wire::kLogStatusFull) != 0;
   telemetry_.on(status);
   if ((status.flags & wire::kLogStatusFull) != 0 && !was_full) {
-    note(Severity::warning, "QR log full (" + std::to_string(status.capacity_lines) + " lines): it keeps its first lines");
+    note(Severity::warning,
+         "QR log full (" + std::to_string(status.capacity_lines) + " lines): it keeps its first lines");
   }
 }
 
@@ -339,7 +329,8 @@ void Console::on_link_state(LinkState state) {
     // The QR may have restarted with its defaults: every parameter goes up again.
     parameters_.send_all();
   } else if (state == LinkState::lost) {
-    note(Severity::error, "LINK LOST: no valid frame from the QR for " + std::to_string(kLinkLostAfterMs / 1000) + " s");
+    note(Severity::error,
+         "LINK LOST: no valid frame from the QR for " + std::to_string(kLinkLostAfterMs / 1000) + " s");
   }
 }
 

@@ -18,11 +18,11 @@ struct GainStep {
 };
 
 inline constexpr GainStep kGainSteps[] = {
-    {Action::yaw_p_up, wire::ParamId::yaw_p, 80, 1},             // 5.0 in the Q4 gain
+    {Action::yaw_p_up, wire::ParamId::yaw_p, 80, 1},  // 5.0 in the Q4 gain
     {Action::yaw_p_down, wire::ParamId::yaw_p, -80, 1},
-    {Action::p1_up, wire::ParamId::roll_pitch_p1, 64, 1},        // 0.25 in the Q8 gain
+    {Action::p1_up, wire::ParamId::roll_pitch_p1, 64, 1},  // 0.25 in the Q8 gain
     {Action::p1_down, wire::ParamId::roll_pitch_p1, -64, 1},
-    {Action::p2_up, wire::ParamId::roll_pitch_p2, 40, 1},        // 2.5 in the Q4 gain
+    {Action::p2_up, wire::ParamId::roll_pitch_p2, 40, 1},  // 2.5 in the Q4 gain
     {Action::p2_down, wire::ParamId::roll_pitch_p2, -40, 1},
     {Action::c1_up, wire::ParamId::attitude_c1, 0, 2},
     {Action::c1_down, wire::ParamId::attitude_c1, 0, -2},

@@ -44,11 +44,11 @@ struct MapEntry {
 // Pairs (axis, invert) in the order lift, roll, pitch, yaw, then the rest: the duplicate-axis check
 // below finds an input's axis entry at 2 * its index.
 constexpr MapEntry kEntries[] = {
-    {"lift_axis", Field::axis, &JoystickMap::lift},     {"lift_invert", Field::invert, &JoystickMap::lift},
-    {"roll_axis", Field::axis, &JoystickMap::roll},     {"roll_invert", Field::invert, &JoystickMap::roll},
-    {"pitch_axis", Field::axis, &JoystickMap::pitch},   {"pitch_invert", Field::invert, &JoystickMap::pitch},
-    {"yaw_axis", Field::axis, &JoystickMap::yaw},       {"yaw_invert", Field::invert, &JoystickMap::yaw},
-    {"abort_button", Field::button, nullptr},           {"deadband", Field::deadband, nullptr},
+    {"lift_axis", Field::axis, &JoystickMap::lift},   {"lift_invert", Field::invert, &JoystickMap::lift},
+    {"roll_axis", Field::axis, &JoystickMap::roll},   {"roll_invert", Field::invert, &JoystickMap::roll},
+    {"pitch_axis", Field::axis, &JoystickMap::pitch}, {"pitch_invert", Field::invert, &JoystickMap::pitch},
+    {"yaw_axis", Field::axis, &JoystickMap::yaw},     {"yaw_invert", Field::invert, &JoystickMap::yaw},
+    {"abort_button", Field::button, nullptr},         {"deadband", Field::deadband, nullptr},
 };
 
 constexpr int64_t kMaxAxis = 63;  // the Linux joystick API numbers axes and buttons in a byte; no stick has more
@@ -115,22 +115,25 @@ JoystickMapFile parse_joystick_map(const std::string& text) {
         break;
     }
   }
-  const AxisBinding JoystickMap::*axes[] = {&JoystickMap::lift, &JoystickMap::roll, &JoystickMap::pitch, &JoystickMap::yaw};
+  const AxisBinding JoystickMap::*axes[] = {&JoystickMap::lift, &JoystickMap::roll, &JoystickMap::pitch,
+                                            &JoystickMap::yaw};
   for (size_t i = 0; i < 4; ++i) {
     for (size_t j = i + 1; j < 4; ++j) {
       if ((out.map.*axes[i]).axis == (out.map.*axes[j]).axis) {
-        out.errors.push_back({std::max(axis_line[i], axis_line[j]),
-                              std::string(kEntries[2 * i].name) + " and " + kEntries[2 * j].name + " are both axis " +
-                                  std::to_string((out.map.*axes[i]).axis)});
+        out.errors.push_back({std::max(axis_line[i], axis_line[j]), std::string(kEntries[2 * i].name) + " and " +
+                                                                        kEntries[2 * j].name + " are both axis " +
+                                                                        std::to_string((out.map.*axes[i]).axis)});
       }
     }
   }
-  std::stable_sort(out.errors.begin(), out.errors.end(), [](const LineError& a, const LineError& b) { return a.line < b.line; });
+  std::stable_sort(out.errors.begin(), out.errors.end(),
+                   [](const LineError& a, const LineError& b) { return a.line < b.line; });
   return out;
 }
 
 std::string format_joystick_map(const JoystickMap& map) {
-  std::string text = "# qrterm joystick map: axis numbers as the Linux joystick driver counts them (jstest shows them).\n";
+  std::string text =
+      "# qrterm joystick map: axis numbers as the Linux joystick driver counts them (jstest shows them).\n";
   for (const MapEntry& entry : kEntries) {
     std::string value;
     switch (entry.field) {

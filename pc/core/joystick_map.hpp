@@ -27,7 +27,7 @@ struct JoystickMap {
   AxisBinding roll{0, false};
   AxisBinding pitch{1, false};
   AxisBinding yaw{2, false};
-  uint8_t abort_button = 0;  // the trigger ("fire")
+  uint8_t abort_button = 0;        // the trigger ("fire")
   int32_t deadband_permille = 50;  // of full deflection; around the centre, and at the throttle's low end
 
   // Axis values (-32767..32767 as the driver reports them) -> pilot inputs in the wire's scale.

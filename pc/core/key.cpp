@@ -9,7 +9,8 @@ struct NamedKey {
 };
 
 constexpr NamedKey kNamedKeys[] = {
-    {kKeyEscape, "ESC"}, {kKeyInterrupt, "^C"}, {kKeyUp, "up"}, {kKeyDown, "down"}, {kKeyLeft, "left"}, {kKeyRight, "right"}, {' ', "space"},
+    {kKeyEscape, "ESC"}, {kKeyInterrupt, "^C"}, {kKeyUp, "up"}, {kKeyDown, "down"},
+    {kKeyLeft, "left"},  {kKeyRight, "right"},  {' ', "space"},
 };
 
 }  // namespace

@@ -15,10 +15,7 @@ const char* link_state_name(LinkState state) {
 }
 
 LinkSession::LinkSession(uint32_t now_ms, uint8_t first_seq)
-    : queue_(first_seq),
-      last_frame_ms_(now_ms),
-      last_byte_ms_(now_ms),
-      next_control_ms_(now_ms),
+    : queue_(first_seq), last_frame_ms_(now_ms), last_byte_ms_(now_ms), next_control_ms_(now_ms),
       rate_window_start_ms_(now_ms) {}
 
 void LinkSession::note_frame(uint32_t now_ms) {

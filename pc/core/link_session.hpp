@@ -24,8 +24,8 @@ inline constexpr uint32_t kLineIdleMs = 50;
 enum class LinkState : uint8_t {
   waiting,  // no valid frame yet, for less than kLinkLostAfterMs
   up,
-  lost,     // no valid frame for kLinkLostAfterMs
-  closed,   // the serial line itself is gone (device unplugged, simulator ended)
+  lost,    // no valid frame for kLinkLostAfterMs
+  closed,  // the serial line itself is gone (device unplugged, simulator ended)
 };
 
 const char* link_state_name(LinkState state);
@@ -34,7 +34,7 @@ struct LinkFigures {
   uint32_t frames_per_s = 0;  // valid frames received in the last whole second
   uint32_t frames_sent = 0;
   uint32_t resends = 0;
-  uint32_t gave_up = 0;       // requests never answered
+  uint32_t gave_up = 0;        // requests never answered
   int32_t round_trip_ms = -1;  // last request answered after its first send; -1: none yet
 };
 

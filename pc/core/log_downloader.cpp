@@ -89,7 +89,8 @@ void LogDownloader::tick(uint32_t now_ms) {
     return;
   }
   if (now_ms - last_progress_ms_ >= kGiveUpMs) {
-    return stop(Severity::error, "log download: no new line for " + std::to_string(kGiveUpMs / 1000) + " s, given up at " + status());
+    return stop(Severity::error,
+                "log download: no new line for " + std::to_string(kGiveUpMs / 1000) + " s, given up at " + status());
   }
   if (sensor) {
     step(*sensor_, wire::LogKind::sensor, now_ms);
@@ -110,8 +111,8 @@ void LogDownloader::write(Download<Record>& download, const char* name) {
   for (const auto& [line, record] : download.records) csv.write(log_row(record));
   out->flush();
   const uint32_t asked_again = download.lines.rerequests();
-  hooks_.note(Severity::info, std::string(name) + " log: " + std::to_string(download.records.size()) + " lines -> " + file +
-                                  (asked_again > 0 ? " (" + std::to_string(asked_again) + " re-requests)" : ""));
+  hooks_.note(Severity::info, std::string(name) + " log: " + std::to_string(download.records.size()) + " lines -> " +
+                                  file + (asked_again > 0 ? " (" + std::to_string(asked_again) + " re-requests)" : ""));
 }
 
 void LogDownloader::stop(Severity severity, const std::string& why) {
@@ -123,7 +124,8 @@ void LogDownloader::stop(Severity severity, const std::string& why) {
 
 std::string LogDownloader::status() const {
   if (kind_ == Kind::sensor && sensor_) {
-    return "sensor log: " + std::to_string(sensor_->lines.received()) + " of " + std::to_string(sensor_->lines.lines()) + " lines";
+    return "sensor log: " + std::to_string(sensor_->lines.received()) + " of " +
+           std::to_string(sensor_->lines.lines()) + " lines";
   }
   if (kind_ == Kind::telemetry && telemetry_) {
     return "telemetry log: " + std::to_string(telemetry_->lines.received()) + " of " +

@@ -28,8 +28,8 @@ class LogDownloader {
   static constexpr uint32_t kGiveUpMs = 5000;
 
   struct Hooks {
-    std::function<void(const wire::LogDownload&)> request;                      // send it (acked)
-    std::function<void(Severity, const std::string&)> note;                     // tell the pilot
+    std::function<void(const wire::LogDownload&)> request;                       // send it (acked)
+    std::function<void(Severity, const std::string&)> note;                      // tell the pilot
     std::function<std::unique_ptr<std::ostream>(const std::string& name)> open;  // a file in the log folder
   };
 

@@ -17,7 +17,8 @@ const wire::ParameterSpec* find_by_name(const std::string& name) {
 
 std::string known_names() {
   std::string names;
-  for (const wire::ParameterSpec& spec : wire::kParameterTable) names += std::string(names.empty() ? "" : ", ") + spec.name;
+  for (const wire::ParameterSpec& spec : wire::kParameterTable)
+    names += std::string(names.empty() ? "" : ", ") + spec.name;
   return names;
 }
 
@@ -30,12 +31,18 @@ struct FormerName {
   wire::ParamId now;
 };
 constexpr FormerName kFormerNames[] = {
-    {"p1", wire::ParamId::roll_pitch_p1},          {"p2", wire::ParamId::roll_pitch_p2},
-    {"c1", wire::ParamId::attitude_c1},            {"c2", wire::ParamId::attitude_c2},
-    {"filter_cutoff", wire::ParamId::filter_cutoff_hz},   {"telemetry_rate", wire::ParamId::telemetry_rate_hz},
-    {"link_timeout", wire::ParamId::link_timeout_ms},     {"battery_warning", wire::ParamId::battery_warning_mv},
-    {"battery_panic", wire::ParamId::battery_panic_mv},   {"tilt_limit", wire::ParamId::tilt_limit_mrad},
-    {"max_yaw_rate", wire::ParamId::max_yaw_rate_rad_s},  {"panic_hold", wire::ParamId::panic_hold_ms},
+    {"p1", wire::ParamId::roll_pitch_p1},
+    {"p2", wire::ParamId::roll_pitch_p2},
+    {"c1", wire::ParamId::attitude_c1},
+    {"c2", wire::ParamId::attitude_c2},
+    {"filter_cutoff", wire::ParamId::filter_cutoff_hz},
+    {"telemetry_rate", wire::ParamId::telemetry_rate_hz},
+    {"link_timeout", wire::ParamId::link_timeout_ms},
+    {"battery_warning", wire::ParamId::battery_warning_mv},
+    {"battery_panic", wire::ParamId::battery_panic_mv},
+    {"tilt_limit", wire::ParamId::tilt_limit_mrad},
+    {"max_yaw_rate", wire::ParamId::max_yaw_rate_rad_s},
+    {"panic_hold", wire::ParamId::panic_hold_ms},
     {"panic_ramp", wire::ParamId::panic_ramp_ms},
 };
 
@@ -109,7 +116,8 @@ ParamFileContents parse_param_file(const std::string& text) {
     out.listed.push_back(spec->id);
   }
   // Errors in line order, whichever pass found them.
-  std::stable_sort(out.errors.begin(), out.errors.end(), [](const LineError& a, const LineError& b) { return a.line < b.line; });
+  std::stable_sort(out.errors.begin(), out.errors.end(),
+                   [](const LineError& a, const LineError& b) { return a.line < b.line; });
   return out;
 }
 

@@ -15,7 +15,7 @@
 namespace qrterm {
 
 struct ParamFileContents {
-  wire::ParameterValues values;  // defaults where the file is silent
+  wire::ParameterValues values;       // defaults where the file is silent
   std::vector<wire::ParamId> listed;  // the parameters the file named, in file order
   std::vector<LineError> errors;      // any error means: do not use `values`
 };

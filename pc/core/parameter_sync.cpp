@@ -60,7 +60,8 @@ void ParameterSync::on_report(const wire::ParamReport& report) {
   // something the pilot did not ask for (it refused it, or changed it itself).
   const int32_t wanted = wanted_.get(spec->id);
   if (news && !on_its_way(spec->id) && report.value != wanted) {
-    note_(Severity::warning, "the QR has " + param_text(spec->id, report.value) + ", the console " + format_real(*spec, wanted));
+    note_(Severity::warning,
+          "the QR has " + param_text(spec->id, report.value) + ", the console " + format_real(*spec, wanted));
   }
 }
 
@@ -68,7 +69,8 @@ void ParameterSync::tick(LinkSession& link, uint32_t now_ms) {
   if (!link.pending(wire::MessageType::param_set)) in_flight_.reset();
   if (in_flight_) return;
   if (!queue_.empty()) {
-    if (!announced_ && queue_.size() > 1) note_(Severity::info, "sending " + std::to_string(queue_.size()) + " parameters");
+    if (!announced_ && queue_.size() > 1)
+      note_(Severity::info, "sending " + std::to_string(queue_.size()) + " parameters");
     announced_ = true;
     in_flight_ = queue_.front();
     queue_.pop_front();

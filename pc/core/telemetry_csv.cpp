@@ -23,12 +23,36 @@ void put(CsvRow& row, const std::optional<Group>& group) {
 }  // namespace
 
 std::vector<std::string> telemetry_csv_header() {
-  return {"pc_time_ms", "tick", "mode", "flags", "phi", "theta", "psi", "p", "q", "r",
-          "engine_front", "engine_right", "engine_back", "engine_left",
-          "sp_lift", "sp_roll", "sp_pitch", "sp_yaw_rate",
-          "battery_mv", "cpu_load", "loop_time_us", "deadline_misses",
-          "qr_frames_ok", "qr_check_failures", "qr_unknown_types", "qr_bytes_skipped",
-          "ctl_lift", "ctl_roll", "ctl_pitch", "ctl_yaw"};
+  return {"pc_time_ms",
+          "tick",
+          "mode",
+          "flags",
+          "phi",
+          "theta",
+          "psi",
+          "p",
+          "q",
+          "r",
+          "engine_front",
+          "engine_right",
+          "engine_back",
+          "engine_left",
+          "sp_lift",
+          "sp_roll",
+          "sp_pitch",
+          "sp_yaw_rate",
+          "battery_mv",
+          "cpu_load",
+          "loop_time_us",
+          "deadline_misses",
+          "qr_frames_ok",
+          "qr_check_failures",
+          "qr_unknown_types",
+          "qr_bytes_skipped",
+          "ctl_lift",
+          "ctl_roll",
+          "ctl_pitch",
+          "ctl_yaw"};
 }
 
 CsvRow telemetry_csv_row(uint32_t time_ms, const TelemetryModel& telemetry, const wire::Control& sent) {

@@ -19,7 +19,7 @@ struct TelemetryModel {
   std::optional<wire::TelemetryEngines> engines;
   std::optional<wire::TelemetrySetpoints> setpoints;
   std::optional<wire::TelemetrySystem> system;
-  std::optional<wire::TelemetryLink> qr_link;  // the QR's receive counters: the uplink's health
+  std::optional<wire::TelemetryLink> qr_link;    // the QR's receive counters: the uplink's health
   std::map<uint8_t, wire::TelemetryTask> tasks;  // cycle figures by task number, one task per telemetry period
   std::optional<wire::LogStatus> log_status;     // the QR's logs: on or off, lines, room
 

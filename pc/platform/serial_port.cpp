@@ -37,13 +37,16 @@ SerialPort::SerialPort(const std::string& path, uint32_t baud) : path_(path) {
   for (const BaudRate& candidate : kBaudRates) {
     if (candidate.baud == baud) rate = &candidate;
   }
-  if (rate == nullptr) throw SerialError("baud rate " + std::to_string(baud) + " is not supported (" + supported_bauds() + ")");
+  if (rate == nullptr)
+    throw SerialError("baud rate " + std::to_string(baud) + " is not supported (" + supported_bauds() + ")");
 
   fd_ = ::open(path.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
   if (fd_ < 0) {
     if (errno == EBUSY) throw SerialError(path + " is busy: another program has it open exclusively");
-    if (errno == ENOENT) throw SerialError(system_error("cannot open " + path) + " (is the QR plugged in? is the path right?)");
-    if (errno == EACCES) throw SerialError(system_error("cannot open " + path) + " (add yourself to the dialout group)");
+    if (errno == ENOENT)
+      throw SerialError(system_error("cannot open " + path) + " (is the QR plugged in? is the path right?)");
+    if (errno == EACCES)
+      throw SerialError(system_error("cannot open " + path) + " (add yourself to the dialout group)");
     throw SerialError(system_error("cannot open " + path));
   }
   const auto fail = [this](const std::string& message) {

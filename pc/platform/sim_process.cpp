@@ -40,14 +40,16 @@ Pipe make_pipe() {
 
 std::string describe_wait_status(int status) {
   if (WIFEXITED(status)) return "exited with status " + std::to_string(WEXITSTATUS(status));
-  if (WIFSIGNALED(status)) return "killed by signal " + std::to_string(WTERMSIG(status)) + " (" + strsignal(WTERMSIG(status)) + ")";
+  if (WIFSIGNALED(status))
+    return "killed by signal " + std::to_string(WTERMSIG(status)) + " (" + strsignal(WTERMSIG(status)) + ")";
   return "ended";
 }
 
 SimProcess::SimProcess(const std::string& program, const std::vector<std::string>& arguments, uint32_t timeout_ms) {
   if (::access(program.c_str(), F_OK) != 0) {
-    throw SimError("no simulator at " + program +
-                   " (build it: cmake --build --preset host; or name it with --sim PATH, or fly a QR with --port PATH)");
+    throw SimError(
+        "no simulator at " + program +
+        " (build it: cmake --build --preset host; or name it with --sim PATH, or fly a QR with --port PATH)");
   }
   if (::access(program.c_str(), X_OK) != 0) throw SimError(program + " is not executable");
 
@@ -122,7 +124,8 @@ SimProcess::SimProcess(const std::string& program, const std::vector<std::string
       const size_t at = line.find(kSerialMarker);
       if (at != std::string::npos && serial_path_.empty()) {
         serial_path_ = line.substr(at + std::strlen(kSerialMarker));
-        while (!serial_path_.empty() && (serial_path_.back() == ' ' || serial_path_.back() == '\r')) serial_path_.pop_back();
+        while (!serial_path_.empty() && (serial_path_.back() == ' ' || serial_path_.back() == '\r'))
+          serial_path_.pop_back();
       } else {
         early_output_.push_back(std::move(line));
       }

@@ -83,7 +83,8 @@ void Cockpit::draw_mode_and_link(const Console& console, int width) {
     mvhline(1, 20, ' ', width - 20);
     attroff(COLOR_PAIR(kAlarm) | A_BOLD);
     const std::string why = state == LinkState::closed ? "serial line gone"
-                                                       : text("no valid frame for %.1f s", console.link().silence_ms(console.now_ms()) / 1000.0);
+                                                       : text("no valid frame for %.1f s",
+                                                              console.link().silence_ms(console.now_ms()) / 1000.0);
     put(1, 21, "LINK LOST  " + why, kAlarm, A_BOLD | A_BLINK);
     return;
   }
@@ -101,7 +102,8 @@ void Cockpit::draw_system(const Console& console, int width) {
     const bool low = t.flag(wire::kFlagBatteryWarning);
     put(2, 0, "battery", 0, A_BOLD);
     put(2, 8, text("%5.2f V", s.battery_mv / 1000.0), low ? kError : kInfo, low ? A_BOLD | A_REVERSE : A_NORMAL);
-    put(2, 18, text("cpu %5.1f %%   loop %5u us   deadline misses %u", s.cpu_load / 10.0, s.loop_time_us, s.deadline_misses));
+    put(2, 18,
+        text("cpu %5.1f %%   loop %5u us   deadline misses %u", s.cpu_load / 10.0, s.loop_time_us, s.deadline_misses));
   } else {
     put(2, 0, "battery", 0, A_BOLD);
     put(2, 8, "-- V", kDim);
@@ -126,13 +128,15 @@ void Cockpit::draw_system(const Console& console, int width) {
     column += static_cast<int>(std::string(flag.name).size()) + 1;
   }
   // The QR's logs: lines kept of the room there is (both logs keep the same number).
-  if (const std::optional<wire::LogStatus>& logs = t.log_status; logs && (logs->sensor_lines > 0 || logs->telemetry_lines > 0)) {
+  if (const std::optional<wire::LogStatus>& logs = t.log_status;
+      logs && (logs->sensor_lines > 0 || logs->telemetry_lines > 0)) {
     const std::string s = text("log %u/%u", std::max(logs->sensor_lines, logs->telemetry_lines), logs->capacity_lines);
     put(3, column + 1, s, (logs->flags & wire::kLogStatusFull) != 0 ? kWarning : kDim);
     column += static_cast<int>(s.size()) + 2;
   }
   std::string status = console.download_status();
-  if (console.parameters_to_send() > 0) status += text("%sparameters to send: %zu", status.empty() ? "" : "  ", console.parameters_to_send());
+  if (console.parameters_to_send() > 0)
+    status += text("%sparameters to send: %zu", status.empty() ? "" : "  ", console.parameters_to_send());
   if (console.exiting()) status = "exiting: waiting for the QR";
   put(3, std::max(column + 2, 44), status, kQr, A_BOLD);
   (void)width;
@@ -179,8 +183,9 @@ void Cockpit::draw_pilot(const Console& console, int width) {
   put(8, 0, "set-point", 0, A_BOLD);
   if (t.setpoints) {
     const wire::TelemetrySetpoints& s = *t.setpoints;
-    put(8, 10, text("lift %4u  roll %+6.1f deg  pitch %+6.1f deg  yaw rate %+6.1f deg/s", s.lift, degrees(s.roll),
-                    degrees(s.pitch), degrees_per_s(s.yaw_rate)));
+    put(8, 10,
+        text("lift %4u  roll %+6.1f deg  pitch %+6.1f deg  yaw rate %+6.1f deg/s", s.lift, degrees(s.roll),
+             degrees(s.pitch), degrees_per_s(s.yaw_rate)));
   } else {
     put(8, 10, "--", kDim);
   }
@@ -199,13 +204,17 @@ void Cockpit::draw_pilot(const Console& console, int width) {
     case JoystickState::lost: put(9, js + 9, "LOST", kError, A_BOLD | A_REVERSE); break;
     case JoystickState::ok: {
       const bool neutral = console.controls().joystick() == Sticks{};
-      put(9, js + 9, !console.joystick_position_known() ? "no position" : neutral ? "neutral" : "active",
+      put(9, js + 9,
+          !console.joystick_position_known() ? "no position"
+          : neutral                          ? "neutral"
+                                             : "active",
           !console.joystick_position_known() ? kWarning : kInfo);
       break;
     }
   }
   const Sticks& j = console.controls().joystick();
-  if (console.joystick_state() == JoystickState::ok) put(10, js, text("js %4d %+5d %+5d %+5d", j.lift, j.roll, j.pitch, j.yaw), kDim);
+  if (console.joystick_state() == JoystickState::ok)
+    put(10, js, text("js %4d %+5d %+5d %+5d", j.lift, j.roll, j.pitch, j.yaw), kDim);
 
   // Gains as the QR reported them; '*' marks a value the QR has not confirmed (yet).
   put(11, 0, "gains", 0, A_BOLD);
@@ -213,8 +222,10 @@ void Cockpit::draw_pilot(const Console& console, int width) {
     wire::ParamId id;
     const char* label;
   };
-  constexpr Gain kGains[] = {{wire::ParamId::yaw_p, "yaw P"}, {wire::ParamId::roll_pitch_p1, "P1"},
-                             {wire::ParamId::roll_pitch_p2, "P2"}, {wire::ParamId::attitude_c1, "C1"},
+  constexpr Gain kGains[] = {{wire::ParamId::yaw_p, "yaw P"},
+                             {wire::ParamId::roll_pitch_p1, "P1"},
+                             {wire::ParamId::roll_pitch_p2, "P2"},
+                             {wire::ParamId::attitude_c1, "C1"},
                              {wire::ParamId::attitude_c2, "C2"}};
   int column = 10;
   bool unconfirmed = false;
@@ -232,8 +243,10 @@ void Cockpit::draw_pilot(const Console& console, int width) {
 
   const LinkFigures& f = console.link().figures();
   put(12, 0, "link", 0, A_BOLD);
-  std::string uplink = t.qr_link ? text("   QR received %u ok, %u bad", t.qr_link->frames_ok, t.qr_link->check_failures) : "";
-  put(12, 10, text("resent %u  no answer %u  telemetry lost %u%s", f.resends, f.gave_up, t.attitude_lost, uplink.c_str()));
+  std::string uplink = t.qr_link ? text("   QR received %u ok, %u bad", t.qr_link->frames_ok, t.qr_link->check_failures)
+                                 : "";
+  put(12, 10,
+      text("resent %u  no answer %u  telemetry lost %u%s", f.resends, f.gave_up, t.attitude_lost, uplink.c_str()));
   (void)width;
 }
 
@@ -265,9 +278,9 @@ void Cockpit::draw_link_alarm(const Console& console, int width) {
   if (state != LinkState::lost && state != LinkState::closed) return;
   const int box = 40;
   const int left = (width - box) / 2;
-  const std::string line2 = state == LinkState::closed
-                                ? "the serial line is gone"
-                                : text("no valid frame for %.1f s", console.link().silence_ms(console.now_ms()) / 1000.0);
+  const std::string line2 = state == LinkState::closed ? "the serial line is gone"
+                                                       : text("no valid frame for %.1f s",
+                                                              console.link().silence_ms(console.now_ms()) / 1000.0);
   const std::string rows[] = {"", "L I N K   L O S T", line2, "x: exit", ""};
   for (int i = 0; i < 5; ++i) {
     std::string s = rows[i];
@@ -292,7 +305,8 @@ void Cockpit::draw_help(int rows, int width) {
     const int row = top + 2 + static_cast<int>(i) % per_column;
     if (row >= top + box_height) continue;
     const KeyBinding& binding = kKeyMap[i];
-    put(row, left + 2 + column * column_width, text("%-6s %s", key_name(binding.key).c_str(), action_text(binding.action)), kTitle);
+    put(row, left + 2 + column * column_width,
+        text("%-6s %s", key_name(binding.key).c_str(), action_text(binding.action)), kTitle);
   }
 }
 
@@ -309,8 +323,10 @@ void Cockpit::compose(const Console& console) {
   if (rows < kMinRows || width < kMinColumns) {
     put(0, 0, text("qrterm needs %dx%d, this terminal is %dx%d", kMinColumns, kMinRows, width, rows), kError, A_BOLD);
     const LinkState state = console.link_state();
-    put(1, 0, text("mode %s, link %s; x exits", console.telemetry().attitude ? mode_name(console.telemetry().attitude->mode) : "?",
-                   link_state_name(state)),
+    put(1, 0,
+        text("mode %s, link %s; x exits",
+             console.telemetry().attitude ? mode_name(console.telemetry().attitude->mode) : "?",
+             link_state_name(state)),
         state == LinkState::up ? kInfo : kAlarm);
     draw_log(console, 3, std::max(0, rows - 3), width);
     wnoutrefresh(stdscr);

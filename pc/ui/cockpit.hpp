@@ -13,9 +13,9 @@
 namespace qrterm {
 
 struct CockpitLabels {
-  std::string source;      // "sim /dev/pts/3" or "/dev/ttyUSB0 115200"
+  std::string source;  // "sim /dev/pts/3" or "/dev/ttyUSB0 115200"
   std::string log_folder;
-  std::string joystick;    // "/dev/input/js0", or empty without one
+  std::string joystick;  // "/dev/input/js0", or empty without one
 };
 
 class Cockpit {

@@ -29,8 +29,8 @@
 namespace qrterm {
 namespace {
 
-constexpr int kUsageError = 2;  // bad command line or bad file: nothing was started
-constexpr int kStartError = 1;  // the QR, the simulator or a file could not be reached
+constexpr int kUsageError = 2;                  // bad command line or bad file: nothing was started
+constexpr int kStartError = 1;                  // the QR, the simulator or a file could not be reached
 constexpr uint32_t kSimStartTimeoutMs = 10000;  // a sanitizer build of the simulator starts slowly
 constexpr uint32_t kJoystickSettleMs = 200;     // the driver reports every axis right after open
 
@@ -60,7 +60,8 @@ StartedParams load_params(const std::string& path) {
   }
   ParamFileContents contents = parse_param_file(text);
   if (!contents.errors.empty()) {
-    throw Failure{kUsageError, describe(path, contents.errors) + "qrterm: fix the parameter file (or move it away to start from the defaults)"};
+    throw Failure{kUsageError, describe(path, contents.errors) +
+                                   "qrterm: fix the parameter file (or move it away to start from the defaults)"};
   }
   return {contents.values, "parameters from " + path};
 }
@@ -104,8 +105,10 @@ int run(int argc, char** argv) {
     } catch (const JoystickError& e) {
       // An error, not a warning: the fire button is the pilot's abort, and a pilot who expects it
       // must not find out in the air that it is not there.
-      throw Failure{kUsageError, std::string(e.what()) +
-                                     "\n  plug one in, name another with --joystick PATH, or fly with the keyboard only: --no-joystick"};
+      throw Failure{
+          kUsageError,
+          std::string(e.what()) +
+              "\n  plug one in, name another with --joystick PATH, or fly with the keyboard only: --no-joystick"};
     }
     settle(*joystick);
   }
@@ -151,14 +154,17 @@ int run(int argc, char** argv) {
   ConsoleFiles files;
   files.rx_hex = hex_file.get();
   files.telemetry_csv = telemetry_file.get();
-  files.open = [log_folder](const std::string& name) -> std::unique_ptr<std::ostream> { return open_in(log_folder, name); };
+  files.open = [log_folder](const std::string& name) -> std::unique_ptr<std::ostream> {
+    return open_in(log_folder, name);
+  };
   Console::Setup setup;
   setup.params = params.values;
   setup.joystick = joystick != nullptr;
   setup.first_seq = static_cast<uint8_t>(::time(nullptr));
   Console console(log, std::move(files), setup, monotonic_ms());
 
-  console.note(Severity::info, "qrterm on " + source + (sim ? " (simulator pid " + std::to_string(sim->pid()) + ")" : ""));
+  console.note(Severity::info,
+               "qrterm on " + source + (sim ? " (simulator pid " + std::to_string(sim->pid()) + ")" : ""));
   if (sim) {
     for (const std::string& line : sim->early_output()) console.note(Severity::info, "sim: " + line);
   }
@@ -169,8 +175,10 @@ int run(int argc, char** argv) {
     console.joystick_moved(reader.sticks(), reader.position_known(), monotonic_ms());
     PilotControls check;
     check.set_joystick(reader.sticks());
-    const std::string not_neutral = !reader.position_known() ? "the joystick has not reported its position" : check.not_neutral_reason();
-    if (!not_neutral.empty()) console.note(Severity::warning, not_neutral + ": flight modes are refused until it is neutral");
+    const std::string not_neutral = !reader.position_known() ? "the joystick has not reported its position"
+                                                             : check.not_neutral_reason();
+    if (!not_neutral.empty())
+      console.note(Severity::warning, not_neutral + ": flight modes are refused until it is neutral");
     else console.note(Severity::info, "joystick " + options.joystick + " neutral");
   } else {
     console.note(Severity::info, "no joystick: keyboard only");

@@ -27,7 +27,8 @@ void run_link(Session& s, std::mutex& lock, const std::atomic<bool>& stop) {
     ::poll(&fd, 1, kLinkPollMs);
     const uint32_t now = monotonic_ms();
     received.clear();
-    const SerialPort::Io io = serial_open && fd.revents != 0 ? s.serial.read_available(received, why) : SerialPort::Io::ok;
+    const SerialPort::Io io = serial_open && fd.revents != 0 ? s.serial.read_available(received, why)
+                                                             : SerialPort::Io::ok;
 
     const std::lock_guard<std::mutex> hold(lock);
     s.console.receive(received.data(), received.size(), now);
@@ -61,7 +62,8 @@ class Ui {
 
     // Reading happens outside the lock: telling ESC from an arrow key waits a few ms.
     keys_.clear();
-    for (Key key = s_.terminal.next_key(); key != kKeyNone; key = s_.terminal.next_key()) keys_.push_back({key, monotonic_ms()});
+    for (Key key = s_.terminal.next_key(); key != kKeyNone; key = s_.terminal.next_key())
+      keys_.push_back({key, monotonic_ms()});
     const bool joystick_read = s_.joystick != nullptr && fds[kJoystick].fd >= 0 && fds[kJoystick].revents != 0;
     const bool joystick_alive = joystick_read && s_.joystick->read();
     lines_.clear();

@@ -11,7 +11,10 @@ struct KeyCode {
 };
 
 constexpr KeyCode kKeyCodes[] = {
-    {KEY_UP, kKeyUp}, {KEY_DOWN, kKeyDown}, {KEY_LEFT, kKeyLeft}, {KEY_RIGHT, kKeyRight},
+    {KEY_UP, kKeyUp},
+    {KEY_DOWN, kKeyDown},
+    {KEY_LEFT, kKeyLeft},
+    {KEY_RIGHT, kKeyRight},
 };
 
 // A lone ESC is told from an arrow key's escape sequence by waiting this long for the rest. Short:

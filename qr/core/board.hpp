@@ -50,16 +50,16 @@ struct LogArea {
 
 template <class B>
 concept Board = requires(B& b, uint8_t& byte, EngineCommand engines) {
-  { b.wait_kick(uint32_t{}) };
-  { b.kicks() };
-  { b.now_us() };
-  { b.cycles() };
-  { b.read_sensors() };
+  {b.wait_kick(uint32_t{})};
+  {b.kicks()};
+  {b.now_us()};
+  {b.cycles()};
+  {b.read_sensors()};
   b.set_engines(engines);
-  { b.serial_read(byte) };
-  { b.serial_write(uint8_t{}) };
+  {b.serial_read(byte)};
+  {b.serial_write(uint8_t{})};
   b.set_leds(uint8_t{});
-  { b.log_area() };
+  {b.log_area()};
 };
 
 }  // namespace qr

@@ -46,7 +46,7 @@ class Flight {
   }
 
   // ---- the scheduler's side ----
-  TaskSet task_set() const { return kFlightModes<Flight>[index(safety_.mode())].tasks; }
+  TaskSet task_set() const { return flight_modes<Flight>()[index(safety_.mode())].tasks; }
   void begin_tick(uint32_t now_us, const SensorSample& sample) {
     sub_ms_us_ += now_us - tick_us_;  // divisions by a constant: multiplies on RV32IM
     uptime_ms_ += sub_ms_us_ / 1000u;
@@ -81,10 +81,14 @@ class Flight {
   void run_mixer() { wanted_ = chain_.mix(); }
   void run_manual_mixer() { wanted_ = chain_.mix_manual(); }
   void run_safety();
-  void run_telemetry() { telemetry_.period(*this, [this](const wire::FrameBytes& f) { send(f); }); }
+  void run_telemetry() {
+    telemetry_.period(*this, [this](const wire::FrameBytes& f) { send(f); });
+  }
   void run_logger();
   // The rates that are parameters, as dividers of the control rate.
-  uint16_t telemetry_divider() const { return divider_for(static_cast<uint32_t>(params_.get(wire::ParamId::telemetry_rate_hz))); }
+  uint16_t telemetry_divider() const {
+    return divider_for(static_cast<uint32_t>(params_.get(wire::ParamId::telemetry_rate_hz)));
+  }
   uint16_t log_divider() const { return static_cast<uint16_t>(params_.get(wire::ParamId::log_divider)); }
 
   // ---- read-outs for the units around the tick, boards, tests and the simulator ----
@@ -126,7 +130,8 @@ class Flight {
     const uint8_t entered = safety_.take_entered();
     if (entered == 0) return;
     for (uint8_t m = 0; m < kModeCount; ++m) {
-      if ((entered & (1u << m)) != 0 && kFlightModes<Flight>[m].enter != nullptr) kFlightModes<Flight>[m].enter(*this);
+      if ((entered & (1u << m)) != 0 && flight_modes<Flight>()[m].enter != nullptr)
+        flight_modes<Flight>()[m].enter(*this);
     }
   }
   void send(const wire::FrameBytes& frame) {
@@ -156,14 +161,14 @@ class Flight {
   Chain chain_;
   FlightTelemetry telemetry_;
 
-  uint32_t tick_us_ = 0;      // time of this tick
-  uint32_t uptime_ms_ = 0;    // for the dedup window; wraps after 49 days
+  uint32_t tick_us_ = 0;    // time of this tick
+  uint32_t uptime_ms_ = 0;  // for the dedup window; wraps after 49 days
   uint32_t sub_ms_us_ = 0;
   SensorSample sample_;
   ControlInput controls_;
   bool pilot_changed_ = true;  // the chain's set-points must be made again from controls_
-  EngineCommand wanted_;      // what the mixer asks for this tick
-  EngineCommand engines_;     // what the engines get (after the safety machine)
+  EngineCommand wanted_;       // what the mixer asks for this tick
+  EngineCommand engines_;      // what the engines get (after the safety machine)
   uint32_t last_frame_us_ = 0;
   uint32_t last_byte_us_ = 0;
   Mode announced_mode_ = Mode::safe;

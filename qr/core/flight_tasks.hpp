@@ -46,7 +46,8 @@ inline constexpr Task<Flight> kFlightTaskTable[kFlightTaskCount] = {
     {wire::kTaskNames[kLinkTask], [](Flight& f) { f.run_link(); }, 1, 0, 4000},
     {wire::kTaskNames[kFilterTask], [](Flight& f) { f.run_filter(); }, 1, 0, 700},
     {wire::kTaskNames[kCalibrationTask], [](Flight& f) { f.run_calibration(); }, 1, 0, 250},
-    {wire::kTaskNames[kAccelAnglesTask], [](Flight& f) { f.chain().estimate_accel_angles(); }, Flight::ChainType::kAccelDivider, 0, 900},
+    {wire::kTaskNames[kAccelAnglesTask], [](Flight& f) { f.chain().estimate_accel_angles(); },
+     Flight::ChainType::kAccelDivider, 0, 900},
     {wire::kTaskNames[kEstimatorTask], [](Flight& f) { f.chain().estimate(); }, 1, 0, 1300},
     {wire::kTaskNames[kAttitudeControlTask], [](Flight& f) { f.chain().control_attitude(); }, 1, 0, 350},
     {wire::kTaskNames[kYawControlTask], [](Flight& f) { f.chain().control_yaw(); }, 1, 0, 80},
@@ -54,15 +55,24 @@ inline constexpr Task<Flight> kFlightTaskTable[kFlightTaskCount] = {
     {wire::kTaskNames[kManualMixerTask], [](Flight& f) { f.run_manual_mixer(); }, 1, 0, 700},
     {wire::kTaskNames[kSafetyTask], [](Flight& f) { f.run_safety(); }, 1, 0, 1800},
     // Rates that are parameters: telemetry_rate_hz and log_divider.
-    {wire::kTaskNames[kTelemetryTask], [](Flight& f) { f.run_telemetry(); }, 1, 1, 2000, [](const Flight& f) { return f.telemetry_divider(); }},
-    {wire::kTaskNames[kLoggerTask], [](Flight& f) { f.run_logger(); }, 1, 3, 900, [](const Flight& f) { return f.log_divider(); }},
+    {wire::kTaskNames[kTelemetryTask], [](Flight& f) { f.run_telemetry(); }, 1, 1, 2000,
+     [](const Flight& f) { return f.telemetry_divider(); }},
+    {wire::kTaskNames[kLoggerTask], [](Flight& f) { f.run_logger(); }, 1, 3, 900,
+     [](const Flight& f) { return f.log_divider(); }},
 };
+
+// The table as a pointer (for readers, cppcheck among them, that stumble on a variable template
+// indexed in place).
+template <class Flight>
+constexpr const Task<Flight>* flight_tasks() {
+  return kFlightTaskTable<Flight>;
+}
 
 // Row i is task i: its name is wire::kTaskNames[i], the number telemetry_task reports.
 template <class Flight>
 constexpr bool rows_in_task_order() {
   for (uint8_t i = 0; i < kFlightTaskCount; ++i) {
-    if (kFlightTaskTable<Flight>[i].name != wire::kTaskNames[i]) return false;
+    if (flight_tasks<Flight>()[i].name != wire::kTaskNames[i]) return false;
   }
   return true;
 }
@@ -75,15 +85,15 @@ inline constexpr uint8_t kSafe[] = {kLinkTask,   kFilterTask,    kAccelAnglesTas
                                     kSafetyTask, kTelemetryTask, kLoggerTask};
 inline constexpr uint8_t kPanic[] = {kLinkTask,   kFilterTask,    kAccelAnglesTask, kEstimatorTask,
                                      kSafetyTask, kTelemetryTask, kLoggerTask};
-inline constexpr uint8_t kManual[] = {kLinkTask,        kFilterTask, kAccelAnglesTask, kEstimatorTask,  kManualMixerTask,
-                                      kSafetyTask,      kTelemetryTask, kLoggerTask};
-inline constexpr uint8_t kCalibration[] = {kLinkTask,      kFilterTask, kCalibrationTask, kSafetyTask,
-                                           kTelemetryTask, kLoggerTask};
+inline constexpr uint8_t kManual[] = {kLinkTask,        kFilterTask, kAccelAnglesTask, kEstimatorTask,
+                                      kManualMixerTask, kSafetyTask, kTelemetryTask,   kLoggerTask};
+inline constexpr uint8_t kCalibration[] = {kLinkTask,   kFilterTask,    kCalibrationTask,
+                                           kSafetyTask, kTelemetryTask, kLoggerTask};
 inline constexpr uint8_t kYawControl[] = {kLinkTask,  kFilterTask, kAccelAnglesTask, kEstimatorTask, kYawControlTask,
                                           kMixerTask, kSafetyTask, kTelemetryTask,   kLoggerTask};
-inline constexpr uint8_t kFullControl[] = {kLinkTask,       kFilterTask,     kAccelAnglesTask, kEstimatorTask,
-                                           kAttitudeControlTask, kYawControlTask, kMixerTask,   kSafetyTask,
-                                           kTelemetryTask,  kLoggerTask};
+inline constexpr uint8_t kFullControl[] = {
+    kLinkTask,       kFilterTask, kAccelAnglesTask, kEstimatorTask, kAttitudeControlTask,
+    kYawControlTask, kMixerTask,  kSafetyTask,      kTelemetryTask, kLoggerTask};
 
 template <size_t N>
 constexpr TaskSet set(const uint8_t (&ids)[N]) {
@@ -109,13 +119,20 @@ inline constexpr FlightMode<Flight> kFlightModes[kModeCount] = {
     {Mode::calibration, task_sets::set(task_sets::kCalibration), [](Flight& f) { f.chain().enter_calibration(); }},
     {Mode::yaw_control, task_sets::set(task_sets::kYawControl), nullptr},
     // The attitude loops' integrals start empty.
-    {Mode::full_control, task_sets::set(task_sets::kFullControl), [](Flight& f) { f.chain().enter_attitude_control(); }},
+    {Mode::full_control, task_sets::set(task_sets::kFullControl),
+     [](Flight& f) { f.chain().enter_attitude_control(); }},
 };
+
+// The mode table as a pointer, as flight_tasks() above.
+template <class Flight>
+constexpr const FlightMode<Flight>* flight_modes() {
+  return kFlightModes<Flight>;
+}
 
 template <class Flight>
 constexpr bool modes_in_order() {
   for (uint8_t i = 0; i < kModeCount; ++i) {
-    if (index(kFlightModes<Flight>[i].mode) != i) return false;
+    if (index(flight_modes<Flight>()[i].mode) != i) return false;
   }
   return true;
 }

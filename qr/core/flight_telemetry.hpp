@@ -68,8 +68,8 @@ class FlightTelemetry {
 
   uint8_t seq_ = 0;
   uint8_t slow_group_ = 0;
-  uint8_t stats_task_ = 0;      // whose figures the next telemetry_task carries
-  uint32_t loop_time_us_ = 0;   // longest tick since the last system report
+  uint8_t stats_task_ = 0;     // whose figures the next telemetry_task carries
+  uint32_t loop_time_us_ = 0;  // longest tick since the last system report
   uint32_t deadline_misses_ = 0;
   uint16_t cpu_load_permille_ = 0;
 };

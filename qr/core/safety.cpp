@@ -12,11 +12,16 @@ struct Guard {
 };
 
 constexpr Guard kGuards[] = {
-    {NackReason::not_from_this_mode, [](Mode from, Mode, const Situation&, const SafetyLimits&) { return from != Mode::safe; }},
-    {NackReason::controls_not_neutral, [](Mode, Mode, const Situation& s, const SafetyLimits&) { return !s.controls.neutral(); }},
-    {NackReason::engines_running, [](Mode, Mode, const Situation& s, const SafetyLimits&) { return !s.engines.all_zero(); }},
-    {NackReason::not_calibrated, [](Mode, Mode to, const Situation& s, const SafetyLimits&) { return rule(to).needs_calibration && !s.calibrated; }},
-    {NackReason::battery_low, [](Mode, Mode, const Situation& s, const SafetyLimits& l) { return s.battery_mv < l.battery_panic_mv; }},
+    {NackReason::not_from_this_mode,
+     [](Mode from, Mode, const Situation&, const SafetyLimits&) { return from != Mode::safe; }},
+    {NackReason::controls_not_neutral,
+     [](Mode, Mode, const Situation& s, const SafetyLimits&) { return !s.controls.neutral(); }},
+    {NackReason::engines_running,
+     [](Mode, Mode, const Situation& s, const SafetyLimits&) { return !s.engines.all_zero(); }},
+    {NackReason::not_calibrated, [](Mode, Mode to, const Situation& s,
+                                    const SafetyLimits&) { return rule(to).needs_calibration && !s.calibrated; }},
+    {NackReason::battery_low,
+     [](Mode, Mode, const Situation& s, const SafetyLimits& l) { return s.battery_mv < l.battery_panic_mv; }},
 };
 
 // Watchdogs that end a flight: each is checked every tick in the modes it applies to.
@@ -26,9 +31,11 @@ struct Watchdog {
 };
 
 constexpr Watchdog kWatchdogs[] = {
-    {PanicCause::link_lost, [](const Situation& s, const SafetyLimits& l, Mode, bool) { return s.now_us - s.last_frame_us > l.link_timeout_us; }},
+    {PanicCause::link_lost, [](const Situation& s, const SafetyLimits& l, Mode,
+                               bool) { return s.now_us - s.last_frame_us > l.link_timeout_us; }},
     {PanicCause::battery_low, [](const Situation&, const SafetyLimits&, Mode, bool low_long) { return low_long; }},
-    {PanicCause::tilt, [](const Situation& s, const SafetyLimits& l, Mode m, bool) { return rule(m).needs_attitude && s.tilt_mrad > l.tilt_limit_mrad; }},
+    {PanicCause::tilt, [](const Situation& s, const SafetyLimits& l, Mode m,
+                          bool) { return rule(m).needs_attitude && s.tilt_mrad > l.tilt_limit_mrad; }},
 };
 
 uint16_t scale(uint16_t v, uint32_t num, uint32_t den) {
@@ -99,8 +106,7 @@ void SafetyMachine::supervise(const Situation& s) {
     }
   }
 
-  if (mode_ == Mode::panic &&
-      s.now_us - panic_start_us_ >= limits_.panic_hold_us + limits_.panic_ramp_us) {
+  if (mode_ == Mode::panic && s.now_us - panic_start_us_ >= limits_.panic_hold_us + limits_.panic_ramp_us) {
     enter(Mode::safe);
   }
   if (exit_pending_ && mode_ == Mode::safe) stopped_ = true;
@@ -114,9 +120,7 @@ EngineCommand SafetyMachine::limit_engines(const EngineCommand& wanted, const Si
     for (int i = 0; i < 4; ++i) {
       const uint16_t from = panic_from_.value[i];
       const uint16_t hold = from < limits_.panic_level ? from : limits_.panic_level;
-      out.value[i] = t < limits_.panic_hold_us ? hold
-                     : t < end                 ? scale(hold, end - t, limits_.panic_ramp_us)
-                                               : 0;
+      out.value[i] = t < limits_.panic_hold_us ? hold : t < end ? scale(hold, end - t, limits_.panic_ramp_us) : 0;
     }
     return out;
   }

@@ -5,9 +5,9 @@
 
 #include <stdint.h>
 
+#include <common/parameter_table.hpp>
 #include <qr/core/board.hpp>
 #include <qr/core/flight_types.hpp>
-#include <common/parameter_table.hpp>
 
 namespace qr {
 
@@ -20,10 +20,10 @@ struct SafetyLimits {
   uint16_t battery_panic_mv;
   uint16_t battery_warn_mv;
   int32_t tilt_limit_mrad;
-  uint16_t panic_level;     // engines hold at most this while panicking
+  uint16_t panic_level;  // engines hold at most this while panicking
   uint32_t panic_hold_us;
   uint32_t panic_ramp_us;
-  uint16_t idle;            // no engine below this while lift > 0 in flight
+  uint16_t idle;                      // no engine below this while lift > 0 in flight
   uint32_t battery_trip_us = 100000;  // a dip shorter than this (a load spike) is not a panic
 };
 
@@ -34,11 +34,11 @@ SafetyLimits safety_limits(const wire::ParameterValues& p);
 struct Situation {
   uint32_t now_us = 0;
   ControlInput controls;
-  EngineCommand engines;    // what the engines get now
+  EngineCommand engines;  // what the engines get now
   bool calibrated = false;
   uint16_t battery_mv = 0;
   uint32_t last_frame_us = 0;
-  int32_t tilt_mrad = 0;    // max(|roll|, |pitch|) from the attitude estimator
+  int32_t tilt_mrad = 0;  // max(|roll|, |pitch|) from the attitude estimator
 };
 
 class SafetyMachine {

@@ -28,7 +28,8 @@ namespace qr {
 
 // What the serial line carries in one control period: 115200 baud, 10 bits a byte (8N1).
 inline constexpr uint32_t kLineBytesPerSecond = 115200 / 10;
-inline constexpr uint16_t kLineBytesPerTick = static_cast<uint16_t>((kLineBytesPerSecond + kControlHz - 1) / kControlHz);
+inline constexpr uint16_t kLineBytesPerTick = static_cast<uint16_t>((kLineBytesPerSecond + kControlHz - 1) /
+                                                                    kControlHz);
 
 struct SchedulerLimits {
   // Per-tick I/O bounds: a little more than the line can carry in a period (12 bytes at 1 kHz,
@@ -53,10 +54,10 @@ struct TaskStats : CycleStats {
 template <uint8_t TaskCount>
 struct SchedulerStats {
   TaskStats task[TaskCount];
-  CycleStats tick;                  // cycles from the kick to the end of the tick's work
-  uint32_t ticks = 0;               // executed ticks
-  uint32_t deadline_misses = 0;     // kicks that arrived while a tick was still running
-  uint16_t cpu_load_permille = 0;   // busy share of the last full second
+  CycleStats tick;                 // cycles from the kick to the end of the tick's work
+  uint32_t ticks = 0;              // executed ticks
+  uint32_t deadline_misses = 0;    // kicks that arrived while a tick was still running
+  uint16_t cpu_load_permille = 0;  // busy share of the last full second
 };
 
 template <Board B, class Context>
@@ -68,8 +69,8 @@ class Scheduler {
   // `first_tick`: the number of the first tick, for the dividers' phases (a replay that starts
   // part-way through a flight continues the flight's count).
   Scheduler(B& board, Context& context, SchedulerLimits limits = {}, uint32_t first_tick = 0)
-      : board_(board), context_(context), limits_(limits), seen_kick_(board.kicks()),
-        next_set_(context.task_set()), ticks_(first_tick), window_start_us_(board.now_us()) {
+      : board_(board), context_(context), limits_(limits), seen_kick_(board.kicks()), next_set_(context.task_set()),
+        ticks_(first_tick), window_start_us_(board.now_us()) {
     for (uint8_t id = 0; id < kTaskCount; ++id) retime(id);
   }
 
@@ -150,8 +151,7 @@ class Scheduler {
     window_busy_us_ += busy_us;
     const uint32_t window_us = end_us - window_start_us_;
     if (window_us >= 1000000u) {
-      stats_.cpu_load_permille = static_cast<uint16_t>(
-          static_cast<uint64_t>(window_busy_us_) * 1000u / window_us);
+      stats_.cpu_load_permille = static_cast<uint16_t>(static_cast<uint64_t>(window_busy_us_) * 1000u / window_us);
       window_busy_us_ = 0;
       window_start_us_ = end_us;
     }

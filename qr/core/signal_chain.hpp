@@ -13,17 +13,19 @@
 namespace qr {
 
 template <class T>
-concept ConvertibleToEngines = requires(T t) { EngineCommand{t}; };
+concept ConvertibleToEngines = requires(T t) {
+  EngineCommand{t};
+};
 
 template <class C>
 concept SignalChain = requires(C& c, const C& cc, const wire::ParameterValues& p, const ControlInput& sticks,
                                const SensorSample& sample) {
-  { C::kAccelDivider };  // the accelerometer-angle task's divider of the control rate
+  {C::kAccelDivider};   // the accelerometer-angle task's divider of the control rate
   c.set_parameters(p);  // when a parameter changes, never per tick
   c.set_pilot(sticks);
   // tasks
   c.filter(sample);
-  { c.calibrate() };  // true once the running calibration has finished
+  {c.calibrate()};  // true once the running calibration has finished
   c.estimate_accel_angles();
   c.estimate();
   c.control_attitude();
@@ -34,19 +36,19 @@ concept SignalChain = requires(C& c, const C& cc, const wire::ParameterValues& p
   c.enter_calibration();
   c.enter_attitude_control();
   // read-outs, in the wire's units
-  { cc.calibrated() };
-  { cc.tilt_mrad() };
-  { cc.roll_e4() };
-  { cc.pitch_e4() };
-  { cc.yaw_e4() };
-  { cc.p_e3() };
-  { cc.q_e3() };
-  { cc.r_e3() };
-  { cc.roll_setpoint_e4() };
-  { cc.pitch_setpoint_e4() };
-  { cc.yaw_rate_setpoint_e3() };
-  { cc.gyro_filtered(0) };
-  { cc.accel_filtered(0) };
+  {cc.calibrated()};
+  {cc.tilt_mrad()};
+  {cc.roll_e4()};
+  {cc.pitch_e4()};
+  {cc.yaw_e4()};
+  {cc.p_e3()};
+  {cc.q_e3()};
+  {cc.r_e3()};
+  {cc.roll_setpoint_e4()};
+  {cc.pitch_setpoint_e4()};
+  {cc.yaw_rate_setpoint_e3()};
+  {cc.gyro_filtered(0)};
+  {cc.accel_filtered(0)};
 };
 
 }  // namespace qr

@@ -27,10 +27,18 @@ struct Field {
 
 // The input columns, in order, with the range each must hold.
 constexpr Field kInputFields[] = {
-    {"time_us", 0, UINT32_MAX},  {"gyro_x", INT16_MIN, INT16_MAX},  {"gyro_y", INT16_MIN, INT16_MAX},
-    {"gyro_z", INT16_MIN, INT16_MAX}, {"accel_x", INT16_MIN, INT16_MAX}, {"accel_y", INT16_MIN, INT16_MAX},
-    {"accel_z", INT16_MIN, INT16_MAX}, {"battery_mv", 0, UINT16_MAX}, {"lift", 0, 1000},
-    {"roll", -1000, 1000},        {"pitch", -1000, 1000},          {"yaw", -1000, 1000},
+    {"time_us", 0, UINT32_MAX},
+    {"gyro_x", INT16_MIN, INT16_MAX},
+    {"gyro_y", INT16_MIN, INT16_MAX},
+    {"gyro_z", INT16_MIN, INT16_MAX},
+    {"accel_x", INT16_MIN, INT16_MAX},
+    {"accel_y", INT16_MIN, INT16_MAX},
+    {"accel_z", INT16_MIN, INT16_MAX},
+    {"battery_mv", 0, UINT16_MAX},
+    {"lift", 0, 1000},
+    {"roll", -1000, 1000},
+    {"pitch", -1000, 1000},
+    {"yaw", -1000, 1000},
 };
 constexpr size_t kInputFieldCount = sizeof(kInputFields) / sizeof(kInputFields[0]);
 
@@ -52,7 +60,8 @@ std::vector<std::string_view> split(std::string_view line) {
   size_t start = 0;
   while (true) {
     const size_t comma = line.find(',', start);
-    fields.push_back(trim(line.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start)));
+    fields.push_back(
+        trim(line.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start)));
     if (comma == std::string_view::npos) return fields;
     start = comma + 1;
   }
@@ -124,7 +133,8 @@ void append(std::string& line, int64_t v) {
 template <class Chain>
 int fly(const std::vector<Row>& rows, std::ostream& out) {
   Chain chain;
-  chain::ChainReplay<Chain> test_mode(chain, rows.empty() ? chain::ChainReplay<Chain>::kPeriodUs : rows.front().time_us);
+  chain::ChainReplay<Chain> test_mode(chain,
+                                      rows.empty() ? chain::ChainReplay<Chain>::kPeriodUs : rows.front().time_us);
   out << replay_output_header() << "\n";
   std::string line;
   for (const Row& row : rows) {
@@ -145,7 +155,8 @@ int fly(const std::vector<Row>& rows, std::ostream& out) {
 
 template <uint32_t Hz>
 int fly_at(const std::vector<Row>& rows, std::ostream& out, const ReplayOptions& options) {
-  if (options.arithmetic == ReplayArithmetic::reference_double) return fly<FlightChain<chain::DoubleNumbers, Hz>>(rows, out);
+  if (options.arithmetic == ReplayArithmetic::reference_double)
+    return fly<FlightChain<chain::DoubleNumbers, Hz>>(rows, out);
   return fly<FlightChain<chain::FixedNumbers, Hz>>(rows, out);
 }
 

@@ -113,7 +113,8 @@ std::string parse(int argc, const char* const* argv, Arguments& a) {
     return "--fc " + number(a.fc, "%g") + " must be below fs/2 = " + number(a.fs / 2, "%g") + " Hz";
   }
   for (const double f : a.at) {
-    if (f < 0 || f > a.fs / 2) return "--at " + number(f, "%g") + " is outside [0, fs/2 = " + number(a.fs / 2, "%g") + "]";
+    if (f < 0 || f > a.fs / 2)
+      return "--at " + number(f, "%g") + " is outside [0, fs/2 = " + number(a.fs / 2, "%g") + "]";
   }
   if (a.at.empty()) a.at.push_back(a.fc);
   return {};

@@ -12,8 +12,8 @@
 #include <qr/core/chain/butterworth_table.hpp>
 #include <qr/core/chain/fixed_numbers.hpp>
 #include <qr/core/chain/sensor_units.hpp>
-#include <qr/tools/filter_response.hpp>
 #include <qr/host/real_numbers.hpp>
+#include <qr/tools/filter_response.hpp>
 
 #include "chain_test_support.hpp"
 #include "synthetic_flight.hpp"
@@ -21,7 +21,7 @@
 namespace qr::chain {
 namespace {
 
-using Signal = FixedNumbers::Rate;             // Q<27>, what the gyro filters carry
+using Signal = FixedNumbers::Rate;              // Q<27>, what the gyro filters carry
 using Coefficient = FixedNumbers::Coefficient;  // Q<30>
 constexpr double kSignalLsb = 0x1p-27;
 constexpr double kRadPerSecPerCount = 1.0 / sensor::kGyroCountsPerRadPerSec;
@@ -131,10 +131,12 @@ void check_table(const ResponseLimits& limits) {
     const double stop_analytic = std::pow(10, analytic_butterworth_gain_db(Order, fc, Fs, f_stop) / 20);
     worst_stop = std::max(worst_stop, std::fabs(stop_q - stop_analytic));
   }
-  std::printf("  order %d at %u Hz, %zu cut-offs: design vs analytic %.2e dB; Q<30>: DC %.1e dB, "
-              "fc/10..2fc within %.2e dB of analytic (worst at fc = %g Hz), at fc -3.0103 dB within %.2e dB, "
-              "|H| at 0.45 fs within %.2e\n",
-              Order, static_cast<unsigned>(Fs), Range::kSize, worst_design_db, worst_dc, worst_pass, worst_pass_fc, worst_at_fc, worst_stop);
+  std::printf(
+      "  order %d at %u Hz, %zu cut-offs: design vs analytic %.2e dB; Q<30>: DC %.1e dB, "
+      "fc/10..2fc within %.2e dB of analytic (worst at fc = %g Hz), at fc -3.0103 dB within %.2e dB, "
+      "|H| at 0.45 fs within %.2e\n",
+      Order, static_cast<unsigned>(Fs), Range::kSize, worst_design_db, worst_dc, worst_pass, worst_pass_fc, worst_at_fc,
+      worst_stop);
   EXPECT_LE(worst_design_db, 1e-9);
   EXPECT_LE(worst_dc, 1e-12);
   EXPECT_LE(worst_pass, limits.pass_db);
@@ -279,7 +281,8 @@ void check_fixed_against_double(const std::vector<double>& input) {
     // at every cut-off; the rounding alone within 1 lsb of Q<27> for order 1 (its error path
     // (1 - z^-1)/(1 - r z^-1) sums to 2), and within the computed bound for order 2 (printed in
     // lsb here: 76 at 1 Hz, 4.2 at 20 Hz, 1.2 at 250 Hz).
-    std::printf("    rounding: %.2f lsb of Q<27> (bound %.2f lsb)\n", vs_same.max() / kSignalLsb, b.rounding / kSignalLsb);
+    std::printf("    rounding: %.2f lsb of Q<27> (bound %.2f lsb)\n", vs_same.max() / kSignalLsb,
+                b.rounding / kSignalLsb);
     EXPECT_LE(vs_design.max(), 0.005 * kRadPerSecPerCount);
     if (Order == 1) EXPECT_LE(vs_same.max(), 1 * kSignalLsb);
   }

@@ -41,7 +41,8 @@ void check_offsets() {
   // Alternating samples: averages with half counts, which the offsets keep.
   for (int32_t n = 0; n < kCalibrationSamples; ++n) {
     const int16_t odd = static_cast<int16_t>(n & 1);
-    c.add(raw(static_cast<int16_t>(40 + odd), -25, 15, static_cast<int16_t>(60 + odd), -35, static_cast<int16_t>(-8192 + 90)));
+    c.add(raw(static_cast<int16_t>(40 + odd), -25, 15, static_cast<int16_t>(60 + odd), -35,
+              static_cast<int16_t>(-8192 + 90)));
   }
   ASSERT_TRUE(c.done());
   const double expected_gyro[3] = {40.5 * kRadPerCount, -25 * kRadPerCount, 15 * kRadPerCount};

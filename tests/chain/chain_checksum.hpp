@@ -33,16 +33,39 @@ class Fnv1a {
 
 template <class Chain>
 void fold_readouts(const Chain& c, Fnv1a& h) {
-  const int32_t values[] = {
-      c.roll_e4(), c.pitch_e4(), c.yaw_e4(), c.p_e3(), c.q_e3(), c.r_e3(),
-      c.roll_setpoint_e4(), c.pitch_setpoint_e4(), c.yaw_rate_setpoint_e3(), c.p_setpoint_e3(), c.q_setpoint_e3(),
-      c.tilt_mrad(), c.roll_from_accel_e4(), c.pitch_from_accel_e4(), c.p_bias_e6(), c.q_bias_e6(),
-      c.gyro_filtered(0), c.gyro_filtered(1), c.gyro_filtered(2),
-      c.accel_filtered(0), c.accel_filtered(1), c.accel_filtered(2),
-      c.moments_e3().roll, c.moments_e3().pitch, c.moments_e3().yaw,
-      c.applied_moments_e3().roll, c.applied_moments_e3().pitch, c.applied_moments_e3().yaw,
-      c.engines().value[0], c.engines().value[1], c.engines().value[2], c.engines().value[3],
-      c.calibrated() ? 1 : 0};
+  const int32_t values[] = {c.roll_e4(),
+                            c.pitch_e4(),
+                            c.yaw_e4(),
+                            c.p_e3(),
+                            c.q_e3(),
+                            c.r_e3(),
+                            c.roll_setpoint_e4(),
+                            c.pitch_setpoint_e4(),
+                            c.yaw_rate_setpoint_e3(),
+                            c.p_setpoint_e3(),
+                            c.q_setpoint_e3(),
+                            c.tilt_mrad(),
+                            c.roll_from_accel_e4(),
+                            c.pitch_from_accel_e4(),
+                            c.p_bias_e6(),
+                            c.q_bias_e6(),
+                            c.gyro_filtered(0),
+                            c.gyro_filtered(1),
+                            c.gyro_filtered(2),
+                            c.accel_filtered(0),
+                            c.accel_filtered(1),
+                            c.accel_filtered(2),
+                            c.moments_e3().roll,
+                            c.moments_e3().pitch,
+                            c.moments_e3().yaw,
+                            c.applied_moments_e3().roll,
+                            c.applied_moments_e3().pitch,
+                            c.applied_moments_e3().yaw,
+                            c.engines().value[0],
+                            c.engines().value[1],
+                            c.engines().value[2],
+                            c.engines().value[3],
+                            c.calibrated() ? 1 : 0};
   for (const int32_t v : values) h.add(v);
 }
 

@@ -61,8 +61,7 @@ inline int16_t counts(double v) {
 // What the sensors read for a vehicle at rest in the air at this attitude (hovering: the specific
 // force is gravity's reaction), turning at these body rates, plus raw offsets in counts.
 inline SensorSample sample_at(double roll, double pitch, double p = 0, double q = 0, double r = 0,
-                              const double (&gyro_offset)[3] = {0, 0, 0},
-                              const double (&accel_offset)[3] = {0, 0, 0}) {
+                              const double (&gyro_offset)[3] = {0, 0, 0}, const double (&accel_offset)[3] = {0, 0, 0}) {
   SensorSample s;
   const double g = sensor::kAccelCountsPerG, c = sensor::kGyroCountsPerRadPerSec;
   s.accel[0] = counts(g * std::sin(pitch) + accel_offset[0]);

@@ -44,14 +44,15 @@ YawRateController<N> yaw_controller(int32_t yaw_p = 1600) {
 template <class N>
 double roll_moment(double setpoint, double angle, double rate) {
   auto c = tilt_controller<N>();
-  return test::as_double(c.moment(to<typename N::Angle>(setpoint), to<typename N::Angle>(angle), to<typename N::Rate>(rate)));
+  return test::as_double(
+      c.moment(to<typename N::Angle>(setpoint), to<typename N::Angle>(angle), to<typename N::Rate>(rate)));
 }
 
 TEST(Controllers, PositiveAngleErrorGivesPositiveMoment) {
   // Set-point above the estimate (vehicle should roll right / pitch nose up): positive moment.
   EXPECT_GT(roll_moment<F>(0.1, 0.0, 0.0), 0.0);
   EXPECT_GT(roll_moment<F>(0.0, -0.1, 0.0), 0.0);
-  EXPECT_LT(roll_moment<F>(0.0, 0.1, 0.0), 0.0);  // tilted right, level wanted: roll back left
+  EXPECT_LT(roll_moment<F>(0.0, 0.1, 0.0), 0.0);                   // tilted right, level wanted: roll back left
   EXPECT_NEAR(roll_moment<F>(0.1, 0.0, 0.0), 4 * 0.1 * 50, 1e-3);  // P2 x P1 x error
 }
 

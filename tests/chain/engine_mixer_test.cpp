@@ -46,7 +46,8 @@ Forces forces_of(const EngineCommand& e) {
 
 TEST(EngineMixer, NoMomentsGiveEveryEngineTheLift) {
   auto m = mixer<F>();
-  for (const uint16_t lift : {uint16_t{180}, uint16_t{181}, uint16_t{300}, uint16_t{500}, uint16_t{999}, uint16_t{1000}}) {
+  for (const uint16_t lift :
+       {uint16_t{180}, uint16_t{181}, uint16_t{300}, uint16_t{500}, uint16_t{999}, uint16_t{1000}}) {
     const EngineCommand e = m.mix(lift, moments<F>(0, 0, 0));
     for (const uint16_t v : e.value) EXPECT_EQ(v, lift);
   }
@@ -129,7 +130,8 @@ TEST(EngineMixer, NoEngineBelowIdleWhileLiftIsAboveZero) {
     std::uniform_int_distribution<int> lift(1, 1000);
     std::uniform_real_distribution<double> moment(-1000, 1000);
     for (int i = 0; i < 50000; ++i) {
-      const EngineCommand e = m.mix(static_cast<uint16_t>(lift(rng)), moments<F>(moment(rng), moment(rng), moment(rng)));
+      const EngineCommand e = m.mix(static_cast<uint16_t>(lift(rng)),
+                                    moments<F>(moment(rng), moment(rng), moment(rng)));
       for (const uint16_t v : e.value) {
         ASSERT_GE(v, idle);
         ASSERT_LE(v, 1000);
@@ -168,9 +170,10 @@ TEST(EngineMixer, SaturationKeepsTheMomentsBalance) {
     worst_forces = std::max(worst_forces, std::fabs(f.pitch - applied.pitch.to_double()));
     worst_forces = std::max(worst_forces, std::fabs(f.yaw - applied.yaw.to_double()) / 2);
   }
-  std::printf("  %d of 50000 mixes scaled; moments off the common factor by %.2e; engines realise the applied "
-              "moments within %.3f thrust units\n",
-              scaled, worst_ratio, worst_forces);
+  std::printf(
+      "  %d of 50000 mixes scaled; moments off the common factor by %.2e; engines realise the applied "
+      "moments within %.3f thrust units\n",
+      scaled, worst_ratio, worst_forces);
   EXPECT_GT(scaled, 10000);
   EXPECT_LE(worst_ratio, 1e-4);
   EXPECT_LE(worst_forces, 2.0);
@@ -211,8 +214,7 @@ TEST(EngineMixer, FixedFollowsDouble) {
     const auto wanted = moments<F>(moment(rng), moment(rng), moment(rng));
     const uint16_t l = static_cast<uint16_t>(lift(rng));
     const EngineCommand ef = mf.mix(l, wanted);
-    const EngineCommand ed =
-        md.mix(l, {wanted.roll.to_double(), wanted.pitch.to_double(), wanted.yaw.to_double()});
+    const EngineCommand ed = md.mix(l, {wanted.roll.to_double(), wanted.pitch.to_double(), wanted.yaw.to_double()});
     for (int k = 0; k < 4; ++k) {
       const int d = std::abs(ef.value[k] - ed.value[k]);
       worst = std::max(worst, d);

@@ -76,8 +76,12 @@ void TiltingRightGivesPositiveRollAndNoseUpPositivePitch() {
   for (int n = 0; n < 100; ++n) rolling.step(0, 0, 0, 0, 0.5);
   EXPECT_NEAR(rolling.yaw(), 0.05, 1e-6);
 }
-TEST(Estimator, TiltingRightGivesPositiveRollAndNoseUpPositivePitchInFixedPoint) { TiltingRightGivesPositiveRollAndNoseUpPositivePitch<FixedNumbers>(); }
-TEST(Estimator, TiltingRightGivesPositiveRollAndNoseUpPositivePitchInDouble) { TiltingRightGivesPositiveRollAndNoseUpPositivePitch<DoubleNumbers>(); }
+TEST(Estimator, TiltingRightGivesPositiveRollAndNoseUpPositivePitchInFixedPoint) {
+  TiltingRightGivesPositiveRollAndNoseUpPositivePitch<FixedNumbers>();
+}
+TEST(Estimator, TiltingRightGivesPositiveRollAndNoseUpPositivePitchInDouble) {
+  TiltingRightGivesPositiveRollAndNoseUpPositivePitch<DoubleNumbers>();
+}
 
 // With the gyro still, the angle follows a new accelerometer angle (the bias loop takes part:
 // it reads the disagreement as drift for a while, then gives it back).
@@ -106,7 +110,8 @@ void TracksAGyroRateThroughAccelerometerNoise() {
   double worst = 0, worst_accel = 0;
   for (int n = 1; n <= 3000; ++n) {
     const double t = n / 1000.0;
-    const double roll = 0.4 * std::sin(2 * std::numbers::pi * t), p = 0.8 * std::numbers::pi * std::cos(2 * std::numbers::pi * t);
+    const double roll = 0.4 * std::sin(2 * std::numbers::pi * t),
+                 p = 0.8 * std::numbers::pi * std::cos(2 * std::numbers::pi * t);
     const double noisy_roll = roll + vibration(rng);
     rig.step(noisy_roll, 0, p, 0, 0);
     worst = std::max(worst, std::fabs(rig.roll() - roll));
@@ -116,8 +121,12 @@ void TracksAGyroRateThroughAccelerometerNoise() {
               worst_accel);
   EXPECT_LT(worst, 0.02);
 }
-TEST(Estimator, TracksAGyroRateThroughAccelerometerNoiseInFixedPoint) { TracksAGyroRateThroughAccelerometerNoise<FixedNumbers>(); }
-TEST(Estimator, TracksAGyroRateThroughAccelerometerNoiseInDouble) { TracksAGyroRateThroughAccelerometerNoise<DoubleNumbers>(); }
+TEST(Estimator, TracksAGyroRateThroughAccelerometerNoiseInFixedPoint) {
+  TracksAGyroRateThroughAccelerometerNoise<FixedNumbers>();
+}
+TEST(Estimator, TracksAGyroRateThroughAccelerometerNoiseInDouble) {
+  TracksAGyroRateThroughAccelerometerNoise<DoubleNumbers>();
+}
 
 // An injected gyro bias is found: rate = gyro - bias goes to zero at rest, and the angle stays
 // level. Time constant about C2 / C1 = 3.9 s; after 40 s it is gone to 1e-4 of itself.

@@ -259,8 +259,8 @@ TEST(FlightChain, FixedFollowsDoubleOverTheSyntheticFlight) {
     const EngineCommand eq = q.engines(), ed = d.engines();
     const auto& xq = q.estimator();
     const auto& xd = d.estimator();
-    angle = std::max({angle, std::fabs(xq.roll().to_double() - xd.roll()), std::fabs(xq.pitch().to_double() - xd.pitch()),
-                      std::fabs(xq.yaw().to_double() - xd.yaw())});
+    angle = std::max({angle, std::fabs(xq.roll().to_double() - xd.roll()),
+                      std::fabs(xq.pitch().to_double() - xd.pitch()), std::fabs(xq.yaw().to_double() - xd.yaw())});
     rate = std::max({rate, std::fabs(xq.p().to_double() - xd.p()), std::fabs(xq.q().to_double() - xd.q()),
                      std::fabs(xq.r().to_double() - xd.r())});
     moment = std::max({moment, std::abs(q.moments_e3().roll - d.moments_e3().roll) / 1000.0,
@@ -273,9 +273,10 @@ TEST(FlightChain, FixedFollowsDoubleOverTheSyntheticFlight) {
     readout = std::max({readout, std::abs(q.roll_e4() - d.roll_e4()), std::abs(q.pitch_e4() - d.pitch_e4()),
                         std::abs(q.p_e3() - d.p_e3()), std::abs(q.q_e3() - d.q_e3()), std::abs(q.r_e3() - d.r_e3())});
   }
-  std::printf("  Q vs double over %u ticks: angles %.2e rad, rates %.2e rad/s, moments %.2e thrust units, "
-              "engines %d unit (%d values differ), telemetry read-outs %d unit\n",
-              chain::synthetic::Flight<1000>::kTicks, angle, rate, moment, engine, engine_differs, readout);
+  std::printf(
+      "  Q vs double over %u ticks: angles %.2e rad, rates %.2e rad/s, moments %.2e thrust units, "
+      "engines %d unit (%d values differ), telemetry read-outs %d unit\n",
+      chain::synthetic::Flight<1000>::kTicks, angle, rate, moment, engine, engine_differs, readout);
   EXPECT_LE(angle, 1e-6);
   EXPECT_LE(rate, 1e-6);
   EXPECT_LE(moment, 1e-3);
@@ -325,7 +326,8 @@ void check_truth(double bound) {
     worst = std::max({worst, std::fabs(c.estimator().roll().to_double() - t.truth.roll.to_double()),
                       std::fabs(c.estimator().pitch().to_double() - t.truth.pitch.to_double())});
   }
-  std::printf("  %u Hz: roll/pitch estimate within %.4f rad of the truth over the synthetic flight\n", static_cast<unsigned>(Hz), worst);
+  std::printf("  %u Hz: roll/pitch estimate within %.4f rad of the truth over the synthetic flight\n",
+              static_cast<unsigned>(Hz), worst);
   EXPECT_LE(worst, bound);
 }
 

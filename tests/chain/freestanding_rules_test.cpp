@@ -18,7 +18,8 @@ using test_support::code_of;
 
 TEST(ChainFreestandingRules, ChainUsesOnlyAllowedHeadersAndNoForbiddenFeatures) {
   const std::regex include(R"(#include\s*<([^>]+)>)");
-  const std::regex forbidden(R"(\b(float|new|delete|malloc|free|memcpy|virtual|throw|try|catch|typeid|dynamic_cast|std)\b)");
+  const std::regex forbidden(
+      R"(\b(float|new|delete|malloc|free|memcpy|virtual|throw|try|catch|typeid|dynamic_cast|std)\b)");
   const std::regex double_word(R"(\bdouble\b)");
   // Where double may appear: the compile-time design, and the constexpr constants of the blocks
   // (Q(0.35) style constants take a double literal).

@@ -9,7 +9,8 @@
 
 int main(int argc, char** argv) {
   const bool at_500 = argc == 3 && std::strcmp(argv[1], "--hz") == 0 && std::strcmp(argv[2], "500") == 0;
-  const bool at_1000 = argc == 1 || (argc == 3 && std::strcmp(argv[1], "--hz") == 0 && std::strcmp(argv[2], "1000") == 0);
+  const bool at_1000 = argc == 1 ||
+                       (argc == 3 && std::strcmp(argv[1], "--hz") == 0 && std::strcmp(argv[2], "1000") == 0);
   if (!at_500 && !at_1000) {
     std::fprintf(stderr, "usage: make-recording [--hz 1000|500]\n");
     return 2;

@@ -64,8 +64,9 @@ TEST(QrFilter, DoubleCoefficientsRoundTripAndResponsesAtRequestedFrequencies) {
   // The zero at fs/2: some -300 dB in double rounding (an exact -inf would print as null, which
   // JSON can hold); with 12 bits the DC-gain fix leaves |b0 - b1| = 1 lsb there: -75.8 dB.
   std::smatch m;
-  ASSERT_TRUE(std::regex_search(r.out, m, std::regex("\"hz\": 500, \"gain_db\": ([-0-9.]+|null), .*"
-                                                     "\"gain_db_quantised\": ([-0-9.]+)")))
+  ASSERT_TRUE(std::regex_search(r.out, m,
+                                std::regex("\"hz\": 500, \"gain_db\": ([-0-9.]+|null), .*"
+                                           "\"gain_db_quantised\": ([-0-9.]+)")))
       << r.out;
   EXPECT_TRUE(m[1].str() == "null" || std::stod(m[1].str()) < -300) << m[1].str();
   EXPECT_EQ(m[2].str(), "-75.823985");
@@ -93,8 +94,10 @@ TEST(QrFilter, BadArgumentsAreRefusedClearly) {
       {{"--order", "2", "--fc", "10", "--fs", "nan"}, "--fs wants a number in Hz, got 'nan'"},
       {{"--order", "2", "--fc", "10", "--fs", "0"}, "--fs must be above 0 Hz, got 0"},
       {{"--order", "2", "--fc", "10"}, "--fs is required"},
-      {{"--order", "2", "--fc", "10", "--fs", "1000", "--frac", "31"}, "--frac wants a whole number of bits from 1 to 30"},
-      {{"--order", "2", "--fc", "10", "--fs", "1000", "--at", "10,,20"}, "--at wants comma-separated numbers in Hz, got ''"},
+      {{"--order", "2", "--fc", "10", "--fs", "1000", "--frac", "31"},
+       "--frac wants a whole number of bits from 1 to 30"},
+      {{"--order", "2", "--fc", "10", "--fs", "1000", "--at", "10,,20"},
+       "--at wants comma-separated numbers in Hz, got ''"},
       {{"--order", "2", "--fc", "10", "--fs", "1000", "--at", "600"}, "--at 600 is outside [0, fs/2 = 500]"},
       {{"--order", "2", "--fc", "10", "--fs", "1000", "--bogus"}, "unknown argument '--bogus'"},
       {{"--order", "2", "--fc"}, "--fc needs a value"},

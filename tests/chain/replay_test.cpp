@@ -111,7 +111,8 @@ TEST(Replay, FixedMatchesTheDoubleReference) {
   for (std::string n; std::getline(header, n, ',');) names.push_back(n);
   std::vector<int64_t> worst(names.size(), 0);
   for (size_t r = 0; r < fixed.size(); ++r) {
-    for (size_t c = 0; c < names.size(); ++c) worst[c] = std::max<int64_t>(worst[c], std::llabs(fixed[r][c] - reference[r][c]));
+    for (size_t c = 0; c < names.size(); ++c)
+      worst[c] = std::max<int64_t>(worst[c], std::llabs(fixed[r][c] - reference[r][c]));
   }
   std::string figures;
   for (size_t c = 0; c < names.size(); ++c) {
@@ -152,15 +153,17 @@ TEST(Replay, BadInputFailsWithItsLineNumber) {
     std::string message;
   } cases[] = {
       {"", "in.csv:1: empty"},
-      {"time_us,gyro_x\n1,2\n", "in.csv:1: header must be 'time_us,gyro_x,gyro_y,gyro_z,accel_x,accel_y,accel_z,"
-                                "battery_mv,lift,roll,pitch,yaw', got 'time_us,gyro_x'"},
+      {"time_us,gyro_x\n1,2\n",
+       "in.csv:1: header must be 'time_us,gyro_x,gyro_y,gyro_z,accel_x,accel_y,accel_z,"
+       "battery_mv,lift,roll,pitch,yaw', got 'time_us,gyro_x'"},
       {recording_with(5, "1004000,1,2,3,4,5,6,7,8,9,10"), "in.csv:5: expected 12 fields, got 11"},
       {recording_with(7, "1006000,1,2,3,4,x5,6,7,8,9,10,11"), "in.csv:7: accel_y: 'x5' is not an integer"},
       {recording_with(7, "1006000,1,2,3,4,5.5,6,7,8,9,10,11"), "in.csv:7: accel_y: '5.5' is not an integer"},
       {recording_with(9, "1008000,1,2,3,4,5,6,7,1200,9,10,11"), "in.csv:9: lift: 1200 is outside 0..1000"},
       {recording_with(9, "1008000,40000,2,3,4,5,6,7,8,9,10,11"), "in.csv:9: gyro_x: 40000 is outside -32768..32767"},
       {recording_with(9, "1008000,1,2,3,4,5,6,7,8,9,10,"), "in.csv:9: yaw: '' is not an integer"},
-      {recording_with(11, "1009500,1,2,3,4,5,6,7,8,9,10,11"), "in.csv:11: time step 1500 us differs from the first, 1000 us"},
+      {recording_with(11, "1009500,1,2,3,4,5,6,7,8,9,10,11"),
+       "in.csv:11: time step 1500 us differs from the first, 1000 us"},
       {recording_with(3, "1003000,1,2,3,4,5,6,7,8,9,10,11"), "in.csv:3: time step 3000 us: the chain runs at"},
       {replay_input_header() + "\n1000,0,0,0,0,0,-8192,12000,0,0,0,0\n", "in.csv: has 1 rows; the first 512"},
   };

@@ -60,9 +60,7 @@ class Noise {
   uint32_t state_ = 2463534242u;
 };
 
-inline int16_t saturate16(int32_t v) {
-  return static_cast<int16_t>(v > 32767 ? 32767 : v < -32768 ? -32768 : v);
-}
+inline int16_t saturate16(int32_t v) { return static_cast<int16_t>(v > 32767 ? 32767 : v < -32768 ? -32768 : v); }
 
 template <uint32_t SampleHz>
 class Flight {
@@ -107,8 +105,10 @@ class Flight {
     const Unit sr = fx::sin(v.roll), cr = fx::cos(v.roll), sp = fx::sin(v.pitch), cp = fx::cos(v.pitch);
     // Body rates from Euler rates (Z-Y-X).
     v.p = roll_rate_of_phi - fx::narrow<Angle>(fx::mul_wide(yaw_rate, sp));
-    v.q = fx::narrow<Angle>(fx::mul_wide(pitch_rate, cr) + fx::mul_wide(fx::narrow<Angle>(fx::mul_wide(yaw_rate, sr)), cp));
-    v.r = fx::narrow<Angle>(fx::mul_wide(fx::narrow<Angle>(fx::mul_wide(yaw_rate, cr)), cp) - fx::mul_wide(pitch_rate, sr));
+    v.q = fx::narrow<Angle>(fx::mul_wide(pitch_rate, cr) +
+                            fx::mul_wide(fx::narrow<Angle>(fx::mul_wide(yaw_rate, sr)), cp));
+    v.r = fx::narrow<Angle>(fx::mul_wide(fx::narrow<Angle>(fx::mul_wide(yaw_rate, cr)), cp) -
+                            fx::mul_wide(pitch_rate, sr));
 
     const int32_t drift = n >= kDriftStart ? 8 : 0;
     t.sample.gyro[0] = saturate16(gyro_counts(v.p) + 40 + drift + noise_.next(12));

@@ -33,9 +33,7 @@ std::vector<uint8_t> codeword(size_t payload_length, uint32_t seed) {
   return word;
 }
 
-bool passes_check(const std::vector<uint8_t>& word) {
-  return wire::crc8(word.data(), word.size() - 1) == word.back();
-}
+bool passes_check(const std::vector<uint8_t>& word) { return wire::crc8(word.data(), word.size() - 1) == word.back(); }
 
 void flip(std::vector<uint8_t>& word, size_t bit) {
   word[bit / 8] = static_cast<uint8_t>(word[bit / 8] ^ (0x80u >> (bit % 8)));

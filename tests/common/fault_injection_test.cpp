@@ -41,7 +41,9 @@ struct RequestRecord {
   bool operator==(const RequestRecord& o) const { return type == o.type && body == o.body && answer == o.answer; }
 };
 
-std::vector<uint8_t> body_of(const uint8_t* payload, uint8_t length) { return std::vector<uint8_t>(payload + 1, payload + length); }
+std::vector<uint8_t> body_of(const uint8_t* payload, uint8_t length) {
+  return std::vector<uint8_t>(payload + 1, payload + length);
+}
 
 class GroundStation {
  public:
@@ -58,7 +60,8 @@ class GroundStation {
     }
     if (now % kControlPeriodMs == 0) {
       const auto wave = static_cast<int16_t>(static_cast<int32_t>(now / kControlPeriodMs % 2001) - 1000);
-      uplink_.send(encode(Control{static_cast<uint16_t>(now / kControlPeriodMs % 1001), wave, static_cast<int16_t>(-wave), 0}));
+      uplink_.send(
+          encode(Control{static_cast<uint16_t>(now / kControlPeriodMs % 1001), wave, static_cast<int16_t>(-wave), 0}));
     }
     if (new_requests && now % request_spacing_ms == 0) submit_next(now);
   }
@@ -86,7 +89,8 @@ class GroundStation {
   void submit(Request request, uint32_t now) {
     if (queue_.pending(Request::kType)) return;  // one at a time per type: each must arrive
     const FrameBytes frame = queue_.submit(request, now);
-    submitted_[Request::kType].push_back(RequestRecord{Request::kType, body_of(&frame.bytes[2], static_cast<uint8_t>(frame.size - 3))});
+    submitted_[Request::kType].push_back(
+        RequestRecord{Request::kType, body_of(&frame.bytes[2], static_cast<uint8_t>(frame.size - 3))});
     uplink_.send(frame);
   }
 
@@ -96,11 +100,16 @@ class GroundStation {
     const uint32_t i = count_++;
     switch (i % 7) {
       case 0: submit(ModeChange{0, static_cast<Mode>(i / 7 % kModeCount)}, now); break;
-      case 1: submit(ParamSet{0, static_cast<uint8_t>(ParamId::attitude_c2), static_cast<int32_t>(i / 7 % 50 == 0 ? 0 : i)}, now); break;
+      case 1:
+        submit(ParamSet{0, static_cast<uint8_t>(ParamId::attitude_c2), static_cast<int32_t>(i / 7 % 50 == 0 ? 0 : i)},
+               now);
+        break;
       case 2: submit(ParamGet{0, static_cast<uint8_t>(i / 7 % (kParameterCount + 1) + 1)}, now); break;
       case 3: submit(LogStart{0, static_cast<uint8_t>(i / 7 % 3 + 1)}, now); break;
       case 4: submit(LogStop{}, now); break;
-      case 5: submit(LogDownload{0, LogKind::sensor, static_cast<uint16_t>(i), static_cast<uint16_t>(i >> 16)}, now); break;
+      case 5:
+        submit(LogDownload{0, LogKind::sensor, static_cast<uint16_t>(i), static_cast<uint16_t>(i >> 16)}, now);
+        break;
       default: submit(Exit{}, now); break;
     }
   }
@@ -136,8 +145,9 @@ class Quadcopter {
     if (slow == 2) downlink_.send(encode(TelemetrySystem{11000, static_cast<uint16_t>(now % 1001), 0, 0}));
     if (slow == 3) {
       const LinkCounters& c = parser_.counters();
-      downlink_.send(encode(TelemetryLink{static_cast<uint16_t>(c.frames_ok), static_cast<uint16_t>(c.check_failures),
-                                          static_cast<uint16_t>(c.unknown_types), static_cast<uint16_t>(c.bytes_skipped)}));
+      downlink_.send(
+          encode(TelemetryLink{static_cast<uint16_t>(c.frames_ok), static_cast<uint16_t>(c.check_failures),
+                               static_cast<uint16_t>(c.unknown_types), static_cast<uint16_t>(c.bytes_skipped)}));
     }
   }
 
@@ -211,7 +221,8 @@ struct Link {
   Quadcopter qr{downlink};
   uint32_t now = 0;
 
-  Link(const ChannelFaults& faults, uint64_t seed) : uplink(faults, seed), downlink(faults, seed ^ 0x9E3779B97F4A7C15ull) {}
+  Link(const ChannelFaults& faults, uint64_t seed)
+      : uplink(faults, seed), downlink(faults, seed ^ 0x9E3779B97F4A7C15ull) {}
 
   void step(bool new_requests) {
     pc.tick(now, new_requests);
@@ -310,7 +321,8 @@ TEST(FaultInjection, EveryRequestIsAppliedExactlyOnceWithFivePercentLoss) {
   uint64_t submitted = 0;
   const uint64_t delivered = delivered_exactly_once(link, submitted);
   char percent[32];
-  std::snprintf(percent, sizeof percent, "\"%.4g%%\"", submitted == 0 ? 0.0 : 100.0 * static_cast<double>(delivered) / static_cast<double>(submitted));
+  std::snprintf(percent, sizeof percent, "\"%.4g%%\"",
+                submitted == 0 ? 0.0 : 100.0 * static_cast<double>(delivered) / static_cast<double>(submitted));
   figures.set("loss", "0.05");
   figures.set("acked_requests", submitted);
   figures.set("acked_delivered", percent);

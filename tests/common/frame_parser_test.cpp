@@ -104,8 +104,10 @@ TEST(FrameParser, NeverKeepsMoreThanOneFrameAndAccountsForEveryByte) {
     // Mostly noise rich in start bytes and type bytes, the hardest input for the re-scan.
     const int kind = std::uniform_int_distribution<int>(0, 3)(rng);
     const uint8_t b = kind == 0 ? kStartByte
-                      : kind == 1 ? type_byte(kMessageTable[std::uniform_int_distribution<size_t>(0, kMessageCount - 1)(rng)].type)
-                                  : static_cast<uint8_t>(rng());
+                      : kind == 1
+                          ? type_byte(
+                                kMessageTable[std::uniform_int_distribution<size_t>(0, kMessageCount - 1)(rng)].type)
+                          : static_cast<uint8_t>(rng());
     parser.push(b, [&](const Frame& f) { bytes_in_frames += f.length + kFrameOverhead; });
     ASSERT_LT(parser.buffered(), kMaxFrameBytes);
   }
@@ -128,7 +130,8 @@ TEST(FrameParser, ResynchronisesAfterRandomGarbage) {
     // what matters is that the real frames after it are found.
     std::vector<MessageType> real;
     for (const Frame& f : frames) {
-      if (f == wire_test::frame_of(encode(Control{321, -5, 6, 7})) || f == wire_test::frame_of(encode(ModeChange{9, Mode::yaw_control})) ||
+      if (f == wire_test::frame_of(encode(Control{321, -5, 6, 7})) ||
+          f == wire_test::frame_of(encode(ModeChange{9, Mode::yaw_control})) ||
           f == wire_test::frame_of(encode(ParamSet{3, 2, 777}))) {
         real.push_back(f.type);
       }

@@ -13,7 +13,8 @@ using test_support::code_of;
 
 TEST(FreestandingRules, CommonUsesOnlyAllowedHeadersAndNoForbiddenFeatures) {
   const std::regex include(R"(#include\s*<([^>]+)>)");
-  const std::regex forbidden(R"(\b(float|double|new|delete|malloc|free|memcpy|virtual|throw|try|catch|typeid|dynamic_cast|std)\b)");
+  const std::regex forbidden(
+      R"(\b(float|double|new|delete|malloc|free|memcpy|virtual|throw|try|catch|typeid|dynamic_cast|std)\b)");
   int files = 0;
   for (const auto& entry : std::filesystem::directory_iterator(QR_COMMON_DIR)) {
     const std::string ext = entry.path().extension().string();

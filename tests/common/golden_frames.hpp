@@ -14,9 +14,9 @@ namespace wire_test {
 
 struct GoldenFrame {
   std::string id;
-  std::string hex;                // as written in docs/protocol.md
+  std::string hex;  // as written in docs/protocol.md
   wire::MessageType type;
-  wire::FrameBytes encoded;       // what the encoder makes of the message
+  wire::FrameBytes encoded;                                    // what the encoder makes of the message
   std::function<bool(const wire::Frame&)> decodes_to_message;  // decode(frame) == the message
 };
 

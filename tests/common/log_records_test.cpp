@@ -71,7 +71,8 @@ TEST(LogRecords, ALineMissingAPartIsAbandonedWhenTheNextLineStarts) {
   SensorLogRecord got;
   std::vector<SensorLogPart> parts5 = parts_over_the_wire(line5);
   parts5.erase(parts5.begin() + 2);
-  for (const SensorLogPart& p : parts5) EXPECT_EQ(assembler.add(p, got), LogLineAssembler<SensorLogRecord>::Result::incomplete);
+  for (const SensorLogPart& p : parts5)
+    EXPECT_EQ(assembler.add(p, got), LogLineAssembler<SensorLogRecord>::Result::incomplete);
   int complete = 0;
   for (const SensorLogPart& p : parts_over_the_wire(line6)) {
     complete += assembler.add(p, got) == LogLineAssembler<SensorLogRecord>::Result::complete ? 1 : 0;
@@ -86,7 +87,8 @@ TEST(LogRecords, ARepeatedPartDoesNotCompleteALine) {
   const std::vector<SensorLogPart> parts = parts_over_the_wire(sent);
   LogLineAssembler<SensorLogRecord> assembler;
   SensorLogRecord got;
-  for (int i = 0; i < 10; ++i) EXPECT_EQ(assembler.add(parts[0], got), LogLineAssembler<SensorLogRecord>::Result::incomplete);
+  for (int i = 0; i < 10; ++i)
+    EXPECT_EQ(assembler.add(parts[0], got), LogLineAssembler<SensorLogRecord>::Result::incomplete);
 }
 
 TEST(LogRecords, ALineWithAFieldOutOfRangeIsRejected) {

@@ -44,8 +44,9 @@ class EdgeFiller {
   T pick(std::initializer_list<T> edges) {
     // One draw in four is uniformly random over the whole type.
     if (std::uniform_int_distribution<int>(0, 3)(rng_) == 0) {
-      return static_cast<T>(std::uniform_int_distribution<long long>(static_cast<long long>(std::numeric_limits<T>::min()),
-                                                                      static_cast<long long>(std::numeric_limits<T>::max()))(rng_));
+      return static_cast<T>(
+          std::uniform_int_distribution<long long>(static_cast<long long>(std::numeric_limits<T>::min()),
+                                                   static_cast<long long>(std::numeric_limits<T>::max()))(rng_));
     }
     const size_t i = std::uniform_int_distribution<size_t>(0, edges.size() - 1)(rng_);
     return *(edges.begin() + i);
@@ -73,7 +74,8 @@ RoundTripCount round_trip_edges(uint32_t seed) {
     if (frames.size() != 1) return count;
     Msg decoded{};
     const bool accepted = decode(frames[0], decoded);
-    EXPECT_EQ(accepted, message.valid()) << message_name(Msg::kType) << " " << wire_test::to_hex(wire_test::bytes_of(bytes));
+    EXPECT_EQ(accepted, message.valid()) << message_name(Msg::kType) << " "
+                                         << wire_test::to_hex(wire_test::bytes_of(bytes));
     if (accepted) {
       EXPECT_TRUE(decoded == message) << message_name(Msg::kType);
       EXPECT_TRUE(encode(decoded) == bytes);

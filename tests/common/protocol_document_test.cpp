@@ -82,7 +82,8 @@ TEST(ProtocolDocument, NackReasonsMatchTheCode) {
   }
   // The nack's reason field gives the same range as the table.
   std::vector<std::string> field_lines;
-  const auto field = rows_matching(std::regex(R"(^\| 2 \| u8 \| reason \| (\d+)\.\.(\d+), table below.*\|$)"), field_lines);
+  const auto field = rows_matching(std::regex(R"(^\| 2 \| u8 \| reason \| (\d+)\.\.(\d+), table below.*\|$)"),
+                                   field_lines);
   ASSERT_EQ(field.size(), 1u) << "the nack's reason row";
   EXPECT_EQ(std::stoi(field[0][1].str()), 1);
   EXPECT_EQ(std::stoi(field[0][2].str()), last);
@@ -93,7 +94,8 @@ TEST(ProtocolDocument, NackReasonsMatchTheCode) {
 TEST(ProtocolDocument, ModeNumbersBeyondTheModesAreUnknownModeNotBadValue) {
   std::vector<std::string> lines;
   const auto field = rows_matching(
-      std::regex(R"(^\| 1 \| u8 \| mode \| 0 safe, .*, (\d) full control; any other number \((\d+)\.\.255\) is answered nack `unknown_mode` \|$)"),
+      std::regex(
+          R"(^\| 1 \| u8 \| mode \| 0 safe, .*, (\d) full control; any other number \((\d+)\.\.255\) is answered nack `unknown_mode` \|$)"),
       lines);
   ASSERT_EQ(field.size(), 1u) << "the mode_change mode row";
   EXPECT_EQ(std::stoi(field[0][1].str()), wire::kModeCount - 1);
@@ -152,22 +154,26 @@ TEST(ProtocolDocument, LinkBudgetAndDownloadSpeedFollowFromTheFrameSizes) {
   const long telemetry_line = wire::TelemetryLogRecord::kParts * frame_bytes(MessageType::telemetry_log_part);
 
   std::vector<std::string> lines, fast_lines, group_lines, figure_lines;
-  const auto budget = rows_matching(std::regex(R"(^Budget at the top telemetry rate of (\d+) Hz \(([\d ]+) bytes/s each way\):$)"), lines);
+  const auto budget = rows_matching(
+      std::regex(R"(^Budget at the top telemetry rate of (\d+) Hz \(([\d ]+) bytes/s each way\):$)"), lines);
   ASSERT_EQ(budget.size(), 1u);
   EXPECT_EQ(std::stol(budget[0][1].str()), rate);
   EXPECT_EQ(number_in(budget[0][2].str()), line_bytes_per_s);
 
-  const auto fast = rows_matching(std::regex(R"(^\| QR→PC \| attitude (\d+) B \+ rates (\d+) B, (\d+) Hz \| (\d+) \| .*$)"), fast_lines);
+  const auto fast = rows_matching(
+      std::regex(R"(^\| QR→PC \| attitude (\d+) B \+ rates (\d+) B, (\d+) Hz \| (\d+) \| .*$)"), fast_lines);
   ASSERT_EQ(fast.size(), 1u);
   EXPECT_EQ(std::stol(fast[0][1].str()), attitude);
   EXPECT_EQ(std::stol(fast[0][2].str()), rates);
   EXPECT_EQ(std::stol(fast[0][3].str()), rate);
   EXPECT_EQ(std::stol(fast[0][4].str()), (attitude + rates) * rate);
-  const auto group = rows_matching(std::regex(R"(^\| QR→PC \| one slow group (\d+) B, (\d+) Hz \| (\d+) \| .*$)"), group_lines);
+  const auto group = rows_matching(std::regex(R"(^\| QR→PC \| one slow group (\d+) B, (\d+) Hz \| (\d+) \| .*$)"),
+                                   group_lines);
   ASSERT_EQ(group.size(), 1u);
   EXPECT_EQ(std::stol(group[0][1].str()), slow);
   EXPECT_EQ(std::stol(group[0][3].str()), slow * rate);
-  const auto figure = rows_matching(std::regex(R"(^\| QR→PC \| one task figure (\d+) B, (\d+) Hz \| (\d+) \| .*$)"), figure_lines);
+  const auto figure = rows_matching(std::regex(R"(^\| QR→PC \| one task figure (\d+) B, (\d+) Hz \| (\d+) \| .*$)"),
+                                    figure_lines);
   ASSERT_EQ(figure.size(), 1u);
   EXPECT_EQ(std::stol(figure[0][1].str()), task);
   EXPECT_EQ(std::stol(figure[0][3].str()), task * rate);

@@ -103,7 +103,8 @@ TEST(ResendQueue, ANackEndsTheRequestAndAnAckOfAnotherTypeDoesNot) {
   const FrameBytes mode = queue.submit(ModeChange{0, Mode::full_control}, 0);
   const FrameBytes param = queue.submit(ParamSet{0, 1, 1}, 0);
   EXPECT_EQ(queue.on_ack(Ack{MessageType::param_get, seq_in(mode)}), AnswerMatch::unexpected);
-  EXPECT_EQ(queue.on_nack(Nack{MessageType::mode_change, seq_in(mode), NackReason::not_calibrated}), AnswerMatch::matched);
+  EXPECT_EQ(queue.on_nack(Nack{MessageType::mode_change, seq_in(mode), NackReason::not_calibrated}),
+            AnswerMatch::matched);
   EXPECT_FALSE(queue.pending(MessageType::mode_change));
   EXPECT_TRUE(queue.pending(MessageType::param_set));
   EXPECT_EQ(poll_all(queue, kResendIntervalMs).events.size(), 1u);

@@ -11,9 +11,7 @@ constexpr size_t kMatchWindow = 64;
 }  // namespace
 
 SimChannel::SimChannel(const ChannelFaults& faults, uint64_t seed)
-    : faults_(faults),
-      rng_(seed),
-      bits_to_next_error_(faults.bit_error_rate > 0 ? faults.bit_error_rate : 0.5) {
+    : faults_(faults), rng_(seed), bits_to_next_error_(faults.bit_error_rate > 0 ? faults.bit_error_rate : 0.5) {
   bits_left_ = faults_.bit_error_rate > 0 ? bits_to_next_error_(rng_) : UINT64_MAX;
 }
 

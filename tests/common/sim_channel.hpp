@@ -43,9 +43,9 @@ class SimChannel {
   uint64_t frames_sent() const { return frames_sent_; }
   uint64_t frames_corrupted() const { return frames_corrupted_; }  // had at least one bit flipped
   uint64_t frames_dropped() const { return frames_dropped_; }
-  uint64_t frames_lost() const { return frames_lost_; }            // sent (not dropped) but never accepted
+  uint64_t frames_lost() const { return frames_lost_; }  // sent (not dropped) but never accepted
   uint64_t accepted_ok() const { return accepted_ok_; }
-  uint64_t accepted_false() const { return accepted_false_; }      // accepted but never sent like that
+  uint64_t accepted_false() const { return accepted_false_; }  // accepted but never sent like that
   uint64_t garbage_bursts() const { return garbage_bursts_; }
   // The most frames lost after one garbage burst, before the next one.
   uint32_t most_lost_after_a_burst() const;

@@ -25,8 +25,7 @@ inline std::vector<wire::Frame> parse_all(wire::FrameParser& parser, const std::
   return frames;
 }
 
-inline std::vector<wire::Frame> parse_all(const std::vector<uint8_t>& bytes,
-                                          wire::Listen listen = wire::Listen::both) {
+inline std::vector<wire::Frame> parse_all(const std::vector<uint8_t>& bytes, wire::Listen listen = wire::Listen::both) {
   wire::FrameParser parser(listen);
   return parse_all(parser, bytes);
 }

@@ -208,7 +208,9 @@ int main() {
   measure<Mode::yaw_control, qr::FixedChain>("");
   const ModeFigures full = measure<Mode::full_control, qr::FixedChain>("");
   const ModeFigures full_float = measure<Mode::full_control, FloatChain>("-float");
-  rv32virt::puts("{\"summary\":\"full-control tick with link, telemetry at 100 Hz and logger; targets: mean <= 2400, scheduler overhead <= 150, max <= 8000 instructions, float_over_fixed >= 10\",\"full_tick_instr_mean\":");
+  rv32virt::puts(
+      "{\"summary\":\"full-control tick with link, telemetry at 100 Hz and logger; targets: mean <= 2400, scheduler "
+      "overhead <= 150, max <= 8000 instructions, float_over_fixed >= 10\",\"full_tick_instr_mean\":");
   rv32virt::put_u32(full.tick_mean);
   rv32virt::puts(",\"scheduler_overhead_instr_mean\":");
   rv32virt::put_u32(full.overhead_mean);

@@ -3,8 +3,8 @@
 // (DISABLED_LongSweep), rounded up to two digits; here it is asserted over a dense sweep of
 // directions at radii from 1 lsb to full scale, random raw pairs, int16 inputs, coarser
 // outputs, and the axes.
-#include <fixedpoint/atan2.hpp>
 #include <gtest/gtest.h>
+#include <fixedpoint/atan2.hpp>
 
 #include <cmath>
 #include <numbers>
@@ -107,7 +107,8 @@ TEST(Atan2, AxesQuadrantsAndTheOrigin) {
   EXPECT_NEAR(fx::atan2(-one, one).to_double(), -pi / 4, 1.7e-8);
   EXPECT_NEAR(fx::atan2(Q::min(), Q::min()).to_double(), -3 * pi / 4, 1.7e-8);
   // Only the ratio matters, not the format.
-  EXPECT_EQ(fx::atan2(fx::Q<0>::from_raw(3), fx::Q<0>::from_raw(4)), fx::atan2(fx::Q<30>::from_raw(3), fx::Q<30>::from_raw(4)));
+  EXPECT_EQ(fx::atan2(fx::Q<0>::from_raw(3), fx::Q<0>::from_raw(4)),
+            fx::atan2(fx::Q<30>::from_raw(3), fx::Q<30>::from_raw(4)));
 }
 
 }  // namespace

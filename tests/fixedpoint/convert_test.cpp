@@ -1,8 +1,8 @@
 // Every kind of conversion between Q formats: fewer fractional bits (rounded half up), more
 // (exact), narrower storage, wider storage, and both flavours (convert wraps, convert_sat
 // clamps). int16 sources are swept exhaustively, int32 sources over edges and random raws.
-#include <fixedpoint/convert.hpp>
 #include <gtest/gtest.h>
+#include <fixedpoint/convert.hpp>
 
 #include <type_traits>
 
@@ -41,14 +41,13 @@ using fx::Q;
 using Q8s = Q<8, int16_t>;  // int16 formats by name, so that macros see one argument
 
 TEST(Convert, FromInt16FormatsExhaustively) {
-  sweep_int16_source<Q8s, Q<4, int16_t>, Q<0, int16_t>, Q<12, int16_t>, Q<15, int16_t>, Q8s,
-                     Q<0>, Q<16>, Q<24>, Q<31>>();
+  sweep_int16_source<Q8s, Q<4, int16_t>, Q<0, int16_t>, Q<12, int16_t>, Q<15, int16_t>, Q8s, Q<0>, Q<16>, Q<24>,
+                     Q<31>>();
   sweep_int16_source<Q<15, int16_t>, Q<14, int16_t>, Q<1, int16_t>, Q<30>, Q<2>>();
 }
 
 TEST(Convert, FromInt32Formats) {
-  sweep_int32_source<Q<16>, Q<0>, Q<8>, Q<15>, Q<16>, Q<17>, Q<30>, Q<31>, Q<0, int16_t>, Q8s,
-                     Q<15, int16_t>>(1);
+  sweep_int32_source<Q<16>, Q<0>, Q<8>, Q<15>, Q<16>, Q<17>, Q<30>, Q<31>, Q<0, int16_t>, Q8s, Q<15, int16_t>>(1);
   sweep_int32_source<Q<30>, Q<29>, Q<16>, Q<0>, Q<31>, Q<14, int16_t>, Q<15, int16_t>>(2);
   sweep_int32_source<Q<0>, Q<31>, Q<16>, Q<0, int16_t>, Q<15, int16_t>>(3);
 }

@@ -5,8 +5,8 @@
 // for the flight computer. Freestanding, so that the devboard can build it.
 #pragma once
 
-#include <fixedpoint/fixedpoint.hpp>
 #include <stdint.h>
+#include <fixedpoint/fixedpoint.hpp>
 
 namespace fxcheck {
 
@@ -69,8 +69,8 @@ inline uint32_t checksum() {
     return static_cast<int32_t>(lcg) >> ((lcg >> 7) % 24u);
   };
   constexpr fx::Iir1Coefficients<Q30> c1{Q30(0.0863640270), Q30(0.0863640270), Q30(-0.8272719460)};
-  constexpr fx::Iir2Coefficients<Q30> c2{Q30(0.0078202080), Q30(0.0156404161), Q30(0.0078202080),
-                                         Q30(-1.7347257688), Q30(0.7660066009)};
+  constexpr fx::Iir2Coefficients<Q30> c2{Q30(0.0078202080), Q30(0.0156404161), Q30(0.0078202080), Q30(-1.7347257688),
+                                         Q30(0.7660066009)};
   fx::Iir1State<Q16> s1;
   fx::Iir2State<Q16> s2;
   for (uint32_t i = 0; i < kSamples; ++i) {

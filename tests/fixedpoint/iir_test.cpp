@@ -4,8 +4,8 @@
 // at most 1/2 lsb per step, fed back through 1/A(z). The asserted bound follows from that:
 //   |y_Q - y_double| <= 1/2 lsb * sum_n |h_A[n]|,  h_A the impulse response of 1/A(z),
 // computed here for each filter, plus 1e-12 for the double reference's own rounding.
-#include <fixedpoint/iir.hpp>
 #include <gtest/gtest.h>
+#include <fixedpoint/iir.hpp>
 
 #include <cmath>
 #include <numbers>

@@ -1,8 +1,8 @@
 // What a Q is made of and how constants get in: compile-time construction from a double
 // (rounded half up, rejected when it does not fit: see compile_fail/), raw access, integers in
 // and out, and the value as a double for tests.
-#include <fixedpoint/q.hpp>
 #include <gtest/gtest.h>
+#include <fixedpoint/q.hpp>
 
 #include <type_traits>
 
@@ -18,9 +18,9 @@ static_assert(Q<16>::int_bits == 15 && Q<15, int16_t>::int_bits == 0);
 TEST(QConstants, ComeFromDoublesAtCompileTimeRoundedHalfUp) {
   constexpr Q<16> one_and_a_half(1.5);
   static_assert(one_and_a_half.raw() == 3 << 15);
-  static_assert(Q<1, int16_t>(0.25).raw() == 1);     // 0.5 lsb -> up
-  static_assert(Q<1, int16_t>(-0.25).raw() == 0);    // -0.5 lsb -> up, to 0
-  static_assert(Q<1, int16_t>(-0.75).raw() == -1);   // -1.5 lsb -> -1
+  static_assert(Q<1, int16_t>(0.25).raw() == 1);    // 0.5 lsb -> up
+  static_assert(Q<1, int16_t>(-0.25).raw() == 0);   // -0.5 lsb -> up, to 0
+  static_assert(Q<1, int16_t>(-0.75).raw() == -1);  // -1.5 lsb -> -1
   static_assert(Q<1, int16_t>(0.2).raw() == 0 && Q<1, int16_t>(0.3).raw() == 1);
   static_assert(Q<15, int16_t>(-1.0) == Q<15, int16_t>::min());
   static_assert(Q<15, int16_t>(1.0 - 1.0 / 32768) == Q<15, int16_t>::max());

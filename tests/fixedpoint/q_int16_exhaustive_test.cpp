@@ -5,8 +5,8 @@
 //
 // 2^32 pairs a function is only affordable vectorised, so the pair sweep is compiled twice,
 // for AVX2 and for the x86-64 baseline, picked at run time, and split over the CPU's threads.
-#include <fixedpoint/q.hpp>
 #include <gtest/gtest.h>
+#include <fixedpoint/q.hpp>
 
 #include <algorithm>
 #include <atomic>
@@ -73,9 +73,9 @@ TEST(QInt16Exhaustive, AllPairsAddSubMulAndSaturating) {
     const RowDiff& d = rows[i];
     if ((d.add | d.sub | d.mul | d.add_sat | d.sub_sat | d.mul_sat) == 0) continue;
     if (++failing_rows > 5) break;
-    ADD_FAILURE() << "a = " << (static_cast<int32_t>(i) + kRawMin) << ": add " << d.add << " sub " << d.sub
-                  << " mul " << d.mul << " add_sat " << d.add_sat << " sub_sat " << d.sub_sat << " mul_sat "
-                  << d.mul_sat << " (nonzero = some b differs)";
+    ADD_FAILURE() << "a = " << (static_cast<int32_t>(i) + kRawMin) << ": add " << d.add << " sub " << d.sub << " mul "
+                  << d.mul << " add_sat " << d.add_sat << " sub_sat " << d.sub_sat << " mul_sat " << d.mul_sat
+                  << " (nonzero = some b differs)";
   }
 }
 
@@ -127,7 +127,9 @@ TEST(QInt16Exhaustive, DivisionOfEveryValueBySaturatingAndOrdinaryDivisors) {
     const Q8 qa = Q8::from_raw(static_cast<int16_t>(a));
     for (int32_t b : divisors) {
       const Q8 qb = Q8::from_raw(static_cast<int16_t>(b));
-      const int16_t expected = b == 0 ? (a > 0 ? kRawMax : a < 0 ? kRawMin : 0)
+      const int16_t expected = b == 0 ? (a > 0   ? kRawMax
+                                         : a < 0 ? kRawMin
+                                                 : 0)
                                       : fxtest::saturated<int16_t>(fxtest::round_half_up_div(i128{a} << 8, b));
       ASSERT_EQ((qa / qb).raw(), expected) << a << " / " << b;
       ASSERT_EQ(div_sat(qa, qb).raw(), expected) << a << " / " << b;

@@ -1,8 +1,8 @@
 // Q<F, int32_t> against the exact reference, for formats from integer (F = 0) to pure fraction
 // (F = 31): every pair of edge values (extremes, powers of two and their neighbours) plus
 // 100 000 random pairs from a fixed seed per operation.
-#include <fixedpoint/q.hpp>
 #include <gtest/gtest.h>
+#include <fixedpoint/q.hpp>
 
 #include <functional>
 
@@ -80,9 +80,11 @@ struct DivideRoundsHalfUpAndSaturatesIncludingByZero {
   template <typename Q>
   static void run() {
     for_pairs<Q>(3, [](Q a, Q b) {
-      const int32_t expected =
-          b.raw() == 0 ? (a.raw() > 0 ? INT32_MAX : a.raw() < 0 ? INT32_MIN : 0)
-                       : fxtest::saturated<int32_t>(fxtest::round_half_up_div(i128{a.raw()} << Q::frac_bits, b.raw()));
+      const int32_t expected = b.raw() == 0 ? (a.raw() > 0   ? INT32_MAX
+                                               : a.raw() < 0 ? INT32_MIN
+                                                             : 0)
+                                            : fxtest::saturated<int32_t>(
+                                                  fxtest::round_half_up_div(i128{a.raw()} << Q::frac_bits, b.raw()));
       ASSERT_EQ((a / b).raw(), expected) << a.raw() << " / " << b.raw();
       ASSERT_EQ(div_sat(a, b).raw(), expected) << a.raw() << " / " << b.raw();
       Q c = a;
@@ -91,7 +93,9 @@ struct DivideRoundsHalfUpAndSaturatesIncludingByZero {
     });
   }
 };
-TEST(QInt32, DivideRoundsHalfUpAndSaturatesIncludingByZero) { for_each_format<DivideRoundsHalfUpAndSaturatesIncludingByZero>(); }
+TEST(QInt32, DivideRoundsHalfUpAndSaturatesIncludingByZero) {
+  for_each_format<DivideRoundsHalfUpAndSaturatesIncludingByZero>();
+}
 
 struct TimesIntegerWrapsOrSaturates {
   template <typename Q>

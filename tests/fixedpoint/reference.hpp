@@ -56,8 +56,8 @@ Raw wrapped(i128 v) {
 template <typename Raw>
 std::vector<Raw> edge_raws() {
   using L = std::numeric_limits<Raw>;
-  std::vector<Raw> v{L::min(), static_cast<Raw>(L::min() + 1), L::max(), static_cast<Raw>(L::max() - 1),
-                     0, 1, -1, 2, -2};
+  std::vector<Raw> v{L::min(), static_cast<Raw>(L::min() + 1), L::max(), static_cast<Raw>(L::max() - 1), 0, 1, -1, 2,
+                     -2};
   for (int b = 1; b < std::numeric_limits<Raw>::digits; ++b) {
     const auto p = static_cast<Raw>(Raw{1} << b);
     for (Raw d : {Raw{-1}, Raw{0}, Raw{1}}) {

@@ -3,8 +3,8 @@
 // digits; here it is asserted over every int16 angle of one format, a dense stride through a
 // Q<28> range of [-8, 8) rad, the neighbourhoods of every quadrant boundary there, and random
 // angles of Q<0>, Q<16> and Q<31> (up to 2^31 rad).
-#include <fixedpoint/sincos.hpp>
 #include <gtest/gtest.h>
+#include <fixedpoint/sincos.hpp>
 
 #include <cmath>
 #include <numbers>
@@ -49,7 +49,8 @@ TEST(SinCos, EveryInt16Angle) {
 TEST(SinCos, DenseOverEightRadiansEitherSide) {
   using Angle = fx::Q<28>;
   SinCosErrors e("Q<28> -> Q<30>");
-  for (int64_t raw = INT32_MIN; raw <= INT32_MAX; raw += 4099) measure<fx::Q<30>>(Angle::from_raw(static_cast<int32_t>(raw)), e);
+  for (int64_t raw = INT32_MIN; raw <= INT32_MAX; raw += 4099)
+    measure<fx::Q<30>>(Angle::from_raw(static_cast<int32_t>(raw)), e);
   for (int k = -5; k <= 5; ++k) {
     const auto boundary = static_cast<int64_t>(std::llround(k * std::numbers::pi / 2 * 0x1p28));
     for (int64_t d = -3000; d <= 3000; ++d) {

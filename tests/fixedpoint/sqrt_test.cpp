@@ -2,8 +2,8 @@
 // nearest lsb, checked with integers (no ties exist), and so is within 0.5 lsb of sqrtl.
 // Every value of three int16 formats; edges, random raws and the neighbourhoods of perfect
 // squares for int32 formats from Q<0> to Q<31>.
-#include <fixedpoint/sqrt.hpp>
 #include <gtest/gtest.h>
+#include <fixedpoint/sqrt.hpp>
 
 #include <cmath>
 
@@ -39,7 +39,8 @@ void expect_correctly_rounded(Q x, fxtest::MaxError& lsb_error) {
 template <typename Q>
 void sweep_all(const char* name) {
   fxtest::MaxError lsb(name);
-  for (int32_t raw = INT16_MIN; raw <= INT16_MAX; ++raw) expect_correctly_rounded(Q::from_raw(static_cast<int16_t>(raw)), lsb);
+  for (int32_t raw = INT16_MIN; raw <= INT16_MAX; ++raw)
+    expect_correctly_rounded(Q::from_raw(static_cast<int16_t>(raw)), lsb);
   lsb.print(0.5L);
   EXPECT_LE(lsb.max(), 0.5L);
 }

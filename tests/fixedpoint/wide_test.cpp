@@ -1,7 +1,7 @@
 // The wide accumulator: products exact for any pair of formats, sums exact, and one rounding
 // when narrowing back. And the double/float overloads that let signal code be written once.
-#include <fixedpoint/wide.hpp>
 #include <gtest/gtest.h>
+#include <fixedpoint/wide.hpp>
 
 #include "reference.hpp"
 
@@ -57,8 +57,7 @@ TEST(Wide, SumsOfProductsNarrowWithOneRounding) {
       continue;
     }
     ASSERT_EQ(fx::narrow_sat<Q<16>>(acc).raw(), fxtest::saturated<int32_t>(rounded));
-    ASSERT_EQ(fx::narrow_sat<Q8s>(acc).raw(),
-              fxtest::saturated<int16_t>(fxtest::round_half_up_shift(exact, 38)));
+    ASSERT_EQ(fx::narrow_sat<Q8s>(acc).raw(), fxtest::saturated<int16_t>(fxtest::round_half_up_shift(exact, 38)));
   }
   EXPECT_LT(overflowed, 1000);  // the random terms are full scale only now and then
 }

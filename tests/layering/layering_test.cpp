@@ -31,8 +31,8 @@ namespace {
 namespace fs = std::filesystem;
 
 struct Layer {
-  const char* dir;                        // relative to the source root, without a trailing slash
-  std::vector<const char*> may_use;       // besides itself
+  const char* dir;                   // relative to the source root, without a trailing slash
+  std::vector<const char*> may_use;  // besides itself
 };
 
 // Who may include whom, and link whom. "cmake" is the build helpers (flags, the RV32 link
@@ -49,8 +49,9 @@ const std::vector<Layer> kLayers = {
     {"qr", {}},  // the umbrella CMakeLists.txt only
     {"sim", {}},
     {"pc", {"common", "fixedpoint"}},
-    {"tests", {"fixedpoint", "common", "qr/core", "qr/host", "qr/boards/rv32virt", "qr/boards/fake", "qr/boards/sim",
-               "qr/tools", "qr", "sim", "pc"}},
+    {"tests",
+     {"fixedpoint", "common", "qr/core", "qr/host", "qr/boards/rv32virt", "qr/boards/fake", "qr/boards/sim", "qr/tools",
+      "qr", "sim", "pc"}},
     {"cmake", {}},
 };
 
@@ -116,9 +117,7 @@ bool is_source(const fs::path& p) {
   return false;
 }
 
-bool is_cmake(const fs::path& p) {
-  return p.filename() == "CMakeLists.txt" || p.extension() == ".cmake";
-}
+bool is_cmake(const fs::path& p) { return p.filename() == "CMakeLists.txt" || p.extension() == ".cmake"; }
 
 // Every file under the layer folders (build trees and hidden folders are not under them).
 std::vector<std::string> tree_files(bool (*wanted)(const fs::path&)) {
@@ -248,8 +247,8 @@ struct TargetFunction {
 };
 
 struct Model {
-  std::map<std::string, std::string> target_layer;       // every library and program of ours
-  std::map<std::string, TargetFunction> functions;        // functions that make targets
+  std::map<std::string, std::string> target_layer;  // every library and program of ours
+  std::map<std::string, TargetFunction> functions;  // functions that make targets
 };
 
 bool is_link_keyword(const std::string& a) {
@@ -338,8 +337,8 @@ TEST(Layering, IncludeReaderFindsOurHeadersInBothSpellings) {
       "#include \"../chain/flight_chain.hpp\"\n"
       "#include \"local.hpp\"\n"
       "// #include <qr/boards/sim/not_code.hpp> is prose\n";
-  const std::vector<std::string> expected = {"fixedpoint/q.hpp", "common/messages.hpp", "qr/core/chain/flight_chain.hpp",
-                                             "qr/core/x/local.hpp"};
+  const std::vector<std::string> expected = {"fixedpoint/q.hpp", "common/messages.hpp",
+                                             "qr/core/chain/flight_chain.hpp", "qr/core/x/local.hpp"};
   EXPECT_EQ(project_includes(text, "qr/core/x"), expected);
 }
 
@@ -379,8 +378,8 @@ TEST(Layering, EveryIncludePointsDown) {
   }
   // The walk really read the tree: hundreds of includes, from every production layer.
   EXPECT_GT(checked, 300);
-  for (const char* layer : {"fixedpoint", "common", "qr/core", "qr/host", "qr/boards/rv32virt", "qr/boards/sim",
-                            "qr/tools", "sim", "pc"}) {
+  for (const char* layer :
+       {"fixedpoint", "common", "qr/core", "qr/host", "qr/boards/rv32virt", "qr/boards/sim", "qr/tools", "sim", "pc"}) {
     EXPECT_EQ(layers_seen.count(layer), 1u) << "no include read in " << layer;
   }
 }

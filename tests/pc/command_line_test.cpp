@@ -18,8 +18,8 @@ TEST(Console, CommandLineDefaultsFlyTheSimulatorWithAJoystick) {
 }
 
 TEST(Console, CommandLineTakesValuesBothWays) {
-  const qrterm::ParsedCommandLine parsed =
-      parse_command_line({"--port", "/dev/ttyUSB0", "--baud=9600", "--no-joystick", "--log-dir", "here", "--sim-arg", "-v"});
+  const qrterm::ParsedCommandLine parsed = parse_command_line(
+      {"--port", "/dev/ttyUSB0", "--baud=9600", "--no-joystick", "--log-dir", "here", "--sim-arg", "-v"});
   ASSERT_EQ(parsed.error, "");
   EXPECT_EQ(parsed.options.port, "/dev/ttyUSB0");
   EXPECT_EQ(parsed.options.baud, 9600u);

@@ -27,9 +27,7 @@ class CapturedFile : public std::ostringstream {
 
 struct Bench {
   explicit Bench(const qrterm::Console::Setup& setup = {}, uint32_t start_ms = 5000)
-      : now(start_ms),
-        console(log, files(), setup, start_ms),
-        qr(start_ms) {}
+      : now(start_ms), console(log, files(), setup, start_ms), qr(start_ms) {}
 
   qrterm::ConsoleFiles files() {
     qrterm::ConsoleFiles f;

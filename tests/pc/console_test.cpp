@@ -22,14 +22,16 @@ int32_t default_of(wire::ParamId id) { return spec_of(id).default_value; }
 using qrterm_test::Bench;
 
 size_t count_requests(const Bench& b, wire::MessageType type) {
-  return static_cast<size_t>(
-      std::count_if(b.qr.requests.begin(), b.qr.requests.end(), [type](const wire::Frame& f) { return f.type == type; }));
+  return static_cast<size_t>(std::count_if(b.qr.requests.begin(), b.qr.requests.end(),
+                                           [type](const wire::Frame& f) { return f.type == type; }));
 }
 
 void enter_manual(Bench& b) {
   b.connect();
   b.key('2');
-  ASSERT_TRUE(b.run_until([&] { return b.console.telemetry().attitude && b.console.telemetry().attitude->mode == wire::Mode::manual; }, 200));
+  ASSERT_TRUE(b.run_until(
+      [&] { return b.console.telemetry().attitude && b.console.telemetry().attitude->mode == wire::Mode::manual; },
+      200));
 }
 
 TEST(Console, SendsControlAt50HzWhichIsTheHeartbeat) {
@@ -116,7 +118,8 @@ TEST(Console, ParametersAreReadBackAfterAnUpload) {
   b.key('i');
   b.run(100);
   EXPECT_EQ(count_requests(b, wire::MessageType::param_get), 2u);
-  EXPECT_EQ(b.console.reported(wire::ParamId::roll_pitch_p1), default_of(wire::ParamId::roll_pitch_p1) + 64);  // +0.25 in Q8
+  EXPECT_EQ(b.console.reported(wire::ParamId::roll_pitch_p1),
+            default_of(wire::ParamId::roll_pitch_p1) + 64);  // +0.25 in Q8
   EXPECT_FALSE(b.logged("the QR has"));
 }
 
@@ -127,7 +130,8 @@ TEST(Console, AValueTheQrDoesNotHoldIsAWarning) {
   b.key('p');
   b.run(50);
   const int32_t console_p2 = default_of(wire::ParamId::roll_pitch_p2) / 16;  // Q4, a whole number
-  const qrterm::LogLine* line = b.log.find_last("the QR has roll_pitch_p2 = 30, the console " + std::to_string(console_p2));
+  const qrterm::LogLine* line = b.log.find_last("the QR has roll_pitch_p2 = 30, the console " +
+                                                std::to_string(console_p2));
   ASSERT_NE(line, nullptr);
   EXPECT_EQ(line->severity, Severity::warning);
 }
@@ -473,10 +477,13 @@ TEST(Console, LogDownloadWritesBothLogsAsCsvAndAsksAgainForLostLines) {
   t.engine[2] = 400;
   b.qr.telemetry_log[0] = t;
   int dropped = 0;
-  b.qr.drop_log_part = [&dropped](uint16_t line, uint8_t part) { return (line == 7 || line == 8) && part == 2 && dropped++ < 2; };
+  b.qr.drop_log_part = [&dropped](uint16_t line, uint8_t part) {
+    return (line == 7 || line == 8) && part == 2 && dropped++ < 2;
+  };
   b.run(200);  // a log_status with the new line counts
   b.key('g');
-  ASSERT_TRUE(b.run_until([&] { return b.written.count("telemetry_log_1.csv") != 0 && !b.console.download_status().size(); }, 10000));
+  ASSERT_TRUE(b.run_until(
+      [&] { return b.written.count("telemetry_log_1.csv") != 0 && !b.console.download_status().size(); }, 10000));
   const std::string& sensor = b.written["sensor_log_1.csv"];
   EXPECT_EQ(std::count(sensor.begin(), sensor.end(), '\n'), 41) << sensor;
   EXPECT_EQ(sensor.rfind("line,time_us,gyro_x", 0), 0u);

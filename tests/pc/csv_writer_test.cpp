@@ -32,8 +32,12 @@ TEST(CsvWriter, QuotesWhatMustBeQuoted) {
 TEST(CsvWriter, RefusesARowOfAnotherWidth) {
   std::ostringstream out;
   CsvWriter csv(out, {"a", "b", "c"});
-  EXPECT_FALSE(csv.write(CsvRow() << "1" << "2"));
-  EXPECT_FALSE(csv.write(CsvRow() << "1" << "2" << "3" << "4"));
+  EXPECT_FALSE(csv.write(CsvRow() << "1"
+                                  << "2"));
+  EXPECT_FALSE(csv.write(CsvRow() << "1"
+                                  << "2"
+                                  << "3"
+                                  << "4"));
   EXPECT_EQ(out.str(), "a,b,c\r\n");
   EXPECT_EQ(csv.rows(), 0u);
 }
@@ -43,7 +47,8 @@ TEST(CsvWriter, SensorLogLineUnderItsHeader) {
   wire::SensorLogRecord r;
   r.line = 1000;
   r.time_us = 123456789;
-  const int16_t gyro[] = {-12, 7, 300}, accel[] = {250, -180, 16384}, gyro_f[] = {-10, 5, 298}, accel_f[] = {248, -177, 16380};
+  const int16_t gyro[] = {-12, 7, 300}, accel[] = {250, -180, 16384}, gyro_f[] = {-10, 5, 298},
+                accel_f[] = {248, -177, 16380};
   for (int i = 0; i < 3; ++i) {
     r.gyro[i] = gyro[i];
     r.accel[i] = accel[i];
@@ -90,7 +95,8 @@ TEST(CsvWriter, TelemetryLogLineUnderItsHeader) {
             "phi_1e-4rad,theta_1e-4rad,psi_1e-4rad,p_1e-3rad_s,q_1e-3rad_s,r_1e-3rad_s,"
             "engine_front_0to1000,engine_right_0to1000,engine_back_0to1000,engine_left_0to1000,"
             "loop_time_us,battery_mv,cpu_load_permille,deadline_misses");
-  EXPECT_EQ(out.str().substr(out.str().find("\r\n") + 2), "17,5000000,5,3,450,-873,0,500,-850,12,31416,-20,3,495,400,410,395,405,612,11850,623,3\r\n");
+  EXPECT_EQ(out.str().substr(out.str().find("\r\n") + 2),
+            "17,5000000,5,3,450,-873,0,500,-850,12,31416,-20,3,495,400,410,395,405,612,11850,623,3\r\n");
 }
 
 }  // namespace

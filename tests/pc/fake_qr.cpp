@@ -27,12 +27,14 @@ struct FakeQr::Handler {
   void operator()(const wire::ModeChange& m) { answer = qr.change_mode(m.mode); }
   void operator()(const wire::ParamSet& p) {
     answer = qr.params.set(p.id, p.value);
-    if (answer == wire::NackReason::none && qr.report_after_set) qr.send(wire::encode(wire::ParamReport{p.id, p.value}));
+    if (answer == wire::NackReason::none && qr.report_after_set)
+      qr.send(wire::encode(wire::ParamReport{p.id, p.value}));
   }
   void operator()(const wire::ParamGet& g) {
     for (const wire::ParameterSpec& spec : wire::kParameterTable) {
       const uint8_t id = static_cast<uint8_t>(spec.id);
-      if (g.id == wire::kAllParameters || g.id == id) qr.send(wire::encode(wire::ParamReport{id, qr.params.get(spec.id)}));
+      if (g.id == wire::kAllParameters || g.id == id)
+        qr.send(wire::encode(wire::ParamReport{id, qr.params.get(spec.id)}));
     }
   }
   void operator()(const wire::LogStart&) { qr.logging = true; }
@@ -93,7 +95,8 @@ void FakeQr::receive(const uint8_t* data, size_t count, uint32_t now_ms) {
       }
       requests.push_back(frame);
       if (!answer_requests) return;
-      const bool log_request = frame.type == wire::MessageType::log_start || frame.type == wire::MessageType::log_stop ||
+      const bool log_request = frame.type == wire::MessageType::log_start ||
+                               frame.type == wire::MessageType::log_stop ||
                                frame.type == wire::MessageType::log_download;
       if (admission.duplicate) {
         send(wire::reply_frame(frame.type, admission.seq, admission.previous));
@@ -105,7 +108,8 @@ void FakeQr::receive(const uint8_t* data, size_t count, uint32_t now_ms) {
       ++requests_applied;
       dedup_.record(frame, answer, now_ms);
       const wire::FrameBytes reply = wire::reply_frame(frame.type, admission.seq, answer);
-      if (!silent) output_.insert(output_.begin() + static_cast<std::ptrdiff_t>(before), reply.bytes, reply.bytes + reply.size);
+      if (!silent)
+        output_.insert(output_.begin() + static_cast<std::ptrdiff_t>(before), reply.bytes, reply.bytes + reply.size);
       if (log_request) send(wire::encode(log_status()));  // the firmware does the same
     });
   }
@@ -161,7 +165,8 @@ void FakeQr::send_telemetry() {
     default: {
       const wire::LinkCounters& c = parser_.counters();
       send(wire::encode(wire::TelemetryLink{static_cast<uint16_t>(c.frames_ok), static_cast<uint16_t>(c.check_failures),
-                                            static_cast<uint16_t>(c.unknown_types), static_cast<uint16_t>(c.bytes_skipped)}));
+                                            static_cast<uint16_t>(c.unknown_types),
+                                            static_cast<uint16_t>(c.bytes_skipped)}));
       break;
     }
   }
@@ -169,7 +174,8 @@ void FakeQr::send_telemetry() {
 
 template <class Record>
 static void send_lines(const std::map<uint16_t, Record>& log, uint16_t first, uint16_t count,
-                       const std::function<bool(uint16_t, uint8_t)>& drop, const std::function<void(const wire::FrameBytes&)>& out) {
+                       const std::function<bool(uint16_t, uint8_t)>& drop,
+                       const std::function<void(const wire::FrameBytes&)>& out) {
   for (const auto& [line, record] : log) {
     if (line < first || (count != 0 && line >= uint32_t{first} + count)) continue;
     for (uint8_t part = 0; part < Record::kParts; ++part) {

@@ -40,12 +40,12 @@ class FakeQr {
   void say(const char* text);
 
   // --- the script
-  bool silent = false;              // sends nothing at all (a dead QR)
-  bool answer_requests = true;      // false: requests are received but never answered
+  bool silent = false;          // sends nothing at all (a dead QR)
+  bool answer_requests = true;  // false: requests are received but never answered
   bool telemetry = true;
-  bool report_after_set = true;     // protocol.md: a param_report follows every accepted param_set
+  bool report_after_set = true;  // protocol.md: a param_report follows every accepted param_set
   std::function<bool(uint16_t line, uint8_t part)> drop_log_part;  // true: that part is lost
-  std::map<uint16_t, wire::SensorLogRecord> sensor_log;  // lines 0..size-1
+  std::map<uint16_t, wire::SensorLogRecord> sensor_log;            // lines 0..size-1
   std::map<uint16_t, wire::TelemetryLogRecord> telemetry_log;
   bool logging = false;
 

@@ -29,7 +29,9 @@ class Pipe {
     const js_event event{time, value, type, number};
     ASSERT_EQ(::write(write_, &event, sizeof event), static_cast<ssize_t>(sizeof event));
   }
-  void send_bytes(const void* data, size_t count) { ASSERT_EQ(::write(write_, data, count), static_cast<ssize_t>(count)); }
+  void send_bytes(const void* data, size_t count) {
+    ASSERT_EQ(::write(write_, data, count), static_cast<ssize_t>(count));
+  }
   void close_writer() {
     if (write_ >= 0) ::close(write_);
     write_ = -1;
@@ -138,7 +140,8 @@ TEST(Joystick, EndOfTheStreamMeansTheJoystickIsGone) {
 
 TEST(Joystick, MapFileSetsAxesInversionDeadbandAndButton) {
   const qrterm::JoystickMapFile file = qrterm::parse_joystick_map(
-      "# my stick\nlift_axis = 2\nlift_invert = no\nyaw_axis = 3\nroll_invert = yes\nabort_button = 1\ndeadband = 80\n");
+      "# my stick\nlift_axis = 2\nlift_invert = no\nyaw_axis = 3\nroll_invert = yes\nabort_button = 1\ndeadband = "
+      "80\n");
   ASSERT_TRUE(file.errors.empty()) << qrterm::describe("text", file.errors);
   EXPECT_EQ(file.map.lift.axis, 2);
   EXPECT_FALSE(file.map.lift.invert);
@@ -161,11 +164,12 @@ TEST(Joystick, MapFileRoundTrip) {
 }
 
 TEST(Joystick, MapFileBadLinesAreNamedWithTheirLineNumbers) {
-  const qrterm::JoystickMapFile file =
-      qrterm::parse_joystick_map("lift_axis = 1\nthrottle = 2\nroll_invert = maybe\ndeadband = 900\nyaw_axis = x\n");
+  const qrterm::JoystickMapFile file = qrterm::parse_joystick_map(
+      "lift_axis = 1\nthrottle = 2\nroll_invert = maybe\ndeadband = 900\nyaw_axis = x\n");
   ASSERT_EQ(file.errors.size(), 5u);
   EXPECT_EQ(file.errors[0].line, 1u);
-  EXPECT_NE(file.errors[0].message.find("lift_axis and pitch_axis are both axis 1"), std::string::npos) << file.errors[0].message;
+  EXPECT_NE(file.errors[0].message.find("lift_axis and pitch_axis are both axis 1"), std::string::npos)
+      << file.errors[0].message;
   EXPECT_EQ(file.errors[1].line, 2u);
   EXPECT_NE(file.errors[1].message.find("unknown setting \"throttle\""), std::string::npos);
   EXPECT_EQ(file.errors[2].line, 3u);

@@ -41,7 +41,8 @@ TEST(ParamFile, ValuesAreInTheTablesRealUnits) {
   EXPECT_EQ(qrterm::format_real(spec_of(wire::ParamId::yaw_p), 1600), "100");
   EXPECT_EQ(qrterm::format_real(spec_of(wire::ParamId::max_yaw_rate_rad_s), 1), "0.0009765625");
   EXPECT_EQ(qrterm::format_real(spec_of(wire::ParamId::yaw_p), -8), "-0.5");
-  const qrterm::ParamFileContents file = parse_param_file("roll_pitch_p1 = 4.25\nyaw_p=100.5\nmax_yaw_rate_rad_s = 2\n");
+  const qrterm::ParamFileContents file = parse_param_file(
+      "roll_pitch_p1 = 4.25\nyaw_p=100.5\nmax_yaw_rate_rad_s = 2\n");
   ASSERT_TRUE(file.errors.empty());
   EXPECT_EQ(file.values.get(wire::ParamId::roll_pitch_p1), 1088);
   EXPECT_EQ(file.values.get(wire::ParamId::yaw_p), 1608);
@@ -93,19 +94,23 @@ TEST(ParamFile, BadLinesAreNamedWithTheirLineNumbers) {
 TEST(ParamFile, FormerNamesAreRefusedWithTheirNewNames) {
   const qrterm::ParamFileContents file = parse_param_file("p1 = 4\nlink_timeout = 300\nc2 = 5\n");
   ASSERT_EQ(file.errors.size(), 3u);
-  EXPECT_NE(file.errors[0].message.find("\"p1\" is now called roll_pitch_p1"), std::string::npos) << file.errors[0].message;
+  EXPECT_NE(file.errors[0].message.find("\"p1\" is now called roll_pitch_p1"), std::string::npos)
+      << file.errors[0].message;
   EXPECT_NE(file.errors[1].message.find("is now called link_timeout_ms"), std::string::npos) << file.errors[1].message;
   EXPECT_NE(file.errors[2].message.find("is now called attitude_c2"), std::string::npos) << file.errors[2].message;
   for (const wire::ParameterSpec& spec : wire::kParameterTable) {
     const qrterm::ParamFileContents current = parse_param_file(std::string(spec.name) + " = 1\n");
-    for (const qrterm::LineError& e : current.errors) EXPECT_EQ(e.message.find("now called"), std::string::npos) << spec.name;
+    for (const qrterm::LineError& e : current.errors)
+      EXPECT_EQ(e.message.find("now called"), std::string::npos) << spec.name;
   }
 }
 
 TEST(ParamFile, HugeNumbersAreOutOfRangeNotUndefined) {
-  const qrterm::ParamFileContents file = parse_param_file("attitude_c2 = 99999999999999999999999\nattitude_c1 = -1e400\n");
+  const qrterm::ParamFileContents file = parse_param_file(
+      "attitude_c2 = 99999999999999999999999\nattitude_c1 = -1e400\n");
   ASSERT_EQ(file.errors.size(), 2u);
-  const std::string c2_max = std::to_string(wire::find_parameter(static_cast<uint8_t>(wire::ParamId::attitude_c2))->max);
+  const std::string c2_max = std::to_string(
+      wire::find_parameter(static_cast<uint8_t>(wire::ParamId::attitude_c2))->max);
   EXPECT_NE(file.errors[0].message.find("is outside 1 .. " + c2_max), std::string::npos) << file.errors[0].message;
   EXPECT_NE(file.errors[1].message.find("not a number"), std::string::npos) << "no exponents";
 }
@@ -119,7 +124,8 @@ TEST(ParamFile, SavedFileReplacesTheOldOneWhole) {
   std::string text;
   ASSERT_TRUE(qrterm::read_file(path, text));
   EXPECT_EQ(text, "roll_pitch_p1 = 4\n");
-  EXPECT_NE(qrterm::write_file_atomically(std::string(folder) + "/no/such/folder/p.txt", "x").find("cannot write"), std::string::npos);
+  EXPECT_NE(qrterm::write_file_atomically(std::string(folder) + "/no/such/folder/p.txt", "x").find("cannot write"),
+            std::string::npos);
   std::remove(path.c_str());
   ::rmdir(folder);
 }

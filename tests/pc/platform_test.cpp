@@ -72,8 +72,9 @@ TEST(Console, SerialPortWhoseOtherEndClosesSaysSo) {
 }
 
 TEST(Console, SerialPortErrorsAreClear) {
-  EXPECT_NE(error_of("/dev/ttyQR-none").find("cannot open /dev/ttyQR-none: No such file or directory (is the QR plugged in?"),
-            std::string::npos)
+  EXPECT_NE(
+      error_of("/dev/ttyQR-none").find("cannot open /dev/ttyQR-none: No such file or directory (is the QR plugged in?"),
+      std::string::npos)
       << error_of("/dev/ttyQR-none");
   EXPECT_NE(error_of("/dev/null").find("/dev/null is not a serial device"), std::string::npos) << error_of("/dev/null");
   Pty pty;
@@ -103,7 +104,8 @@ TEST(Console, SimulatorThatDiesEarlySaysHowWithItsOutput) {
     FAIL() << "started";
   } catch (const SimError& e) {
     const std::string message = e.what();
-    EXPECT_NE(message.find("simulator exited with status 3 before naming its serial line"), std::string::npos) << message;
+    EXPECT_NE(message.find("simulator exited with status 3 before naming its serial line"), std::string::npos)
+        << message;
     EXPECT_NE(message.find("no world file"), std::string::npos) << message;
   }
 }
@@ -113,7 +115,8 @@ TEST(Console, SimulatorMissingOrSilentIsAClearError) {
     SimProcess sim("/nonexistent/qrsim", {}, 1000);
     FAIL();
   } catch (const SimError& e) {
-    EXPECT_NE(std::string(e.what()).find("no simulator at /nonexistent/qrsim (build it"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("no simulator at /nonexistent/qrsim (build it"), std::string::npos)
+        << e.what();
   }
   try {
     SimProcess sim("/bin/sh", {"-c", "sleep 5"}, 300);

@@ -75,7 +75,7 @@ TEST(ArchitectureDocument, TheModeTableIsTheCodes) {
     ASSERT_LT(rows, size_t{kModeCount});
     const Mode mode = static_cast<Mode>(rows);
     EXPECT_EQ(cells[0], wire::mode_name(mode)) << "rows in mode order";
-    const FlightMode<Firmware>& code = kFlightModes<Firmware>[rows];
+    const FlightMode<Firmware>& code = flight_modes<Firmware>()[rows];
     std::vector<std::string> names;
     for (uint8_t k = 0; k < code.tasks.count; ++k) names.push_back(Firmware::kTasks[code.tasks.ids[k]].name);
     EXPECT_EQ(split(cells[1], ','), names) << cells[0];

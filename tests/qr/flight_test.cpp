@@ -304,13 +304,14 @@ TEST_F(FlightTest, DividedTasksRunAtTheirRowsRates) {
   run_ms(100);
   received.clear();
   run_ms(1000);
-  EXPECT_NEAR(static_cast<double>(got<wire::TelemetryAttitude>().size()), 10.0, 1.0) << "the new rate after the next run";
+  EXPECT_NEAR(static_cast<double>(got<wire::TelemetryAttitude>().size()), 10.0, 1.0)
+      << "the new rate after the next run";
 }
 
 TEST_F(FlightTest, ParameterSetIsRangeCheckedAppliedAndReported) {
   send(wire::ParamSet{++seq, static_cast<uint8_t>(wire::ParamId::link_timeout_ms), 500});
   send(wire::ParamSet{++seq, static_cast<uint8_t>(wire::ParamId::link_timeout_ms), 5});  // below range
-  send(wire::ParamSet{++seq, 200, 1});                                                  // no such id
+  send(wire::ParamSet{++seq, 200, 1});                                                   // no such id
   run_ms(5);
   EXPECT_EQ(flight.safety().limits().link_timeout_us, 500000u);
   ASSERT_EQ(got<wire::Ack>().size(), 1u);

@@ -109,10 +109,12 @@ TEST(LogDownload, TenThousandLinesOverALossyLineArriveWholeOnceAndInOrder) {
   EXPECT_EQ(gave_up, 0u);
   down.finish();
   EXPECT_EQ(down.accepted_false(), 0u);
-  std::printf("{\"lines\":%u,\"rerequests\":%u,\"frames_sent\":%llu,\"frames_dropped\":%llu,\"frames_corrupted\":%llu,\"corrupt_accepted\":%llu,\"sim_seconds\":%.1f}\n",
-              downloader.received(), downloader.rerequests(), static_cast<unsigned long long>(down.frames_sent()),
-              static_cast<unsigned long long>(down.frames_dropped()), static_cast<unsigned long long>(down.frames_corrupted()),
-              static_cast<unsigned long long>(down.accepted_false()), now_ms / 1000.0);
+  std::printf(
+      "{\"lines\":%u,\"rerequests\":%u,\"frames_sent\":%llu,\"frames_dropped\":%llu,\"frames_corrupted\":%llu,"
+      "\"corrupt_accepted\":%llu,\"sim_seconds\":%.1f}\n",
+      downloader.received(), downloader.rerequests(), static_cast<unsigned long long>(down.frames_sent()),
+      static_cast<unsigned long long>(down.frames_dropped()), static_cast<unsigned long long>(down.frames_corrupted()),
+      static_cast<unsigned long long>(down.accepted_false()), now_ms / 1000.0);
 }
 
 }  // namespace

@@ -7,7 +7,8 @@ namespace qr {
 namespace {
 
 constexpr uint8_t m(Mode mode) { return index(mode); }
-constexpr Mode kAllModes[] = {Mode::safe, Mode::panic, Mode::manual, Mode::calibration, Mode::yaw_control, Mode::full_control};
+constexpr Mode kAllModes[] = {Mode::safe,        Mode::panic,       Mode::manual,
+                              Mode::calibration, Mode::yaw_control, Mode::full_control};
 
 struct Safety : ::testing::Test {
   SafetyLimits limits = safety_limits(wire::ParameterValues{});
@@ -67,7 +68,8 @@ TEST_F(Safety, SafeIsReachableFromEveryModeFlightModesThroughPanic) {
     enter(mode);
     if (mode != Mode::calibration && mode != Mode::safe) fly(500);
     EXPECT_EQ(machine.request(m(Mode::safe), s), NackReason::none);
-    const bool flying = mode == Mode::manual || mode == Mode::yaw_control || mode == Mode::full_control || mode == Mode::panic;
+    const bool flying = mode == Mode::manual || mode == Mode::yaw_control || mode == Mode::full_control ||
+                        mode == Mode::panic;
     EXPECT_EQ(machine.mode(), flying ? Mode::panic : Mode::safe) << "from mode " << int(m(mode));
     run_for(limits.panic_hold_us + limits.panic_ramp_us + 1000);
     EXPECT_EQ(machine.mode(), Mode::safe) << "from mode " << int(m(mode));

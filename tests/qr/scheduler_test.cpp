@@ -24,13 +24,13 @@ struct TestContext {
   bool use_b = false;
   uint32_t runs[kTaskCount] = {};
   uint32_t work_us[kTaskCount] = {};
-  uint32_t overrun_on_run = 0;   // run number of task 0 that takes overrun_us more
+  uint32_t overrun_on_run = 0;  // run number of task 0 that takes overrun_us more
   uint32_t overrun_us = 0;
   bool switch_to_b_in_task = false;  // a task changes the mode, as the link task would
   uint16_t slow_divider = 10;        // the slow task's rate, as a parameter would set it
   std::vector<uint32_t> slow_ticks;  // the ticks (counted from 0) the slow task ran on
   uint32_t tick = 0;
-  uint8_t running_seen = kNoTask;    // what the scheduler said was running, seen from task 1
+  uint8_t running_seen = kNoTask;  // what the scheduler said was running, seen from task 1
   const void* scheduler = nullptr;
   void (*on_other)(TestContext&) = nullptr;
   std::deque<uint8_t> rx;
@@ -50,7 +50,9 @@ struct TestContext {
   uint8_t leds() const { return 0; }
   bool running() const { return true; }
   template <class Stats>
-  void account(const TickReport& r, const Stats&) { last_report = r; }
+  void account(const TickReport& r, const Stats&) {
+    last_report = r;
+  }
   TickReport last_report;
 
   void work(int id) {
@@ -79,8 +81,8 @@ struct SchedulerTest : ::testing::Test {
 
 TEST_F(SchedulerTest, OverrunCountsOneMissAndNextPeriodStartsOnTime) {
   context.work_us[0] = kPeriodUs / 10;
-  context.overrun_on_run = 6;              // the 6th tick runs ...
-  context.overrun_us = kPeriodUs;          // ... 1.1 periods: it runs into the next kick
+  context.overrun_on_run = 6;      // the 6th tick runs ...
+  context.overrun_us = kPeriodUs;  // ... 1.1 periods: it runs into the next kick
   Scheduler scheduler(board, context);
   for (int i = 0; i < 10; ++i) scheduler.tick();
 

@@ -30,7 +30,7 @@ struct UnknownModeTest : ::testing::Test {
     const wire::FrameBytes f = wire::encode(wire::ModeChange{seq, static_cast<Mode>(mode)});
     board.rx.insert(board.rx.end(), f.bytes, f.bytes + f.size);
     board.rx.insert(board.rx.end(), neutral.bytes, neutral.bytes + neutral.size);  // the heartbeat
-    for (uint32_t t = 0; t < 20000; t += kPeriodUs) scheduler.tick();  // 20 ms
+    for (uint32_t t = 0; t < 20000; t += kPeriodUs) scheduler.tick();              // 20 ms
     for (uint8_t b : board.tx) {
       pc.push(b, [&](const wire::Frame& frame) {
         wire::Nack nack;

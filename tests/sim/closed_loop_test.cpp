@@ -18,7 +18,8 @@
 namespace {
 
 qrsim::ScenarioResult fly(const std::string& name, double seconds = 0, uint64_t seed = 1,
-                          const sim::VehicleParams& vehicle = sim::default_vehicle(), const std::string& label = "in4073") {
+                          const sim::VehicleParams& vehicle = sim::default_vehicle(),
+                          const std::string& label = "in4073") {
   qrsim::ScenarioOptions options;
   options.name = name;
   options.seconds = seconds;
@@ -93,7 +94,8 @@ TEST(ClosedLoop, PanicEndsInSafeWithEnginesStill) {
 
 TEST(ClosedLoop, SameSeedSameFlight) {
   const qrsim::ScenarioResult a = fly("disturbance", 1.5, 7), b = fly("disturbance", 1.5, 7);
-  for (const char* figure : {"att_rms_deg_truth", "est_err_rms_deg", "peak_error_deg", "height_m_end", "battery_v_end"}) {
+  for (const char* figure :
+       {"att_rms_deg_truth", "est_err_rms_deg", "peak_error_deg", "height_m_end", "battery_v_end"}) {
     EXPECT_EQ(a.figure(figure), b.figure(figure)) << figure;
   }
 }
@@ -174,7 +176,8 @@ TEST(ClosedLoop, SeededSweepOfVehiclesStaysStable) {
     vehicle.motor_tau_up_s = v.tau_up;
     vehicle.motor_tau_down_s = v.tau_up * 5 / 3;
     char label[96];
-    std::snprintf(label, sizeof label, "in4073 mass x%.2f inertia x%.2f lag %.0f ms", v.mass, v.inertia, v.tau_up * 1000);
+    std::snprintf(label, sizeof label, "in4073 mass x%.2f inertia x%.2f lag %.0f ms", v.mass, v.inertia,
+                  v.tau_up * 1000);
     const qrsim::ScenarioResult r = fly("disturbance", 3, 100 + i, vehicle, label);
     EXPECT_TRUE(r.error.empty()) << label << ": " << r.error;
     EXPECT_EQ(r.final_mode, "full") << label;

@@ -250,8 +250,8 @@ TEST(Plant, VehicleFileErrorsAreReported) {
   EXPECT_FALSE(sim::parse_vehicle(text + "\nmass_kg = 2\n", v, error));
   EXPECT_NE(error.find("given twice"), std::string::npos) << error;
   const size_t at = text.find("arm_m = ");
-  EXPECT_FALSE(sim::parse_vehicle(text.substr(0, at) + "arm_m = 0.2x\n" + text.substr(text.find('\n', at) + 1), v,
-                                  error));
+  EXPECT_FALSE(
+      sim::parse_vehicle(text.substr(0, at) + "arm_m = 0.2x\n" + text.substr(text.find('\n', at) + 1), v, error));
   EXPECT_NE(error.find("not a number"), std::string::npos) << error;
   EXPECT_FALSE(sim::parse_vehicle(text.substr(0, at) + text.substr(text.find('\n', at) + 1), v, error));
   EXPECT_NE(error.find("missing parameter `arm_m`"), std::string::npos) << error;

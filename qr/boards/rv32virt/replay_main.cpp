@@ -13,7 +13,8 @@ template <uint32_t Hz>
 int replay(const rv32virt::Recording& recording) {
   using Chain = qr::FlightChain<qr::chain::FixedNumbers, Hz>;
   static Chain chain;  // large: not on the stack
-  static qr::chain::ChainReplay<Chain> test_mode(chain, recording.count() == 0 ? qr::chain::ChainReplay<Chain>::kPeriodUs : recording.time_us(0));
+  static qr::chain::ChainReplay<Chain> test_mode(
+      chain, recording.count() == 0 ? qr::chain::ChainReplay<Chain>::kPeriodUs : recording.time_us(0));
   rv32virt::puts("time_us,mode");
   for (const auto& column : qr::chain::kReplayColumns<Chain>) {
     rv32virt::putc(',');

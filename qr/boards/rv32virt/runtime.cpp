@@ -70,8 +70,7 @@ void exit(int code) {
     puts("\nrv32virt: stack overflow (canary overwritten)\n");
     code = code != 0 ? code : 3;
   }
-  *kTestDevice = code == 0 ? kFinisherPass
-                           : (static_cast<uint32_t>(code) << 16) | kFinisherFail;
+  *kTestDevice = code == 0 ? kFinisherPass : (static_cast<uint32_t>(code) << 16) | kFinisherFail;
   for (;;) {
   }
 }

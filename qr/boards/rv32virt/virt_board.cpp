@@ -17,8 +17,8 @@ constexpr uint32_t kMieTimer = 1u << 7, kMieExternal = 1u << 11, kMstatusMie = 1
 wire::ByteRing<256> g_rx;
 volatile uint32_t g_rx_overruns = 0;
 volatile uint32_t g_kicks = 0;
-volatile uint32_t g_kick_time_us = 0;    // time of the last kick, µs, wraps like now_us
-volatile uint32_t g_kick_mtime_lo = 0;   // mtime (low word) of the last kick
+volatile uint32_t g_kick_time_us = 0;   // time of the last kick, µs, wraps like now_us
+volatile uint32_t g_kick_mtime_lo = 0;  // mtime (low word) of the last kick
 uint64_t g_next_kick_mtime = 0;
 uint32_t g_period_ticks = 0;
 uint32_t g_period_us = 0;
@@ -78,9 +78,9 @@ VirtBoard::VirtBoard(uint32_t control_hz) : recording_(reinterpret_cast<const ui
   g_period_us = 1000000u / control_hz;
 
   volatile uint8_t* uart = &reg<uint8_t>(map::kUart);
-  uart[kUartFcr] = 0x07;  // FIFOs on and cleared
-  uart[kUartMcr] = 0x08;  // OUT2: the 16550's interrupt line enable
-  uart[kUartIer] = 0x01;  // interrupt on received data
+  uart[kUartFcr] = 0x07;                              // FIFOs on and cleared
+  uart[kUartMcr] = 0x08;                              // OUT2: the 16550's interrupt line enable
+  uart[kUartIer] = 0x01;                              // interrupt on received data
   reg<uint32_t>(map::kPlic + 4 * map::kUartIrq) = 1;  // priority
   reg<uint32_t>(map::kPlicEnable) = 1u << map::kUartIrq;
   reg<uint32_t>(map::kPlicThreshold) = 0;
@@ -135,9 +135,7 @@ qr::ControlInput VirtBoard::recorded_sticks() const {
   return recording_.at((g_kicks - first_kick_) % recording_.count()).sticks;
 }
 
-bool VirtBoard::recording_ended() const {
-  return recording_.valid() && g_kicks - first_kick_ >= recording_.count();
-}
+bool VirtBoard::recording_ended() const { return recording_.valid() && g_kicks - first_kick_ >= recording_.count(); }
 
 bool VirtBoard::serial_read(uint8_t& byte) {
   barrier();

@@ -11,9 +11,9 @@ namespace qrsim {
 
 struct ManoeuvreStep {
   const ScenarioSpec& spec;
-  double since;   // s since the manoeuvre began
-  bool first;     // the manoeuvre's first control period
-  Sticks& sticks; // in: the hover sticks (lift held by the pilot); out: what the pilot holds
+  double since;    // s since the manoeuvre began
+  bool first;      // the manoeuvre's first control period
+  Sticks& sticks;  // in: the hover sticks (lift held by the pilot); out: what the pilot holds
   Pilot& pilot;
   sim::Quadrotor& plant;
   const wire::ParameterValues& parameters;  // the QR's, as the pilot set them

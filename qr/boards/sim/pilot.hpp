@@ -20,16 +20,16 @@ using Sticks = wire::Control;
 
 // What the console knows about the QR, from telemetry and replies.
 struct ConsoleView {
-  bool heard = false;            // any telemetry yet
+  bool heard = false;  // any telemetry yet
   wire::Mode mode = wire::Mode::safe;
   uint8_t flags = 0;
-  uint64_t attitude_at_us = 0;   // when the last attitude frame was sent (its tick)
+  uint64_t attitude_at_us = 0;  // when the last attitude frame was sent (its tick)
   int16_t phi_e4 = 0, theta_e4 = 0, psi_e4 = 0;
   uint32_t acks = 0;
   uint32_t nacks = 0;
   wire::NackReason last_nack = wire::NackReason::none;
   uint32_t requests_given_up = 0;
-  std::string debug_text;        // everything the QR said, lines joined
+  std::string debug_text;  // everything the QR said, lines joined
 };
 
 class Pilot {

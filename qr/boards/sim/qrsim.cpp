@@ -199,7 +199,8 @@ int main(int argc, char** argv) {
             std::printf("  %-26s %.4g\n", f.name.c_str(), f.value);
           }
         }
-        for (const qrsim::CheckResult& c : result.checks) std::printf("  [%s] %s\n", c.pass ? "ok" : "FAIL", c.band.c_str());
+        for (const qrsim::CheckResult& c : result.checks)
+          std::printf("  [%s] %s\n", c.pass ? "ok" : "FAIL", c.band.c_str());
       }
       return result.pass ? 0 : 1;
     }

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <ctime>
 #include <cstdio>
+#include <ctime>
 #include <numbers>
 
 #include <qr/boards/sim/manoeuvres.hpp>
@@ -23,9 +23,9 @@ constexpr double kDeg = 180 / std::numbers::pi;
 // limit; a flight that overruns one fails with the phase's name as its error.
 enum class Phase : uint8_t { power_up, calibrate, arm, take_off, settle, manoeuvre };
 
-constexpr double kHoverHeight = 1.5;     // m, centre of mass above the ground
-constexpr double kSettleSeconds = 1.5;   // steady hover before the manoeuvre
-constexpr double kPreflightLimit = 20;   // s
+constexpr double kHoverHeight = 1.5;    // m, centre of mass above the ground
+constexpr double kSettleSeconds = 1.5;  // steady hover before the manoeuvre
+constexpr double kPreflightLimit = 20;  // s
 
 // The pilot's thumb on the lift stick, watching the vehicle: lift for the weight (what the pilot
 // knows this vehicle hovers at, for its battery now) corrected for the height and climb rate
@@ -207,7 +207,9 @@ ScenarioResult run_scenario(const ScenarioOptions& options) {
       const sim::Euler e = sim::to_euler(ps.attitude);
       const auto& ch = qr->firmware.chain();
       const qr::EngineCommand& eng = qr->board.engines();
-      std::fprintf(trace, "%.3f,%u,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%u,%u,%u,%u,%.3f,%.3f,%.3f,%.3f,%d,%d,%d\n",
+      std::fprintf(trace,
+                   "%.3f,%u,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%u,%u,%u,%u,%.3f,%."
+                   "3f,%.3f,%.3f,%d,%d,%d\n",
                    t, mode, e.roll * kDeg, e.pitch * kDeg, e.yaw * kDeg, ch.roll_e4() * 1e-4 * kDeg,
                    ch.pitch_e4() * 1e-4 * kDeg, ch.yaw_e4() * 1e-4 * kDeg, ch.roll_setpoint_e4() * 1e-4 * kDeg,
                    ch.pitch_setpoint_e4() * 1e-4 * kDeg, ps.rate.x, ps.rate.y, ps.rate.z, ch.p_e3() * 1e-3,

@@ -77,7 +77,7 @@ struct CheckResult {
 struct ScenarioResult {
   std::string scenario;
   std::string vehicle;
-  std::string error;        // non-empty: the flight never got to its manoeuvre
+  std::string error;  // non-empty: the flight never got to its manoeuvre
   std::string final_mode;
   std::vector<Figure> figures;  // in print order
   std::vector<CheckResult> checks;

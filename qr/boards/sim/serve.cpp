@@ -99,7 +99,8 @@ int serve(const ServeOptions& options) {
       next_status_us += 1000000;
       const sim::PlantState& s = qr->world.plant().state();
       const sim::Euler e = sim::to_euler(s.attitude);
-      std::fprintf(stderr, "qrsim: t=%.0fs mode=%u height=%.2fm roll=%.1f pitch=%.1f yaw=%.1f deg battery=%.2fV misses=%u\n",
+      std::fprintf(stderr,
+                   "qrsim: t=%.0fs mode=%u height=%.2fm roll=%.1f pitch=%.1f yaw=%.1f deg battery=%.2fV misses=%u\n",
                    static_cast<double>(now) * 1e-6, static_cast<unsigned>(qr->firmware.mode()), -s.position.z,
                    e.roll * 57.29578, e.pitch * 57.29578, e.yaw * 57.29578, qr->world.plant().battery_volts(),
                    static_cast<unsigned>(qr->scheduler.stats().deadline_misses));

@@ -14,8 +14,8 @@ struct ServeOptions {
   bool stdio = false;  // the line on stdin/stdout instead of a pseudo terminal
   uint64_t seed = 1;
   sim::VehicleParams vehicle = sim::default_vehicle();
-  double seconds = 0;  // > 0: stop after this much time (for tests); 0: until exit or a signal
-  bool status = false; // a status line on stderr once a second
+  double seconds = 0;   // > 0: stop after this much time (for tests); 0: until exit or a signal
+  bool status = false;  // a status line on stderr once a second
 };
 
 // Runs until the firmware stops (the console sent exit), a signal, or `seconds`. Returns the

@@ -17,9 +17,7 @@ qr::SensorSample to_sensor_sample(const sim::SensorReading& reading) {
   return s;
 }
 
-SimBoard::SimBoard(sim::World& world) : world_(world) {
-  sample_ = to_sensor_sample(world_.sample());
-}
+SimBoard::SimBoard(sim::World& world) : world_(world) { sample_ = to_sensor_sample(world_.sample()); }
 
 uint32_t SimBoard::kicks() const {
   const uint64_t t = real_time_ ? sim_at_wall_start_us_ + wall_us() : world_.now_us();
@@ -41,13 +39,12 @@ uint32_t SimBoard::wait_kick(uint32_t seen) {
   return kick;
 }
 
-bool SimBoard::serial_read(uint8_t& byte) {
-  return to_qr_.receive(world_.now_us() * 1000, byte);
-}
+bool SimBoard::serial_read(uint8_t& byte) { return to_qr_.receive(world_.now_us() * 1000, byte); }
 
 uint32_t SimBoard::cycles() const {
   return static_cast<uint32_t>(
-      std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch()).count());
+      std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
+          .count());
 }
 
 void SimBoard::set_engines(qr::EngineCommand engines) {

@@ -184,13 +184,13 @@ class AttitudeEstimator {
     yaw_rate_ = rate[2];
     const Rate q = rate[1] - pitch_.bias();
     const EulerTerms& k = euler_;
-    const Rate across =
-        N::template convert_sat<Rate>(fx::mul_wide(q, k.sin_roll) + fx::mul_wide(yaw_rate_, k.cos_roll));
+    const Rate across = N::template convert_sat<Rate>(fx::mul_wide(q, k.sin_roll) +
+                                                      fx::mul_wide(yaw_rate_, k.cos_roll));
     const Rate roll_coupling = product_sat<Rate>(across, k.tan_pitch);
     // |q (cos - 1)| + |r sin| <= 10 x 1/2 + 9.5 x 5/6 rad/s (angles clamped to 1 rad, filtered
     // gyro within 9.5 rad/s, bias within 0.5): inside the Rate format, no saturation needed.
-    const Rate pitch_coupling =
-        N::template convert<Rate>(fx::mul_wide(q, k.cos_roll - kOne) - fx::mul_wide(yaw_rate_, k.sin_roll));
+    const Rate pitch_coupling = N::template convert<Rate>(fx::mul_wide(q, k.cos_roll - kOne) -
+                                                          fx::mul_wide(yaw_rate_, k.sin_roll));
     roll_.update(rate[0], roll_coupling, roll_from_accel_);
     pitch_.update(rate[1], pitch_coupling, pitch_from_accel_);
     yaw_.add(fx::mul_wide(yaw_rate_, kDt));

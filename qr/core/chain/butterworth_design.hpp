@@ -20,9 +20,9 @@
 namespace qr::chain {
 
 struct ButterworthDesign {
-  int order = 0;                 // 1 or 2; 0 means "no design" (bad arguments)
-  double b[3] = {0, 0, 0};       // b[2] is 0 for order 1
-  double a[3] = {1, 0, 0};       // a[0] is always 1, a[2] is 0 for order 1
+  int order = 0;            // 1 or 2; 0 means "no design" (bad arguments)
+  double b[3] = {0, 0, 0};  // b[2] is 0 for order 1
+  double a[3] = {1, 0, 0};  // a[0] is always 1, a[2] is 0 for order 1
   constexpr bool valid() const { return order != 0; }
 };
 

@@ -89,7 +89,7 @@ inline constexpr typename N::Thrust kMaxIntegralMoment = typename N::Thrust(200.
 template <class N, uint32_t SampleHz = kControlHz>
 class AttitudeController {
  public:
-  using P1 = typename N::template Fixed<kP1Frac>;  // 1/s
+  using P1 = typename N::template Fixed<kP1Frac>;          // 1/s
   using P2 = typename N::template Fixed<kRollPitchDFrac>;  // thrust units per rad/s (Q<8>: see moment())
   using Thrust = typename N::Thrust;
   using Rate = typename N::Rate;

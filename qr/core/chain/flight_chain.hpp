@@ -29,8 +29,8 @@
 #include <qr/core/chain/pilot_setpoints.hpp>
 #include <qr/core/chain/sensor_calibration.hpp>
 #include <qr/core/chain/sensor_filters.hpp>
-#include <qr/core/rate.hpp>
 #include <qr/core/flight_types.hpp>
+#include <qr/core/rate.hpp>
 
 namespace qr {
 
@@ -218,7 +218,7 @@ class FlightChain {
   chain::AttitudeController<Num, SampleHz> tilt_[2];  // roll, pitch
   chain::EngineMixer<Num> mixer_;
   Thrust roll_moment_{}, pitch_moment_{}, yaw_moment_{};  // the controllers' latest outputs
-  bool attitude_ran_ = false, yaw_ran_ = false;          // ... computed in this tick
+  bool attitude_ran_ = false, yaw_ran_ = false;           // ... computed in this tick
   chain::Moments<Thrust> moments_{};                      // what the last mix asked for
   EngineCommand engines_{};
   SensorSample sample_{};

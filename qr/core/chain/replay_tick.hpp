@@ -70,7 +70,7 @@ class ChainReplay {
   uint16_t log_divider() const { return 1; }
 
   // ---- the scheduler's side ----
-  TaskSet task_set() const { return kFlightModes<ChainReplay>[index(mode_)].tasks; }
+  TaskSet task_set() const { return flight_modes<ChainReplay>()[index(mode_)].tasks; }
   void begin_tick(uint32_t, const SensorSample&) {}
   uint32_t rx_space() const { return 0; }
   void receive(uint8_t) {}
@@ -102,7 +102,7 @@ class ChainReplay {
 
   void enter(wire::Mode m) {
     mode_ = m;
-    if (kFlightModes<ChainReplay>[index(m)].enter != nullptr) kFlightModes<ChainReplay>[index(m)].enter(*this);
+    if (flight_modes<ChainReplay>()[index(m)].enter != nullptr) flight_modes<ChainReplay>()[index(m)].enter(*this);
   }
 
   Chain& chain_;

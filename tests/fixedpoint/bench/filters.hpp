@@ -9,7 +9,6 @@ namespace bench {
 inline constexpr double kLowpass1[] = {0.0863640270, 0.0863640270, -0.8272719460};
 
 // b0, b1, b2, a1, a2 of the 2nd-order Butterworth low-pass.
-inline constexpr double kLowpass2[] = {0.0078202080, 0.0156404161, 0.0078202080, -1.7347257688,
-                                       0.7660066009};
+inline constexpr double kLowpass2[] = {0.0078202080, 0.0156404161, 0.0078202080, -1.7347257688, 0.7660066009};
 
 }  // namespace bench

@@ -28,18 +28,16 @@ struct Lowpass2 {
   fx::Iir2State<Signal> state;
   fx::Iir2Coefficients<Coefficient> coefficients;
 };
-constinit Lowpass1 g_lowpass1{
-    {}, {Coefficient(kLowpass1[0]), Coefficient(kLowpass1[1]), Coefficient(kLowpass1[2])}};
+constinit Lowpass1 g_lowpass1{{}, {Coefficient(kLowpass1[0]), Coefficient(kLowpass1[1]), Coefficient(kLowpass1[2])}};
 constinit Lowpass2 g_lowpass2{{},
-                              {Coefficient(kLowpass2[0]), Coefficient(kLowpass2[1]),
-                               Coefficient(kLowpass2[2]), Coefficient(kLowpass2[3]),
-                               Coefficient(kLowpass2[4])}};
+                              {Coefficient(kLowpass2[0]), Coefficient(kLowpass2[1]), Coefficient(kLowpass2[2]),
+                               Coefficient(kLowpass2[3]), Coefficient(kLowpass2[4])}};
 
 // The other way a filter can be written: a design fixed at compile time, coefficients as
 // immediates in the code, only the state in RAM.
-constexpr fx::Iir2Coefficients<Coefficient> kLowpass2Const{
-    Coefficient(kLowpass2[0]), Coefficient(kLowpass2[1]), Coefficient(kLowpass2[2]),
-    Coefficient(kLowpass2[3]), Coefficient(kLowpass2[4])};
+constexpr fx::Iir2Coefficients<Coefficient> kLowpass2Const{Coefficient(kLowpass2[0]), Coefficient(kLowpass2[1]),
+                                                           Coefficient(kLowpass2[2]), Coefficient(kLowpass2[3]),
+                                                           Coefficient(kLowpass2[4])};
 constinit fx::Iir2State<Signal> g_lowpass2_const_state{};
 
 [[gnu::noipa]] Signal add(Signal a, Signal b) { return a + b; }
@@ -50,9 +48,7 @@ constinit fx::Iir2State<Signal> g_lowpass2_const_state{};
 [[gnu::noipa]] Unit sin(Signal a, Signal) { return fx::sin<Unit>(a); }
 [[gnu::noipa]] Signal iir1(Signal x, Lowpass1& f) { return fx::iir1_step(f.state, f.coefficients, x); }
 [[gnu::noipa]] Signal iir2(Signal x, Lowpass2& f) { return fx::iir2_step(f.state, f.coefficients, x); }
-[[gnu::noipa]] Signal iir2_const(Signal x, fx::Iir2State<Signal>& s) {
-  return fx::iir2_step(s, kLowpass2Const, x);
-}
+[[gnu::noipa]] Signal iir2_const(Signal x, fx::Iir2State<Signal>& s) { return fx::iir2_step(s, kLowpass2Const, x); }
 
 // Baselines: the same signatures doing nothing (the result is already in a0).
 template <typename Out>

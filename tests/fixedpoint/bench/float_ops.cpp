@@ -20,10 +20,10 @@ struct Lowpass2 {
 };
 constexpr float f(double v) { return static_cast<float>(v); }
 constinit Lowpass1 g_lowpass1{{}, {f(kLowpass1[0]), f(kLowpass1[1]), f(kLowpass1[2])}};
-constinit Lowpass2 g_lowpass2{
-    {}, {f(kLowpass2[0]), f(kLowpass2[1]), f(kLowpass2[2]), f(kLowpass2[3]), f(kLowpass2[4])}};
-constexpr fx::Iir2Coefficients<float> kLowpass2Const{f(kLowpass2[0]), f(kLowpass2[1]), f(kLowpass2[2]),
-                                                     f(kLowpass2[3]), f(kLowpass2[4])};
+constinit Lowpass2 g_lowpass2{{},
+                              {f(kLowpass2[0]), f(kLowpass2[1]), f(kLowpass2[2]), f(kLowpass2[3]), f(kLowpass2[4])}};
+constexpr fx::Iir2Coefficients<float> kLowpass2Const{f(kLowpass2[0]), f(kLowpass2[1]), f(kLowpass2[2]), f(kLowpass2[3]),
+                                                     f(kLowpass2[4])};
 constinit fx::Iir2State<float> g_lowpass2_const_state{};
 
 [[gnu::noipa]] float add(float a, float b) { return a + b; }
@@ -34,9 +34,7 @@ constinit fx::Iir2State<float> g_lowpass2_const_state{};
 [[gnu::noipa]] float sin(float a, float) { return flt::sin(a); }
 [[gnu::noipa]] float iir1(float x, Lowpass1& s) { return fx::iir1_step(s.state, s.coefficients, x); }
 [[gnu::noipa]] float iir2(float x, Lowpass2& s) { return fx::iir2_step(s.state, s.coefficients, x); }
-[[gnu::noipa]] float iir2_const(float x, fx::Iir2State<float>& s) {
-  return fx::iir2_step(s, kLowpass2Const, x);
-}
+[[gnu::noipa]] float iir2_const(float x, fx::Iir2State<float>& s) { return fx::iir2_step(s, kLowpass2Const, x); }
 
 [[gnu::noipa]] float nothing(float a, float) { return a; }
 template <typename State>

@@ -1,8 +1,8 @@
 // Operands for the measured loops, the same for both number types, and the loop that counts.
 #pragma once
 
-#include <qr/boards/rv32virt/devboard.hpp>
 #include <stdint.h>
+#include <qr/boards/rv32virt/devboard.hpp>
 
 #include "ops.hpp"
 
