@@ -7,10 +7,6 @@
 
 namespace qr {
 
-namespace flight_text {
-inline constexpr const char* kPanicCauses[] = {"", "requested", "link lost", "battery low", "tilt"};
-}  // namespace flight_text
-
 template <SignalChain Chain>
 void Flight<Chain>::run_link() {
   uint8_t byte = 0;
@@ -80,7 +76,7 @@ void Flight<Chain>::run_safety() {
   say(wire::mode_name(now));
   if (now == Mode::panic) {
     say(" (");
-    say(flight_text::kPanicCauses[static_cast<uint8_t>(safety_.panic_cause())]);
+    say(kPanicCauseNames[static_cast<uint8_t>(safety_.panic_cause())]);
     say(")");
   }
   say("\n");

@@ -11,7 +11,12 @@
 
 namespace qr {
 
-enum class PanicCause : uint8_t { none = 0, requested, link_lost, battery_low, tilt };
+enum class PanicCause : uint8_t { none = 0, requested, link_lost, battery_low, tilt, count };
+
+// As the debug text says them ("mode: panic (link lost)").
+inline constexpr const char* kPanicCauseNames[] = {"", "requested", "link lost", "battery low", "tilt"};
+static_assert(sizeof(kPanicCauseNames) / sizeof(kPanicCauseNames[0]) == static_cast<uint8_t>(PanicCause::count),
+              "one name per panic cause");
 
 // The machine's thresholds: all but the battery trip time are parameters, so they come from the
 // parameter table (safety_limits below), never from a second set of defaults here.
