@@ -1,7 +1,6 @@
 // docs/architecture.md prints the task table and the mode table: both must be the code's.
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -11,6 +10,8 @@
 #include <qr/core/chain/flight_chain.hpp>
 #include <qr/core/flight.hpp>
 
+#include "../support/source_text.hpp"
+
 namespace qr {
 namespace {
 
@@ -18,11 +19,11 @@ using Firmware = Flight<FixedChain>;
 
 // The lines of one "## " section of the page.
 std::vector<std::string> section(const std::string& title) {
-  std::ifstream doc(QR_ARCHITECTURE_DOC);
-  EXPECT_TRUE(doc.good()) << "cannot read " << QR_ARCHITECTURE_DOC;
+  const std::vector<std::string> all = test_support::lines_of(QR_ARCHITECTURE_DOC);
+  EXPECT_FALSE(all.empty()) << "cannot read " << QR_ARCHITECTURE_DOC;
   std::vector<std::string> lines;
   bool inside = false;
-  for (std::string line; std::getline(doc, line);) {
+  for (const std::string& line : all) {
     if (line.rfind("## ", 0) == 0) inside = line == "## " + title;
     else if (inside) lines.push_back(line);
   }

@@ -9,6 +9,8 @@
 
 #include <qr/core/flight.hpp>
 
+#include "../support/source_text.hpp"
+
 #include "scripted_chain.hpp"
 
 namespace qr {
@@ -17,11 +19,8 @@ namespace {
 using Firmware = Flight<test::ScriptedChain>;
 
 std::vector<std::string> document_lines() {
-  std::ifstream doc(QR_PROTOCOL_DOC);
-  EXPECT_TRUE(doc.good()) << "cannot read " << QR_PROTOCOL_DOC;
-  std::vector<std::string> lines;
-  std::string line;
-  while (std::getline(doc, line)) lines.push_back(line);
+  const std::vector<std::string> lines = test_support::lines_of(QR_PROTOCOL_DOC);
+  EXPECT_FALSE(lines.empty()) << "cannot read " << QR_PROTOCOL_DOC;
   return lines;
 }
 

@@ -1,10 +1,12 @@
-// Reading our own sources in tests that check the freestanding rules.
+// Reading our own files in tests: the sources (freestanding rules) and the documents (checked
+// against the code).
 #pragma once
 
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace test_support {
 
@@ -29,6 +31,14 @@ inline std::string code_of(const std::filesystem::path& file) {
     }
   }
   return code;
+}
+
+// The lines of a file; a file that cannot be read has none (the caller's checks then fail).
+inline std::vector<std::string> lines_of(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
 }
 
 }  // namespace test_support
