@@ -46,7 +46,10 @@ namespace wire {
   ROW(log_divider, 17, 0, 1, 1000, 10, "control periods", "write a log line every this many periods") \
   ROW(roll_pitch_i, 18, 4, 0, 16000, 1280, "thrust units per rad", "roll/pitch rate loop integral gain") \
   ROW(roll_pitch_d, 19, 8, 0, 5120, 1280, "thrust units per rad/s^2", \
-      "roll/pitch rate loop derivative gain (on the measured rate)")
+      "roll/pitch rate loop derivative gain (on the measured rate)") \
+  ROW(tilt_time_ms, 20, 0, 0, 2000, 500, "ms", \
+      "tilt beyond tilt_limit_mrad for this long in yaw/full control: panic (an upset that recovers sooner " \
+      "flies on)")
 
 enum class ParamId : uint8_t {
 #define WIRE_PARAMETER_ENUMERATOR(name, id, frac_bits, min, max, default_value, unit, meaning) name = id,

@@ -25,17 +25,25 @@ constexpr Guard kGuards[] = {
 };
 
 // Watchdogs that end a flight: each is checked every tick in the modes it applies to.
+// Conditions that count only when they last: a load spike is no empty battery, an upset that
+// recovers is no lost vehicle.
+struct Lasting {
+  bool battery_low;
+  bool tilt;
+};
+
 struct Watchdog {
   PanicCause cause;
-  bool (*tripped)(const Situation& s, const SafetyLimits& l, Mode m, bool battery_low_long);
+  bool (*tripped)(const Situation& s, const SafetyLimits& l, Mode m, const Lasting& lasting);
 };
 
 constexpr Watchdog kWatchdogs[] = {
     {PanicCause::link_lost, [](const Situation& s, const SafetyLimits& l, Mode,
-                               bool) { return s.now_us - s.last_frame_us > l.link_timeout_us; }},
-    {PanicCause::battery_low, [](const Situation&, const SafetyLimits&, Mode, bool low_long) { return low_long; }},
-    {PanicCause::tilt, [](const Situation& s, const SafetyLimits& l, Mode m,
-                          bool) { return rule(m).needs_attitude && s.tilt_mrad > l.tilt_limit_mrad; }},
+                               const Lasting&) { return s.now_us - s.last_frame_us > l.link_timeout_us; }},
+    {PanicCause::battery_low,
+     [](const Situation&, const SafetyLimits&, Mode, const Lasting& lasting) { return lasting.battery_low; }},
+    {PanicCause::tilt, [](const Situation&, const SafetyLimits&, Mode m,
+                          const Lasting& lasting) { return rule(m).needs_attitude && lasting.tilt; }},
 };
 
 uint16_t scale(uint16_t v, uint32_t num, uint32_t den) {
@@ -52,6 +60,7 @@ SafetyLimits safety_limits(const wire::ParameterValues& p) {
   l.battery_warn_mv = static_cast<uint16_t>(get(ParamId::battery_warning_mv));
   l.battery_panic_mv = static_cast<uint16_t>(get(ParamId::battery_panic_mv));
   l.tilt_limit_mrad = static_cast<int32_t>(get(ParamId::tilt_limit_mrad));
+  l.tilt_time_us = get(ParamId::tilt_time_ms) * 1000u;
   l.panic_level = static_cast<uint16_t>(get(ParamId::panic_level));
   l.panic_hold_us = get(ParamId::panic_hold_ms) * 1000u;
   l.panic_ramp_us = get(ParamId::panic_ramp_ms) * 1000u;
@@ -96,10 +105,14 @@ void SafetyMachine::supervise(const Situation& s) {
   if (below && !battery_low_) battery_low_since_us_ = s.now_us;
   battery_low_ = below;
   const bool battery_low_long = below && s.now_us - battery_low_since_us_ >= limits_.battery_trip_us;
+  const bool tilted = s.tilt_mrad > limits_.tilt_limit_mrad;
+  if (tilted && !tilted_) tilted_since_us_ = s.now_us;
+  tilted_ = tilted;
+  const Lasting lasting{battery_low_long, tilted && s.now_us - tilted_since_us_ >= limits_.tilt_time_us};
 
   if (rule(mode_).flies) {
     for (const Watchdog& w : kWatchdogs) {
-      if (w.tripped(s, limits_, mode_, battery_low_long)) {
+      if (w.tripped(s, limits_, mode_, lasting)) {
         enter_panic(w.cause, s);
         break;
       }

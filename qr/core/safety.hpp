@@ -25,7 +25,8 @@ struct SafetyLimits {
   uint16_t battery_panic_mv;
   uint16_t battery_warn_mv;
   int32_t tilt_limit_mrad;
-  uint16_t panic_level;  // engines hold at most this while panicking
+  uint32_t tilt_time_us;  // beyond the tilt limit for this long: lost, not upset
+  uint16_t panic_level;   // engines hold at most this while panicking
   uint32_t panic_hold_us;
   uint32_t panic_ramp_us;
   uint16_t idle;                      // no engine below this while lift > 0 in flight
@@ -95,6 +96,8 @@ class SafetyMachine {
   bool battery_warning_ = false;
   bool battery_low_ = false;
   uint32_t battery_low_since_us_ = 0;
+  bool tilted_ = false;
+  uint32_t tilted_since_us_ = 0;
   PanicCause panic_cause_ = PanicCause::none;
   uint32_t panic_start_us_ = 0;
   EngineCommand panic_from_;

@@ -251,7 +251,10 @@ TEST_F(FlightTest, TiltFromTheEstimatorPanicsFullControl) {
   sticks.lift = 500;
   run_ms(50);
   flight.chain().tilt = flight.safety().limits().tilt_limit_mrad + 1;
-  run_ms(5);
+  const uint32_t tilt_time_ms = flight.safety().limits().tilt_time_us / 1000u;
+  run_ms(tilt_time_ms - 5);
+  EXPECT_EQ(flight.mode(), Mode::full_control) << "an upset, not yet a lost vehicle";
+  run_ms(10);
   EXPECT_EQ(flight.mode(), Mode::panic);
 }
 

@@ -74,6 +74,17 @@ TEST(ClosedLoop, TorqueImpulseIsRejectedWithinASecond) {
   EXPECT_LT(r.figure("recovery_s"), 1.0);
 }
 
+// An upset past the 45° tilt limit that the controller can take back: the tilt watchdog waits its
+// tilt time (rule 9, docs/safety.md) and the vehicle recovers, judged on the truth, still flying.
+TEST(ClosedLoop, LargePushPastTheTiltLimitRecoversWithoutPanic) {
+  const qrsim::ScenarioResult r = fly("large-push");
+  expect_bands_hold(r);
+  EXPECT_GT(r.figure("max_tilt_deg"), 45.0) << "the push must take the vehicle past the tilt limit";
+  EXPECT_LT(r.figure("recovery_s"), 1.0);
+  EXPECT_EQ(r.final_mode, "full");
+  EXPECT_GT(r.figure("height_m_end"), 1.0) << "still flying, not on the ground";
+}
+
 TEST(ClosedLoop, LinkLossEndsInSafeWithEnginesStill) {
   const qrsim::ScenarioResult r = fly("link-loss");
   expect_bands_hold(r);
