@@ -1,9 +1,20 @@
+#include <qr/core/rate.hpp>
 #include <qr/core/safety.hpp>
 
 namespace qr {
 namespace {
 
 constexpr const wire::ModeSpec& rule(Mode m) { return wire::mode_spec(m); }
+
+// log2 of the control rate, rounded up: the battery filter's shift (time constant 1.02 s at 1 kHz
+// and at 500 Hz).
+constexpr int filter_shift(uint32_t hz) {
+  int k = 0;
+  while ((1u << k) < hz) ++k;
+  return k;
+}
+constexpr int kBatteryFilterShift = filter_shift(kControlHz);
+static_assert((1u << kBatteryFilterShift) >= kControlHz && kControlHz > (1u << kBatteryFilterShift) / 2);
 
 // A request into a mode other than safe/panic must pass every guard, in this order.
 struct Guard {
@@ -100,8 +111,21 @@ void SafetyMachine::calibration_finished() {
 }
 
 void SafetyMachine::supervise(const Situation& s) {
-  battery_warning_ = s.battery_mv < limits_.battery_warn_mv;
-  const bool below = s.battery_mv < limits_.battery_panic_mv;
+  // First-order low-pass, alpha = 2^-k per tick with 2^k the control rate rounded up to a power of
+  // two: a time constant of 1.02 s at 1 kHz and at 500 Hz. Starts at the first sample (no transient from zero).
+  const uint32_t sample_q8 = static_cast<uint32_t>(s.battery_mv) << 8;
+  if (battery_q8_ == 0) battery_q8_ = sample_q8;
+  battery_q8_ = static_cast<uint32_t>(
+      static_cast<int32_t>(battery_q8_) +
+      ((static_cast<int32_t>(sample_q8) - static_cast<int32_t>(battery_q8_)) >> kBatteryFilterShift));
+  const uint16_t measure = battery_measure_mv();
+  // The warning comes below its level and goes only clearly above it: no flicker on the edge.
+  if (measure < limits_.battery_warn_mv) {
+    battery_warning_ = true;
+  } else if (measure >= limits_.battery_warn_mv + limits_.battery_hysteresis_mv) {
+    battery_warning_ = false;
+  }
+  const bool below = measure < limits_.battery_panic_mv;
   if (below && !battery_low_) battery_low_since_us_ = s.now_us;
   battery_low_ = below;
   const bool battery_low_long = below && s.now_us - battery_low_since_us_ >= limits_.battery_trip_us;

@@ -29,8 +29,9 @@ struct SafetyLimits {
   uint16_t panic_level;   // engines hold at most this while panicking
   uint32_t panic_hold_us;
   uint32_t panic_ramp_us;
-  uint16_t idle;                      // no engine below this while lift > 0 in flight
-  uint32_t battery_trip_us = 100000;  // a dip shorter than this (a load spike) is not a panic
+  uint16_t idle;                         // no engine below this while lift > 0 in flight
+  uint32_t battery_trip_us = 100000;     // the battery measure below the panic level this long: panic
+  uint16_t battery_hysteresis_mv = 100;  // the warning ends only this far above its level
 };
 
 // The limits the parameters say (the defaults when `p` is default-constructed).
@@ -55,6 +56,10 @@ class SafetyMachine {
   bool stopped() const { return stopped_; }
   PanicCause panic_cause() const { return panic_cause_; }
   bool battery_warning() const { return battery_warning_; }
+  // What the battery rules judge, in mV: the voltage low-passed with a time constant of about a
+  // second, so a climb's sag of a few hundred ms (the pack's internal resistance under load) is
+  // not an empty battery.
+  uint16_t battery_measure_mv() const { return static_cast<uint16_t>(battery_q8_ >> 8); }
   SafetyLimits& limits() { return limits_; }
   const SafetyLimits& limits() const { return limits_; }
 
@@ -96,6 +101,7 @@ class SafetyMachine {
   bool battery_warning_ = false;
   bool battery_low_ = false;
   uint32_t battery_low_since_us_ = 0;
+  uint32_t battery_q8_ = 0;  // the battery measure: the voltage's one-second mean, mV x 256 (0: none yet)
   bool tilted_ = false;
   uint32_t tilted_since_us_ = 0;
   PanicCause panic_cause_ = PanicCause::none;
