@@ -79,14 +79,16 @@ TEST_F(Safety, SafeIsReachableFromEveryModeFlightModesThroughPanic) {
 
 // Rule 3
 TEST_F(Safety, LeavingSafeNeedsNeutralControls) {
+  // Each stick on its own, off centre by the least it can be, in either direction.
+  const ControlInput off_centre[] = {{1, 0, 0, 0},  {0, 1, 0, 0}, {0, -1, 0, 0}, {0, 0, 1, 0},
+                                     {0, 0, -1, 0}, {0, 0, 0, 1}, {0, 0, 0, -1}};
   for (Mode to : {Mode::manual, Mode::calibration, Mode::yaw_control, Mode::full_control}) {
-    s.controls = ControlInput{};
-    s.controls.roll = 5;
-    EXPECT_EQ(machine.request(m(to), s), NackReason::controls_not_neutral);
-    s.controls = ControlInput{};
-    s.controls.lift = 1;
-    EXPECT_EQ(machine.request(m(to), s), NackReason::controls_not_neutral);
-    EXPECT_EQ(machine.mode(), Mode::safe);
+    for (const ControlInput& c : off_centre) {
+      s.controls = c;
+      EXPECT_EQ(machine.request(m(to), s), NackReason::controls_not_neutral)
+          << "lift " << c.lift << " roll " << c.roll << " pitch " << c.pitch << " yaw " << c.yaw;
+      EXPECT_EQ(machine.mode(), Mode::safe);
+    }
   }
 }
 
@@ -177,6 +179,22 @@ TEST_F(Safety, LinkLossPanics) {
   run_for(2000, false);
   EXPECT_EQ(machine.mode(), Mode::panic);
   EXPECT_EQ(machine.panic_cause(), PanicCause::link_lost);
+}
+
+// With the lift stick at zero the pilot still flies: the next frame could lift off, so a flight mode
+// without a link ends whatever the lift.
+TEST_F(Safety, LinkLossPanicsEveryFlightModeWhateverTheLift) {
+  for (Mode mode : {Mode::manual, Mode::yaw_control, Mode::full_control}) {
+    SafetyMachine fresh{limits};
+    machine = fresh;
+    s.controls = ControlInput{};
+    s.engines = EngineCommand{};
+    at(1000);
+    enter(mode);
+    run_for(limits.link_timeout_us + 2000, false);
+    EXPECT_EQ(machine.mode(), Mode::panic) << "lift 0 in mode " << int(m(mode));
+    EXPECT_EQ(machine.panic_cause(), PanicCause::link_lost);
+  }
 }
 
 TEST_F(Safety, LinkLossInSafeStaysSafe) {
