@@ -49,7 +49,9 @@ namespace wire {
       "roll/pitch rate loop derivative gain (on the measured rate)") \
   ROW(tilt_time_ms, 20, 0, 0, 2000, 500, "ms", \
       "tilt beyond tilt_limit_mrad for this long in yaw/full control: panic (an upset that recovers sooner " \
-      "flies on)")
+      "flies on)") \
+  ROW(yaw_i, 21, 4, 0, 16000, 4800, "thrust units per rad", \
+      "yaw rate loop integral gain: holds the yaw rate at its set-point against the rotors' drag")
 
 enum class ParamId : uint8_t {
 #define WIRE_PARAMETER_ENUMERATOR(name, id, frac_bits, min, max, default_value, unit, meaning) name = id,

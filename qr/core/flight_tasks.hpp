@@ -50,7 +50,7 @@ inline constexpr Task<Flight> kFlightTaskTable[kFlightTaskCount] = {
      Flight::ChainType::kAccelDivider, 0, 900},
     {wire::kTaskNames[kEstimatorTask], [](Flight& f) { f.chain().estimate(); }, 1, 0, 1300},
     {wire::kTaskNames[kAttitudeControlTask], [](Flight& f) { f.chain().control_attitude(); }, 1, 0, 350},
-    {wire::kTaskNames[kYawControlTask], [](Flight& f) { f.chain().control_yaw(); }, 1, 0, 80},
+    {wire::kTaskNames[kYawControlTask], [](Flight& f) { f.chain().control_yaw(); }, 1, 0, 140},
     {wire::kTaskNames[kMixerTask], [](Flight& f) { f.run_mixer(); }, 1, 0, 800},
     {wire::kTaskNames[kManualMixerTask], [](Flight& f) { f.run_manual_mixer(); }, 1, 0, 700},
     {wire::kTaskNames[kSafetyTask], [](Flight& f) { f.run_safety(); }, 1, 0, 1800},
@@ -117,10 +117,14 @@ inline constexpr FlightMode<Flight> kFlightModes[kModeCount] = {
     {Mode::manual, task_sets::set(task_sets::kManual), nullptr},
     // A calibration run starts over whenever the mode is entered.
     {Mode::calibration, task_sets::set(task_sets::kCalibration), [](Flight& f) { f.chain().enter_calibration(); }},
-    {Mode::yaw_control, task_sets::set(task_sets::kYawControl), nullptr},
-    // The attitude loops' integrals start empty.
+    // The yaw loop's integral starts empty.
+    {Mode::yaw_control, task_sets::set(task_sets::kYawControl), [](Flight& f) { f.chain().enter_yaw_control(); }},
+    // The attitude and yaw loops' integrals start empty.
     {Mode::full_control, task_sets::set(task_sets::kFullControl),
-     [](Flight& f) { f.chain().enter_attitude_control(); }},
+     [](Flight& f) {
+       f.chain().enter_attitude_control();
+       f.chain().enter_yaw_control();
+     }},
 };
 
 // The mode table as a pointer, as flight_tasks() above.

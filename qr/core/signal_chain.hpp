@@ -35,6 +35,7 @@ concept SignalChain = requires(C& c, const C& cc, const wire::ParameterValues& p
   // entry actions
   c.enter_calibration();
   c.enter_attitude_control();
+  c.enter_yaw_control();
   // read-outs, in the wire's units
   {cc.calibrated()};
   {cc.tilt_mrad()};

@@ -37,7 +37,7 @@ AttitudeController<N> tilt_controller(int32_t p1 = 1024, int32_t p2 = 800, int32
 template <class N>
 YawRateController<N> yaw_controller(int32_t yaw_p = 1600) {
   YawRateController<N> c;
-  c.set_gain(yaw_p);
+  c.set_gains(yaw_p);
   return c;
 }
 
@@ -64,7 +64,7 @@ TEST(Controllers, RateLoopDampsMotion) {
 }
 
 TEST(Controllers, PositiveYawRateErrorGivesPositiveYawMoment) {
-  const auto c = yaw_controller<F>();
+  auto c = yaw_controller<F>();
   EXPECT_GT(c.moment(to<F::Rate>(0.5), to<F::Rate>(0.0)).to_double(), 0.0);
   EXPECT_LT(c.moment(to<F::Rate>(0.0), to<F::Rate>(0.5)).to_double(), 0.0);
   EXPECT_NEAR(c.moment(to<F::Rate>(0.5), to<F::Rate>(0.2)).to_double(), 100 * 0.3, 1e-3);
@@ -77,7 +77,7 @@ TEST(Controllers, OutputsSaturate) {
   EXPECT_EQ(c.moment(to<F::Angle>(-0.35), to<F::Angle>(3.1), to<F::Rate>(9.0)), -kMaxMoment<F>);
   EXPECT_EQ(c.rate_setpoint(), -kMaxTiltRateSetpoint<F>);
   // A yaw error beyond the rate format's +-16 rad/s is still the right sign, clamped.
-  const auto y = yaw_controller<F>(16000);
+  auto y = yaw_controller<F>(16000);
   EXPECT_EQ(y.moment(to<F::Rate>(8.0), to<F::Rate>(-9.0)), kMaxMoment<F>);
   EXPECT_EQ(y.moment(to<F::Rate>(-8.0), to<F::Rate>(9.0)), -kMaxMoment<F>);
 }
@@ -104,8 +104,8 @@ TEST(Controllers, FixedFollowsDouble) {
     const double mf = cf.moment(sp, a, r).to_double();
     const double md = cd.moment(sp.to_double(), a.to_double(), r.to_double());
     tilt.add(mf - md, md);
-    const auto yf = yaw_controller<F>(g2);
-    const auto yd = yaw_controller<D>(g2);
+    auto yf = yaw_controller<F>(g2);
+    auto yd = yaw_controller<D>(g2);
     const F::Rate ys = to<F::Rate>(rate(rng));
     yaw.add(yf.moment(ys, r).to_double() - yd.moment(ys.to_double(), r.to_double()), 0);
   }

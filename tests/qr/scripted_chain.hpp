@@ -23,6 +23,7 @@ struct ScriptedChain {
   uint32_t accel_angles = 0;
   uint32_t calibrations_entered = 0;
   uint32_t attitude_entered = 0;
+  uint32_t yaw_entered = 0;
   uint32_t yaw_controlled = 0;
   uint32_t attitude_controlled = 0;
   uint32_t parameter_updates = 0;
@@ -48,6 +49,7 @@ struct ScriptedChain {
   void estimate_accel_angles() { ++accel_angles; }
   void estimate() { ++estimated; }
   void enter_attitude_control() { ++attitude_entered; }
+  void enter_yaw_control() { ++yaw_entered; }
   void control_yaw() { ++yaw_controlled; }
   void control_attitude() { ++attitude_controlled; }
   // Every engine at the lift stick: enough to see that the mixer ran and what the safety

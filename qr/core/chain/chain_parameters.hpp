@@ -16,6 +16,7 @@ constexpr const wire::ParameterSpec& parameter_spec(wire::ParamId id) {
 constexpr int parameter_frac_bits(wire::ParamId id) { return parameter_spec(id).frac_bits; }
 
 inline constexpr int kYawPFrac = parameter_frac_bits(wire::ParamId::yaw_p);                     // Q<4>
+inline constexpr int kYawIFrac = parameter_frac_bits(wire::ParamId::yaw_i);                     // Q<4>
 inline constexpr int kP1Frac = parameter_frac_bits(wire::ParamId::roll_pitch_p1);               // Q<8>
 inline constexpr int kP2Frac = parameter_frac_bits(wire::ParamId::roll_pitch_p2);               // Q<4>
 inline constexpr int kRollPitchIFrac = parameter_frac_bits(wire::ParamId::roll_pitch_i);        // Q<4>

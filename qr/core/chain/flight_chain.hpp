@@ -58,7 +58,7 @@ class FlightChain {
     using wire::ParamId;
     filters_.set_cutoff(p.get(ParamId::filter_cutoff_hz));
     estimator_.set_divisors(p.get(ParamId::attitude_c1), p.get(ParamId::attitude_c2));
-    yaw_.set_gain(p.get(ParamId::yaw_p));
+    yaw_.set_gains(p.get(ParamId::yaw_p), p.get(ParamId::yaw_i));
     for (auto& axis : tilt_) {
       axis.set_gains(p.get(ParamId::roll_pitch_p1), p.get(ParamId::roll_pitch_p2), p.get(ParamId::roll_pitch_i),
                      p.get(ParamId::roll_pitch_d));
@@ -109,10 +109,21 @@ class FlightChain {
     estimator_.update(rate, accel);
   }
 
+  // Entry action of yaw and full control: the yaw loop's integral starts empty.
+  void enter_yaw_control() {
+    yaw_.reset();
+    yaw_entered_ = true;
+  }
+
   // Task "yaw control": the yaw moment from the yaw rate loop. (Roll and pitch stay with the
-  // sticks unless the attitude controller runs in the same tick.)
+  // sticks unless the attitude controller runs in the same tick.) The integral stays empty while
+  // the lift stick is at 0 and holds while the mixer had to scale the last moments down, as the
+  // attitude loops' do.
   void control_yaw() {
-    yaw_moment_ = yaw_.moment(pilot_.yaw_rate(), estimator_.r());
+    if (pilot_.lift() == 0) yaw_.reset();
+    const bool integrate = pilot_.lift() != 0 && (yaw_entered_ || !mixer_.limited());
+    yaw_entered_ = false;
+    yaw_moment_ = yaw_.moment(pilot_.yaw_rate(), estimator_.r(), integrate);
     yaw_ran_ = true;
   }
 
@@ -214,7 +225,7 @@ class FlightChain {
   chain::SensorCalibration<Num> calibration_;
   chain::AttitudeEstimator<Num, SampleHz> estimator_;
   chain::PilotSetpoints<Num> pilot_;
-  chain::YawRateController<Num> yaw_;
+  chain::YawRateController<Num, SampleHz> yaw_;
   chain::AttitudeController<Num, SampleHz> tilt_[2];  // roll, pitch
   chain::EngineMixer<Num> mixer_;
   Thrust roll_moment_{}, pitch_moment_{}, yaw_moment_{};  // the controllers' latest outputs
@@ -222,7 +233,9 @@ class FlightChain {
   chain::Moments<Thrust> moments_{};                      // what the last mix asked for
   EngineCommand engines_{};
   SensorSample sample_{};
-  bool attitude_entered_ = false;  // full control entered: the next control_attitude() integrates
+  bool attitude_entered_ = false;
+  bool yaw_entered_ =
+      false;  // yaw or full control entered: the next control_yaw() integrates  // full control entered: the next control_attitude() integrates
 };
 
 using FixedChain = FlightChain<chain::FixedNumbers>;
