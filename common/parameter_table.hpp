@@ -51,7 +51,8 @@ namespace wire {
       "tilt beyond tilt_limit_mrad for this long in yaw/full control: panic (an upset that recovers sooner " \
       "flies on)") \
   ROW(yaw_i, 21, 4, 0, 16000, 4800, "thrust units per rad", \
-      "yaw rate loop integral gain: holds the yaw rate at its set-point against the rotors' drag")
+      "yaw rate loop integral gain: holds the yaw rate at its set-point against the rotors' drag") \
+  ROW(max_tilt_mrad, 22, 0, 87, 698, 524, "mrad", "roll/pitch angle set-point at full stick (524 = 30 deg)")
 
 enum class ParamId : uint8_t {
 #define WIRE_PARAMETER_ENUMERATOR(name, id, frac_bits, min, max, default_value, unit, meaning) name = id,

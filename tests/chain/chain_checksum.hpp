@@ -14,7 +14,7 @@ namespace qr::chain::checksum {
 
 // FNV-1a 32-bit over every read-out of every tick of synthetic::Flight<1000> through FixedChain.
 // Changes whenever the chain's arithmetic changes: then re-record it, saying why, in the commit.
-inline constexpr uint32_t kExpected = 1226080790u;
+inline constexpr uint32_t kExpected = 3921529916u;
 
 class Fnv1a {
  public:

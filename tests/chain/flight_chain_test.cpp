@@ -125,8 +125,8 @@ TEST(FlightChain, SticksMoveTheRightEngines) {
   Pilot<FixedChain> p;
   p.calibrate_level();
   p.run(Mode::full, sample_at(0, 0), sticks(500, 1000, -1000, 1000), 1);
-  EXPECT_EQ(p.chain.roll_setpoint_e4(), 3500);  // 0.35 rad at full stick
-  EXPECT_EQ(p.chain.pitch_setpoint_e4(), -3500);
+  EXPECT_EQ(p.chain.roll_setpoint_e4(), 5240);  // max_tilt_mrad default 0.524 rad (30 deg) at full stick
+  EXPECT_EQ(p.chain.pitch_setpoint_e4(), -5240);
   EXPECT_EQ(p.chain.yaw_rate_setpoint_e3(), 2000);  // max_yaw_rate default 2 rad/s
 }
 
@@ -191,13 +191,15 @@ TEST(FlightChain, ParametersReachTheBlocks) {
   ASSERT_EQ(values.set(static_cast<uint8_t>(wire::ParamId::filter_cutoff_hz), 50), wire::NackReason::none);
   ASSERT_EQ(values.set(static_cast<uint8_t>(wire::ParamId::idle_level), 300), wire::NackReason::none);
   ASSERT_EQ(values.set(static_cast<uint8_t>(wire::ParamId::max_yaw_rate_rad_s), 1024), wire::NackReason::none);
+  ASSERT_EQ(values.set(static_cast<uint8_t>(wire::ParamId::max_tilt_mrad), 349), wire::NackReason::none);
   p.chain.set_parameters(values);
   EXPECT_EQ(p.chain.cutoff_hz(), 50);
   p.calibrate_level();
   const EngineCommand e = p.run(Mode::manual, sample_at(0, 0), sticks(200, 300), 1);
   for (const uint16_t v : e.value) EXPECT_GE(v, 300);
-  p.run(Mode::full, sample_at(0, 0), sticks(500, 0, 0, 1000), 1);
+  p.run(Mode::full, sample_at(0, 0), sticks(500, -500, 0, 1000), 1);
   EXPECT_EQ(p.chain.yaw_rate_setpoint_e3(), 1000);  // max_yaw_rate 1 rad/s
+  EXPECT_EQ(p.chain.roll_setpoint_e4(), -1745);     // half of max_tilt 0.349 rad (20 deg)
 }
 
 // The rate loops' integrals (anti-windup, controllers.hpp): they grow on a held angle error in

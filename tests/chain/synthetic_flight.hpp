@@ -122,7 +122,8 @@ class Flight {
 
     if (n >= kRollStart) {
       t.sticks.lift = 450;
-      // 80 % of the vehicle's roll as a stick (1000 = 0.35 rad).
+      // The vehicle's roll as a stick, 2286 per rad (80 % of it when full stick was 0.35 rad; at the
+      // 0.524 rad max_tilt_mrad default the set-point is 1.2 times the roll). The script is fixed.
       t.sticks.roll = saturate16(fx::narrow<fx::Q<0>>(fx::mul_wide(v.roll, kRollStickPerRad)).raw());
     }
     if (n >= kPitchStart) t.sticks.pitch = 600;

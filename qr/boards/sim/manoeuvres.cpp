@@ -16,17 +16,19 @@ int16_t stick(double value) { return static_cast<int16_t>(std::clamp(std::lround
 
 bool holding(const ManoeuvreStep& m) { return m.since < m.spec.hold_s; }
 
-// Full control: roll and pitch sticks are angle set-points, full stick kMaxTiltSetpointRad.
-double stick_per_degree() { return kRad * 1000 / qr::chain::kMaxTiltSetpointRad; }
+// Full control: roll and pitch sticks are angle set-points, full stick the max_tilt_mrad parameter.
+double stick_per_degree(const ManoeuvreStep& m) {
+  return kRad * 1000 / (m.parameters.get(wire::ParamId::max_tilt_mrad) * 1e-3);
+}
 
 void hover(ManoeuvreStep&) {}
 
 void roll_step(ManoeuvreStep& m) {
-  if (holding(m)) m.sticks.roll = stick(m.spec.amount * stick_per_degree());
+  if (holding(m)) m.sticks.roll = stick(m.spec.amount * stick_per_degree(m));
 }
 
 void pitch_step(ManoeuvreStep& m) {
-  if (holding(m)) m.sticks.pitch = stick(m.spec.amount * stick_per_degree());
+  if (holding(m)) m.sticks.pitch = stick(m.spec.amount * stick_per_degree(m));
 }
 
 // Yaw stick: full stick is the max_yaw_rate parameter (Q10 rad/s).

@@ -155,7 +155,7 @@ class AttitudeController {
   }
 
   Thrust moment(typename N::Angle setpoint, typename N::Angle angle, Rate rate, bool integrate = false) {
-    // The angle error fits the Angle format (+-8 rad): the set-point is within +-0.35 rad and
+    // The angle error fits the Angle format (+-8 rad): the set-point is within +-0.7 rad (max_tilt_mrad) and
     // the estimate within [-pi, pi).
     rate_setpoint_ = clamp(product_sat<Rate>(p1_, setpoint - angle), -kMaxTiltRateSetpoint<N>, kMaxTiltRateSetpoint<N>);
     // Both differences fit the Rate format (+-16 rad/s): the set-point is within +-4 rad/s and a

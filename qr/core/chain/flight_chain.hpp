@@ -64,6 +64,7 @@ class FlightChain {
                      p.get(ParamId::roll_pitch_d));
     }
     pilot_.set_max_yaw_rate(p.get(ParamId::max_yaw_rate_rad_s));
+    pilot_.set_max_tilt(p.get(ParamId::max_tilt_mrad));
     mixer_.set_idle(p.get(ParamId::idle_level));
   }
 

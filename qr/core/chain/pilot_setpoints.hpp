@@ -1,5 +1,5 @@
 // The pilot's sticks (qr::ControlInput) as set-points and open-loop moments:
-//   full control: roll/pitch stick +-1000 -> angle set-point +-kMaxTiltSetpointRad (0.35 rad, 20 deg)
+//   full control: roll/pitch stick +-1000 -> angle set-point +-max_tilt_mrad (parameter, 30 deg)
 //   yaw and full control: yaw stick +-1000 -> yaw rate set-point +-max_yaw_rate (parameter)
 //   manual (all three) and yaw control (roll, pitch): stick +-1000 -> moment +-kMaxStickMoment
 //   lift 0..1000 -> per-engine thrust lift^2 / 1000, so with no moments every engine runs at
@@ -17,7 +17,6 @@
 
 namespace qr::chain {
 
-inline constexpr double kMaxTiltSetpointRad = 0.35;
 inline constexpr double kMaxStickMoment = 200.0;  // thrust units at full stick
 
 template <class N>
@@ -33,11 +32,16 @@ class PilotSetpoints {
     yaw_rate_per_stick_ = N::template ratio<Scale>(raw, int32_t{wire::kStickMax} << kMaxYawRateFrac);
   }
 
+  // max_tilt_mrad parameter (raw, mrad): one division, at parameter changes only.
+  void set_max_tilt(int32_t mrad) {
+    angle_per_stick_ = N::template ratio<Scale>(mrad, int32_t{wire::kStickMax} * 1000);
+  }
+
   void update(const ControlInput& c) {
     lift_ = c.lift > wire::kLiftMax ? wire::kLiftMax : c.lift;
     const auto roll = stick(c.roll), pitch = stick(c.pitch), yaw = stick(c.yaw);
-    roll_angle_ = product<Angle>(roll, kAnglePerStick);
-    pitch_angle_ = product<Angle>(pitch, kAnglePerStick);
+    roll_angle_ = product<Angle>(roll, angle_per_stick_);
+    pitch_angle_ = product<Angle>(pitch, angle_per_stick_);
     yaw_rate_ = product<Rate>(yaw, yaw_rate_per_stick_);
     roll_moment_ = product<Thrust>(roll, kMomentPerStick);
     pitch_moment_ = product<Thrust>(pitch, kMomentPerStick);
@@ -53,7 +57,6 @@ class PilotSetpoints {
   Thrust yaw_moment() const { return yaw_moment_; }
 
  private:
-  static constexpr Scale kAnglePerStick = Scale(kMaxTiltSetpointRad / wire::kStickMax);
   static constexpr Scale kMomentPerStick = Scale(kMaxStickMoment / wire::kStickMax);
 
   // A stick value clamped to +-1000 (the wire guarantees the range; the clamp makes the chain's
@@ -68,6 +71,7 @@ class PilotSetpoints {
   Rate yaw_rate_{};
   Thrust roll_moment_{}, pitch_moment_{}, yaw_moment_{};
   Scale yaw_rate_per_stick_{};
+  Scale angle_per_stick_{};
 };
 
 }  // namespace qr::chain
