@@ -16,7 +16,7 @@
 #include <qr/core/flight.hpp>
 #include <qr/core/scheduler.hpp>
 
-#include <qr/tools/real_number_policy.hpp>
+#include <qr/host/real_number_policy.hpp>
 
 #include "../../fixedpoint/bench/float_math.hpp"
 #include "../chain/synthetic_flight.hpp"

@@ -1,7 +1,7 @@
 // The number policy of the flight build: which Q format each quantity of the signal chain uses,
 // and the few operations that differ between Q formats and floating point. The chain's blocks are
 // templates over a policy N and never name a format themselves. The floating-point policies
-// (qr/tools/real_number_policy.hpp) provide the same members; they are kept out of qr/core so
+// (qr/host/real_number_policy.hpp) provide the same members; they are kept out of qr/core so
 // the freestanding code never sees floating point.
 //
 // Why a policy with static members rather than free functions found by argument-dependent

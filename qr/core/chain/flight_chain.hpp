@@ -10,7 +10,7 @@
 // called by the transition. Nothing here counts ticks.
 //
 // Num is the number policy: FixedNumbers in flight (FixedChain below); the host tests also run
-// FlightChain<DoubleNumbers> (qr/tools/real_numbers.hpp) as the accuracy reference. SampleHz is
+// FlightChain<DoubleNumbers> (qr/host/real_numbers.hpp) as the accuracy reference. SampleHz is
 // the control rate the designs and time steps are made for.
 //
 // Units at the readouts are the wire's (common/units.hpp): angles 1e-4 rad, rates 1e-3 rad/s,
