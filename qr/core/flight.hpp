@@ -46,7 +46,10 @@ class Flight {
   }
 
   // ---- the scheduler's side ----
-  TaskSet task_set() const { return flight_modes<Flight>()[index(safety_.mode())].tasks; }
+  static constexpr uint8_t kSetCount = kModeCount;  // one task set per mode
+  static constexpr Task<Flight> task(uint8_t id) { return flight_tasks<Flight>()[id]; }
+  static constexpr TaskSet task_set(uint8_t set) { return flight_modes<Flight>()[set].tasks; }
+  uint8_t current_set() const { return index(safety_.mode()); }
   void begin_tick(uint32_t now_us, const SensorSample& sample) {
     sub_ms_us_ += now_us - tick_us_;  // divisions by a constant: multiplies on RV32IM
     uptime_ms_ += sub_ms_us_ / 1000u;

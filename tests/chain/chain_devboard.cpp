@@ -28,7 +28,7 @@ int main() {
     rv32virt::puts("\",\"calls\":");
     rv32virt::put_u32(c.count);
     rv32virt::puts(",\"instr_avg\":");
-    rv32virt::put_ratio(static_cast<uint32_t>(c.sum), c.count);
+    rv32virt::put_ratio(static_cast<uint32_t>(c.sum()), c.count);
     rv32virt::puts(",\"instr_max\":");
     rv32virt::put_u32(c.max);
     rv32virt::puts("}\n");

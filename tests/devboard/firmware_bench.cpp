@@ -167,10 +167,10 @@ ModeFigures bench_mode(Rig<Chain>& rig, Mode mode, const char* suffix) {
   }
   const auto& stats = rig.scheduler.stats();
   uint64_t task_sum = 0;
-  for (uint8_t id = 0; id < qr::kFlightTaskCount; ++id) task_sum += stats.task[id].sum;
+  for (uint8_t id = 0; id < qr::kFlightTaskCount; ++id) task_sum += stats.task[id].sum();
   ModeFigures figures;
   figures.tick_mean = stats.tick.mean();
-  figures.overhead_mean = stats.ticks == 0 ? 0 : static_cast<uint32_t>((stats.tick.sum - task_sum) / stats.ticks);
+  figures.overhead_mean = stats.ticks == 0 ? 0 : static_cast<uint32_t>((stats.tick.sum() - task_sum) / stats.ticks);
   rv32virt::puts(",\"ticks\":");
   rv32virt::put_u32(ticks);
   rv32virt::puts(",\"tick_instr_mean\":");

@@ -16,7 +16,8 @@ using fake::FakeBoard;
 // A context whose tasks only record that they ran and take the time a test gives them.
 struct TestContext {
   static constexpr uint8_t kTaskCount = 3;
-  static const Task<TestContext> kTasks[kTaskCount];
+  static constexpr uint8_t kSetCount = 2;
+  static constexpr Task<TestContext> task(uint8_t id);
   static constexpr uint8_t kSetA[] = {0, 2};
   static constexpr uint8_t kSetB[] = {1};
 
@@ -36,7 +37,8 @@ struct TestContext {
   std::deque<uint8_t> rx;
   std::deque<uint8_t> tx;
 
-  TaskSet task_set() const { return use_b ? TaskSet{kSetB, 1} : TaskSet{kSetA, 2}; }
+  static constexpr TaskSet task_set(uint8_t set) { return set == 1 ? TaskSet{kSetB, 1} : TaskSet{kSetA, 2}; }
+  uint8_t current_set() const { return use_b ? 1 : 0; }
   void begin_tick(uint32_t, const SensorSample&) { ++tick; }
   uint32_t rx_space() const { return 1000; }
   void receive(uint8_t b) { rx.push_back(b); }
@@ -66,12 +68,13 @@ struct TestContext {
 };
 
 // Budgets in the fake board's cycles (kCyclesPerUs a µs).
-const Task<TestContext> TestContext::kTasks[kTaskCount] = {
+constexpr Task<TestContext> kTestTasks[TestContext::kTaskCount] = {
     {"fast", [](TestContext& c) { c.work(0); }, 1, 0, 50 * FakeBoard::kCyclesPerUs},
     {"other", [](TestContext& c) { c.work(1); }, 1, 0, 50 * FakeBoard::kCyclesPerUs},
     {"slow", [](TestContext& c) { c.work(2); }, 10, 3, 50 * FakeBoard::kCyclesPerUs,
      [](const TestContext& c) { return c.slow_divider; }},
 };
+constexpr Task<TestContext> TestContext::task(uint8_t id) { return kTestTasks[id]; }
 
 struct SchedulerTest : ::testing::Test {
   FakeBoard board;

@@ -70,7 +70,10 @@ class ChainReplay {
   uint16_t log_divider() const { return 1; }
 
   // ---- the scheduler's side ----
-  TaskSet task_set() const { return flight_modes<ChainReplay>()[index(mode_)].tasks; }
+  static constexpr uint8_t kSetCount = kModeCount;  // the flight's sets, one per mode
+  static constexpr Task<ChainReplay> task(uint8_t id) { return flight_tasks<ChainReplay>()[id]; }
+  static constexpr TaskSet task_set(uint8_t set) { return flight_modes<ChainReplay>()[set].tasks; }
+  uint8_t current_set() const { return index(mode_); }
   void begin_tick(uint32_t, const SensorSample&) {}
   uint32_t rx_space() const { return 0; }
   void receive(uint8_t) {}
