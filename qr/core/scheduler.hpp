@@ -77,7 +77,7 @@ class Scheduler {
   Scheduler(B& board, Context& context, SchedulerLimits limits = {}, uint32_t first_tick = 0)
       : board_(board), context_(context), limits_(limits), seen_kick_(board.kicks()), next_set_(context.current_set()),
         ticks_(first_tick), window_start_us_(board.now_us()) {
-    for (uint8_t id = 0; id < kTaskCount; ++id) retime(id);
+    retime_all();
   }
 
   // One control period. Returns false once the context has stopped.
@@ -111,7 +111,7 @@ class Scheduler {
       context_.receive(byte);
     }
 
-    kRunSets[next_set_](*this, ticks_);
+    run_current_set(next_set_, ticks_);
     running_ = kNoTask;
 
     board_.set_engines(context_.engines());
@@ -149,6 +149,13 @@ class Scheduler {
     next_set_ = context_.current_set();
   }
 
+  // A row's work, one copy in the image however many sets run it (inlined into every set, the
+  // task bodies would take the image past the board's 64 KiB).
+  template <uint8_t Id>
+  [[gnu::noinline]] static void run_row(Context& context) {
+    Context::task(Id).run(context);
+  }
+
   // One row: run it when its rate and phase say so, and account for it.
   template <uint8_t Id>
   [[gnu::always_inline]] inline void run_task(uint32_t t) {
@@ -158,9 +165,9 @@ class Scheduler {
     }
     running_ = Id;
     const uint32_t before = board_.cycles();
-    row.run(context_);
+    run_row<Id>(context_);
     stats_.task[Id].add(board_.cycles() - before, row.budget);
-    if constexpr (row.divider_from != nullptr) retime(Id);
+    if constexpr (row.divider_from != nullptr) retime<Id>();
   }
 
   // The rows of set `Set` from the I-th on, one after the other.
@@ -173,34 +180,38 @@ class Scheduler {
     }
   }
   template <uint8_t Set>
-  static void run_set(Scheduler& s, uint32_t t) {
-    s.run_rows<Set>(t);
+  [[gnu::noinline]] void run_set(uint32_t t) {
+    run_rows<Set>(t);
   }
 
-  // One straight-line function per set, indexed by the set's number.
-  using RunSet = void (*)(Scheduler&, uint32_t);
-  template <uint8_t... Sets>
-  struct SetTable {
-    RunSet run[sizeof...(Sets)];
-  };
-  template <uint8_t N, uint8_t... Sets>
-  static constexpr auto make_set_table() {
-    if constexpr (N == 0) {
-      return SetTable<Sets...>{{&run_set<Sets>...}};
-    } else {
-      return make_set_table<N - 1, N - 1, Sets...>();
+  // The set `set` by direct calls, one compare per set: a table of pointers would make every set
+  // a target of every indirect call to the stack bound of scripts/elfcheck.
+  template <uint8_t Set = 0>
+  [[gnu::always_inline]] inline void run_current_set(uint8_t set, uint32_t t) {
+    if constexpr (Set < Context::kSetCount) {
+      if (set == Set) {
+        run_set<Set>(t);
+      } else {
+        run_current_set<Set + 1>(set, t);
+      }
     }
   }
-  static constexpr auto kRunSetTable = make_set_table<Context::kSetCount>();
-  static constexpr const RunSet* kRunSets = kRunSetTable.run;
 
-  // A row's rate from the table, or from the context where the row says so.
-  void retime(uint8_t id) {
-    const Task<Context> task = Context::task(id);
-    Slot& slot = slots_[id];
-    const uint16_t d = task.divider_from != nullptr ? task.divider_from(context_) : task.divider;
-    slot.divider = d == 0 ? uint16_t{1} : d;
-    slot.phase = static_cast<uint16_t>(task.phase % slot.divider);
+  // A row's rate from the table, or from the context where the row says so. Rows are only ever
+  // named at compile time, so the table itself is not kept in the image.
+  template <uint8_t Id>
+  void retime() {
+    constexpr Task<Context> row = Context::task(Id);
+    const uint16_t d = row.divider_from != nullptr ? row.divider_from(context_) : row.divider;
+    slots_[Id].divider = d == 0 ? uint16_t{1} : d;
+    slots_[Id].phase = static_cast<uint16_t>(row.phase % slots_[Id].divider);
+  }
+  template <uint8_t Id = 0>
+  void retime_all() {
+    if constexpr (Id < kTaskCount) {
+      retime<Id>();
+      retime_all<Id + 1>();
+    }
   }
 
   B& board_;
