@@ -29,11 +29,11 @@ inline constexpr FigureSpec kFigureTable[] = {
     {"att_rms_deg_truth", "RMS over the window of the true attitude minus the set-point, both axes"},
     {"att_rms_deg_last_s", "the same over the window's last second"},
     {"att_err_deg_truth_max_after_settle",
-     "largest |truth - set-point| of either axis in the held part: from 0.8 s after the step's set-point moved "
+     "largest absolute truth minus set-point of either axis in the held part: from 0.8 s after the step's set-point moved "
      "to the release (a step), or over the whole window (no step)"},
     {"max_tilt_deg_truth", "largest true tilt (body z from vertical) in the window"},
     {"est_err_rms_deg", "RMS of the estimate minus the truth, both axes"},
-    {"est_err_max_deg", "largest |estimate - truth| of either axis"},
+    {"est_err_max_deg", "largest absolute estimate minus truth of either axis"},
     {"step_setpoint_deg", "the step's set-point as the firmware holds it"},
     {"step_delay_s", "from the stick event to the set-point moving (the link)"},
     {"rise_s", "truth: 10 % to 90 % of the step, first crossings"},
@@ -46,7 +46,7 @@ inline constexpr FigureSpec kFigureTable[] = {
     {"yaw_rate_setpoint_rad_s", "the firmware's yaw-rate set-point at the end"},
     {"yaw_rate_rad_s", "mean true yaw rate over the last 40 % of the window"},
     {"yaw_rate_p_only_rad_s", "where the yaw loop's P term alone would settle"},
-    {"yaw_rate_error_pct", "|yaw_rate_rad_s / set-point - 1| in %"},
+    {"yaw_rate_error_pct", "absolute yaw_rate_rad_s / set-point - 1, in %"},
     {"peak_error_deg", "push: the largest error, both axes combined"},
     {"recovery_s", "push: from its start until the larger axis error stays within 1 deg"},
     {"recovery_2deg_s", "push: the same within 2 deg"},

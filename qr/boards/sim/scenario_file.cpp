@@ -6,6 +6,7 @@
 #include <qr/boards/sim/scenario_script.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -307,6 +308,16 @@ const char* compare_text(Compare compare) {
       return "==";
   }
   return "?";
+}
+
+std::string band_text(const Band& band) {
+  char limit[32];
+  if (band.figure == "final_mode") {
+    std::snprintf(limit, sizeof limit, "%s", wire::mode_key(static_cast<wire::Mode>(band.limit)));
+  } else {
+    std::snprintf(limit, sizeof limit, "%g", band.limit);
+  }
+  return band.figure + " " + compare_text(band.compare) + " " + limit;
 }
 
 std::string parameter_from_text(const std::string& name, const std::string& value, wire::ParamId& id, int32_t& raw) {

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 namespace qrsim {
 namespace {
@@ -164,13 +163,7 @@ void judge(const ScenarioScript& script, ScenarioResult& result) {
         ok = value == band.limit;
         break;
     }
-    char limit[32];
-    if (band.figure == "final_mode") {
-      std::snprintf(limit, sizeof limit, "%s", mode_name(static_cast<uint8_t>(band.limit)));
-    } else {
-      std::snprintf(limit, sizeof limit, "%g", band.limit);
-    }
-    result.checks.push_back({band.figure + " " + compare_text(band.compare) + " " + limit, ok});
+    result.checks.push_back({band_text(band), ok});
     result.pass = result.pass && ok;
   }
 }

@@ -95,5 +95,6 @@ bool load_scenario_file(const std::string& path, ScenarioScript& out, std::strin
 std::string parameter_from_text(const std::string& name, const std::string& value, wire::ParamId& id, int32_t& raw);
 
 const char* compare_text(Compare compare);  // "<", "<=", "=="
+std::string band_text(const Band& band);    // "rise_s < 0.3", "final_mode == full"
 
 }  // namespace qrsim
