@@ -209,8 +209,8 @@ TEST(ClosedLoop, SeededSweepOfVehiclesStaysStable) {
     char label[96];
     std::snprintf(label, sizeof label, "in4073 mass x%.2f inertia x%.2f lag %.0f ms", v.mass, v.inertia,
                   v.tau_up * 1000);
-    const qrsim::ScenarioResult r =
-        fly(builtin("disturbance"), 3, 100 + i, {v.mass, v.inertia, v.tau_up / tau_default, 1, 1});
+    const qrsim::ScenarioResult r = fly(builtin("disturbance"), 3, 100 + i,
+                                        {v.mass, v.inertia, v.tau_up / tau_default, 1, 1});
     EXPECT_TRUE(r.error.empty()) << label << ": " << r.error;
     EXPECT_EQ(r.final_mode, "full") << label;
     EXPECT_NEAR(r.figure("motor_tau_ms"), v.tau_up * 1000, 1e-6) << label;

@@ -96,9 +96,10 @@ TEST(ScenarioDocument, TheFigureTableIsTheCodes) {
 TEST(ScenarioDocument, AFlightPrintsTheTablesFiguresInOrder) {
   qrsim::ScenarioScript script;
   std::string error;
-  ASSERT_TRUE(qrsim::parse_scenario("seconds: 2.5\nat 0 roll 5\nat 0 yaw 0.5\nat 0 torque 0.01 0 0 for 0.01\n"
-                                    "at 2 roll 0\nband final_mode == full\n",
-                                    "all-figures", "all-figures", script, error))
+  ASSERT_TRUE(
+      qrsim::parse_scenario("seconds: 2.5\nat 0 roll 5\nat 0 yaw 0.5\nat 0 torque 0.01 0 0 for 0.01\n"
+                            "at 2 roll 0\nband final_mode == full\n",
+                            "all-figures", "all-figures", script, error))
       << error;
   const qrsim::ScenarioResult r = qrsim::run_scenario(script, {});
   std::vector<std::string> printed, code;

@@ -77,10 +77,10 @@ TEST(BuiltinScenarios, AreTheFilesOfSimScenarios) {
 // The issue's list of scenarios, each a file.
 TEST(BuiltinScenarios, IncludeTheIssuesScenarios) {
   const std::vector<std::string> files = scenario_files();
-  for (const char* name : {"hover", "step-roll", "step-pitch", "full-stick-30", "yaw-rate", "yaw-full-stick",
-                           "disturbance", "large-push", "link-loss", "panic", "bank-hold", "yaw-while-banked",
-                           "ground-windup-takeoff", "battery-sag-climb", "heavy-slow", "step-roll-20",
-                           "vibration-x5"}) {
+  for (const char* name :
+       {"hover", "step-roll", "step-pitch", "full-stick-30", "yaw-rate", "yaw-full-stick", "disturbance", "large-push",
+        "link-loss", "panic", "bank-hold", "yaw-while-banked", "ground-windup-takeoff", "battery-sag-climb",
+        "heavy-slow", "step-roll-20", "vibration-x5"}) {
     EXPECT_NE(std::find(files.begin(), files.end(), name), files.end()) << name;
   }
 }

@@ -8,8 +8,8 @@
 namespace qrsim {
 
 struct FlightRecord {
-  double t0 = -1;    // the manoeuvre's start (s of simulated time)
-  double t_end = 0;  // the window's end
+  double t0 = -1;                                                       // the manoeuvre's start (s of simulated time)
+  double t_end = 0;                                                     // the window's end
   Trace roll_true, pitch_true, roll_est, pitch_est, roll_sp, pitch_sp;  // degrees, every tick
   Trace r_true;                                                         // rad/s
   Trace tilt;                                                           // degrees from vertical
@@ -30,8 +30,8 @@ struct FlightRecord {
 
 // The plant and firmware at the end, for the figures that need them.
 struct EndState {
-  double yaw_rate_setpoint = 0;   // rad/s, the firmware's
-  double yaw_rate_p_only = 0;     // rad/s, where the P term alone settles
+  double yaw_rate_setpoint = 0;    // rad/s, the firmware's
+  double yaw_rate_p_only = 0;      // rad/s, where the P term alone settles
   double battery_panic_volts = 0;  // the firmware's parameter
 };
 

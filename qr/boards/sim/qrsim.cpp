@@ -208,7 +208,8 @@ int main(int argc, char** argv) {
       scenario.vehicle = vehicle;
       scenario.vehicle_name = vehicle_name;
       bool all = true;
-      for (const qrsim::BandSummary& b : qrsim::run_sweep(script, scenario, seeds, stdout)) all = all && b.passed == b.of;
+      for (const qrsim::BandSummary& b : qrsim::run_sweep(script, scenario, seeds, stdout))
+        all = all && b.passed == b.of;
       return all ? 0 : 1;
     }
     case Command::scenario: {

@@ -60,8 +60,9 @@ struct Hands {
     const double per_degree = kRad * 1000 / (p.get(wire::ParamId::max_tilt_mrad) * 1e-3);
     const double max_rate = std::ldexp(p.get(wire::ParamId::max_yaw_rate_rad_s), -10);
     Sticks s;
-    s.lift = hold_height ? lift_for_height(plant, height, 1)
-                         : static_cast<uint16_t>(std::clamp(std::lround(lift_share * plant.hover_command()), 0L, 1000L));
+    s.lift = hold_height
+                 ? lift_for_height(plant, height, 1)
+                 : static_cast<uint16_t>(std::clamp(std::lround(lift_share * plant.hover_command()), 0L, 1000L));
     s.roll = stick(roll_deg * per_degree);
     s.pitch = stick(pitch_deg * per_degree);
     s.yaw = stick(yaw_rad_s / max_rate * 1000);
@@ -112,15 +113,9 @@ void apply_pushes(const ScenarioScript& script, double since, sim::Quadrotor& pl
 
 void apply(const Event& e, Hands& hands, Pilot& pilot, sim::Quadrotor& plant) {
   switch (e.action) {
-    case Action::roll:
-      hands.roll_deg = e.value;
-      break;
-    case Action::pitch:
-      hands.pitch_deg = e.value;
-      break;
-    case Action::yaw:
-      hands.yaw_rad_s = e.value;
-      break;
+    case Action::roll: hands.roll_deg = e.value; break;
+    case Action::pitch: hands.pitch_deg = e.value; break;
+    case Action::yaw: hands.yaw_rad_s = e.value; break;
     case Action::lift_hold:
       hands.hold_height = true;
       hands.height = kHoverHeight;
@@ -133,21 +128,12 @@ void apply(const Event& e, Hands& hands, Pilot& pilot, sim::Quadrotor& plant) {
       hands.hold_height = false;
       hands.lift_share = e.value;
       break;
-    case Action::mode:
-      pilot.request_mode(e.mode);
-      break;
-    case Action::param:
-      pilot.set_parameter(e.param, e.raw);
-      break;
+    case Action::mode: pilot.request_mode(e.mode); break;
+    case Action::param: pilot.set_parameter(e.param, e.raw); break;
     case Action::torque:
-    case Action::force:
-      break;  // apply_pushes, every tick while they last
-    case Action::wind:
-      plant.set_wind(e.vector);
-      break;
-    case Action::link:
-      pilot.go_silent(e.value == 0);
-      break;
+    case Action::force: break;  // apply_pushes, every tick while they last
+    case Action::wind: plant.set_wind(e.vector); break;
+    case Action::link: pilot.go_silent(e.value == 0); break;
   }
 }
 
@@ -243,7 +229,7 @@ ScenarioResult run_scenario(const ScenarioScript& script, const RunOptions& opti
   ScenarioResult result;
   result.scenario = script.name;
   result.known_failure = script.known_failure;
-  result.vehicle = options.vehicle ? options.vehicle_name
+  result.vehicle = options.vehicle  ? options.vehicle_name
                    : script.vehicle ? script.vehicle_file
                                     : std::string(sim::default_vehicle_name());
   const double seconds = options.seconds > 0 ? options.seconds : script.seconds;
@@ -324,8 +310,7 @@ ScenarioResult run_scenario(const ScenarioScript& script, const RunOptions& opti
         pilot.set_sticks({lift_for_height(plant, kHoverHeight, 1), 0, 0, 0});
         if (t - phase_start >= kSettleSeconds) begin_manoeuvre();
         break;
-      case Phase::manoeuvre:
-        break;
+      case Phase::manoeuvre: break;
     }
     if (phase == Phase::manoeuvre) {
       const double since = t - rec.t0;

@@ -29,8 +29,8 @@ inline constexpr FigureSpec kFigureTable[] = {
     {"att_rms_deg_truth", "RMS over the window of the true attitude minus the set-point, both axes"},
     {"att_rms_deg_last_s", "the same over the window's last second"},
     {"att_err_deg_truth_max_after_settle",
-     "largest absolute truth minus set-point of either axis in the held part: from 0.8 s after the step's set-point moved "
-     "to the release (a step), or over the whole window (no step)"},
+     "largest absolute truth minus set-point of either axis in the held part: from 0.8 s after the "
+     "step's set-point moved to the release (a step), or over the whole window (no step)"},
     {"max_tilt_deg_truth", "largest true tilt (body z from vertical) in the window"},
     {"est_err_rms_deg", "RMS of the estimate minus the truth, both axes"},
     {"est_err_max_deg", "largest absolute estimate minus truth of either axis"},

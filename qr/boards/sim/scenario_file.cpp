@@ -37,6 +37,12 @@ std::string joined(const std::vector<std::string>& words, size_t from) {
   return out;
 }
 
+std::string text_of(double v) {
+  std::ostringstream out;
+  out << v;
+  return out.str();
+}
+
 bool mode_from_key(const std::string& key, wire::Mode& mode) {
   for (const wire::ModeSpec& m : wire::kModeTable) {
     if (key == m.key) {
@@ -76,8 +82,8 @@ class Reader {
     for (const Event& e : out_.events) {
       if (e.at_s >= out_.seconds) {
         line_ = e.line;
-        return fail("event at " + std::to_string(e.at_s) + " s is past the window (seconds: " +
-                    std::to_string(out_.seconds) + ")");
+        return fail("event at " + std::to_string(e.at_s) +
+                    " s is past the window (seconds: " + std::to_string(out_.seconds) + ")");
       }
     }
     return true;
@@ -147,12 +153,9 @@ class Reader {
       double min, max;  // accepted, inclusive
     };
     const Number numbers[] = {
-        {"seconds", &out_.seconds, 0.01, 3600},
-        {"mass", &out_.mass_scale, 0.1, 10},
-        {"inertia", &out_.inertia_scale, 0.1, 10},
-        {"motor_tau_ms", &out_.motor_tau_ms, 1, 1000},
-        {"battery_pct", &out_.battery_pct, 0, 100},
-        {"noise", &out_.noise_scale, 0, 100},
+        {"seconds", &out_.seconds, 0.01, 3600},       {"mass", &out_.mass_scale, 0.1, 10},
+        {"inertia", &out_.inertia_scale, 0.1, 10},    {"motor_tau_ms", &out_.motor_tau_ms, 1, 1000},
+        {"battery_pct", &out_.battery_pct, 0, 100},   {"noise", &out_.noise_scale, 0, 100},
         {"vibration", &out_.vibration_scale, 0, 100},
     };
     for (const Number& n : numbers) {
@@ -182,6 +185,11 @@ class Reader {
         !get_number(w[5], e.vector.z, unit)) {
       return false;
     }
+    // Far beyond what the vehicle can take (its weight is 10 N; 1 N m tips it past 45 deg).
+    const double limit = e.action == Action::torque ? 10 : e.action == Action::force ? 100 : 50;
+    if (std::abs(e.vector.x) > limit || std::abs(e.vector.y) > limit || std::abs(e.vector.z) > limit) {
+      return fail(w[2] + " is beyond +-" + text_of(limit) + " (" + unit + ") on an axis");
+    }
     if (lasting) {
       if (!get_number(w[7], e.duration_s, "the duration")) return false;
       if (e.duration_s <= 0) return fail("the duration must be > 0");
@@ -201,18 +209,20 @@ class Reader {
       return fail(order.str());
     }
     const std::string& action = w[2];
-    const auto one_number = [&](Action kind, const char* what) {
+    // Limits keep a user's typo from feeding the plant numbers it cannot integrate.
+    const auto one_number = [&](Action kind, const char* what, double limit) {
       e.action = kind;
       if (w.size() != 4) return fail(action + " needs one number (" + what + ")");
-      return get_number(w[3], e.value, what);
+      if (!get_number(w[3], e.value, what)) return false;
+      return std::abs(e.value) <= limit || fail(action + " " + w[3] + " is beyond +-" + text_of(limit) + " " + what);
     };
     bool ok = false;
     if (action == "roll") {
-      ok = one_number(Action::roll, "degrees");
+      ok = one_number(Action::roll, "degrees", 90);
     } else if (action == "pitch") {
-      ok = one_number(Action::pitch, "degrees");
+      ok = one_number(Action::pitch, "degrees", 90);
     } else if (action == "yaw") {
-      ok = one_number(Action::yaw, "rad/s");
+      ok = one_number(Action::yaw, "rad/s", 20);
     } else if (action == "lift") {
       if (w.size() == 4 && w[3] == "hold") {
         e.action = Action::lift_hold;
@@ -255,8 +265,7 @@ class Reader {
         ok = fail("link is 'on' or 'off'");
       }
     } else {
-      return fail("unknown action '" + action +
-                  "' (roll, pitch, yaw, lift, mode, param, torque, force, wind, link)");
+      return fail("unknown action '" + action + "' (roll, pitch, yaw, lift, mode, param, torque, force, wind, link)");
     }
     if (ok) out_.events.push_back(e);
     return ok;
@@ -300,12 +309,9 @@ class Reader {
 
 const char* compare_text(Compare compare) {
   switch (compare) {
-    case Compare::below:
-      return "<";
-    case Compare::at_most:
-      return "<=";
-    case Compare::equal:
-      return "==";
+    case Compare::below: return "<";
+    case Compare::at_most: return "<=";
+    case Compare::equal: return "==";
   }
   return "?";
 }
@@ -335,8 +341,8 @@ std::string parameter_from_text(const std::string& name, const std::string& valu
   return "";
 }
 
-bool parse_scenario(const std::string& text, const std::string& name, const std::string& origin,
-                    ScenarioScript& out, std::string& error) {
+bool parse_scenario(const std::string& text, const std::string& name, const std::string& origin, ScenarioScript& out,
+                    std::string& error) {
   out = ScenarioScript{};
   out.name = name;
   out.origin = origin;

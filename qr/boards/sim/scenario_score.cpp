@@ -54,8 +54,8 @@ Trace difference(const Trace& a, const Trace& b) {
   return out;
 }
 
-void step_figures(const ScenarioScript& script, const FlightRecord& rec, std::vector<Figure>& f,
-                  double& held_from, double& held_to) {
+void step_figures(const ScenarioScript& script, const FlightRecord& rec, std::vector<Figure>& f, double& held_from,
+                  double& held_to) {
   StepFigures truth, estimate;
   double release_settle = kNotMeasured;
   StepPlan plan;
@@ -118,8 +118,7 @@ void add_flight_figures(const ScenarioScript& script, const FlightRecord& rec, c
   f.push_back({"est_err_max_deg", peak_abs(rec.est_err_axis, t0, t_end)});
   f.insert(f.end(), step.begin(), step.end());
 
-  if (first_of(script, [](const Event& e) { return e.action == Action::yaw && e.value != 0; }) != nullptr &&
-      t0 >= 0) {
+  if (first_of(script, [](const Event& e) { return e.action == Action::yaw && e.value != 0; }) != nullptr && t0 >= 0) {
     // Steady state over the last 40 % of the window, on the truth, against the set-point.
     const double r = mean(rec.r_true, t0 + 0.6 * (t_end - t0), t_end);
     f.push_back({"yaw_rate_setpoint_rad_s", end.yaw_rate_setpoint});
@@ -128,8 +127,8 @@ void add_flight_figures(const ScenarioScript& script, const FlightRecord& rec, c
     f.push_back({"yaw_rate_error_pct", std::abs(r / end.yaw_rate_setpoint - 1) * 100});
   }
 
-  const Event* push =
-      first_of(script, [](const Event& e) { return e.action == Action::torque || e.action == Action::force; });
+  const Event* push = first_of(script,
+                               [](const Event& e) { return e.action == Action::torque || e.action == Action::force; });
   if (push != nullptr && t0 >= 0) {
     const double t_push = t0 + push->at_s;
     f.push_back({"peak_error_deg", peak_abs(rec.att_err, t_push, t_end) * std::sqrt(2.0)});
@@ -153,15 +152,9 @@ void judge(const ScenarioScript& script, ScenarioResult& result) {
     const double value = result.figure(band.figure);
     bool ok = false;
     switch (band.compare) {
-      case Compare::below:
-        ok = value < band.limit;
-        break;
-      case Compare::at_most:
-        ok = value <= band.limit;
-        break;
-      case Compare::equal:
-        ok = value == band.limit;
-        break;
+      case Compare::below: ok = value < band.limit; break;
+      case Compare::at_most: ok = value <= band.limit; break;
+      case Compare::equal: ok = value == band.limit; break;
     }
     result.checks.push_back({band_text(band), ok});
     result.pass = result.pass && ok;

@@ -84,8 +84,8 @@ struct ScenarioScript {
 
 // Reads a scenario's text. `name` names it; `origin` starts every error message
 // ("origin:line: what is wrong").
-bool parse_scenario(const std::string& text, const std::string& name, const std::string& origin,
-                    ScenarioScript& out, std::string& error);
+bool parse_scenario(const std::string& text, const std::string& name, const std::string& origin, ScenarioScript& out,
+                    std::string& error);
 
 // Reads a scenario file and the vehicle file it names (relative to the scenario file).
 bool load_scenario_file(const std::string& path, ScenarioScript& out, std::string& error);

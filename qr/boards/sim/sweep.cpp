@@ -31,7 +31,8 @@ std::string number_text(double v) {
 VehicleDraw draw_vehicle(uint64_t seed) {
   sim::Random random = sim::Random(seed).stream(kSweepStream);
   double drawn[std::size(kSweepRanges)];
-  for (size_t i = 0; i < std::size(kSweepRanges); ++i) drawn[i] = random.uniform(kSweepRanges[i].low, kSweepRanges[i].high);
+  for (size_t i = 0; i < std::size(kSweepRanges); ++i)
+    drawn[i] = random.uniform(kSweepRanges[i].low, kSweepRanges[i].high);
   return {drawn[0], drawn[1], drawn[2], drawn[3], drawn[4]};
 }
 

@@ -18,11 +18,9 @@ struct SweepRange {
 
 // Documented in docs/simulator.md ("Robustness sweep").
 inline constexpr SweepRange kSweepRanges[] = {
-    {"mass", 0.8, 1.2},
-    {"inertia", 0.7, 1.3},
+    {"mass", 0.8, 1.2},       {"inertia", 0.7, 1.3},
     {"motor_tau", 0.67, 1.5},  // both time constants: 30 ms spin-up -> 20 .. 45 ms
-    {"vibration", 0.5, 2.0},
-    {"noise", 0.5, 2.0},
+    {"vibration", 0.5, 2.0},  {"noise", 0.5, 2.0},
 };
 
 // The draw of run `seed`: from a generator of its own, so the same seed draws the same vehicle
