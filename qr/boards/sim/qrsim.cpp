@@ -26,7 +26,8 @@ constexpr const char* kUsage = R"(usage:
   qrsim --serve [--stdio] [--seed N] [--vehicle FILE] [--seconds S] [--status]
   qrsim --scenario NAME|FILE [--seconds S] [--seed N] [--vehicle FILE] [--param NAME=VALUE]...
         [--no-noise] [--trace FILE.csv] [--record FILE.csv] [--json]
-  qrsim --sweep NAME|FILE [--seeds N] [--seed N] [--seconds S] [--vehicle FILE] [--param NAME=VALUE]...
+  qrsim --sweep NAME|FILE [--seeds N] [--no-draw] [--seed N] [--seconds S] [--vehicle FILE]
+        [--param NAME=VALUE]...
   qrsim --replay IN.csv --out OUT.csv [--double]
   qrsim --list
   qrsim --help
@@ -47,6 +48,7 @@ rate) flying in a simulated IN4073-class quadrotor.
                    then per band {"sweep", "band", "passed", "of", "worst"}; exit status 0 when
                    every run passed
   --seeds N        sweep: how many runs (seeds --seed .. --seed + N - 1)
+  --no-draw        sweep: every run on the scenario's own vehicle, only the seed changes
   --seconds S      scenario: scored flight time from the manoeuvre on (default per scenario);
                    serve: stop after S seconds of flight time (default: run until exit)
   --seed N         seed of every random source (sensor noise, biases, vibration phases);
@@ -87,6 +89,7 @@ int main(int argc, char** argv) {
   qrsim::RunOptions scenario;
   qrsim::ScenarioScript script;
   int seeds = 30;
+  bool draw = true;
   qrsim::ServeOptions serve;
   bool json = false;
   bool stdio = false;
@@ -123,6 +126,8 @@ int main(int argc, char** argv) {
       command = arg == "--scenario" ? Command::scenario : Command::sweep;
       std::string error;
       if (!qrsim::find_scenario(v, script, error)) return usage_error(error);
+    } else if (arg == "--no-draw") {
+      draw = false;
     } else if (arg == "--seeds") {
       const char* v = value("N");
       double n = 0;
@@ -208,7 +213,7 @@ int main(int argc, char** argv) {
       scenario.vehicle = vehicle;
       scenario.vehicle_name = vehicle_name;
       bool all = true;
-      for (const qrsim::BandSummary& b : qrsim::run_sweep(script, scenario, seeds, stdout))
+      for (const qrsim::BandSummary& b : qrsim::run_sweep(script, scenario, seeds, draw, stdout))
         all = all && b.passed == b.of;
       return all ? 0 : 1;
     }

@@ -36,12 +36,13 @@ VehicleDraw draw_vehicle(uint64_t seed) {
   return {drawn[0], drawn[1], drawn[2], drawn[3], drawn[4]};
 }
 
-std::vector<BandSummary> run_sweep(const ScenarioScript& script, const RunOptions& options, int seeds, FILE* out) {
+std::vector<BandSummary> run_sweep(const ScenarioScript& script, const RunOptions& options, int seeds, bool draw,
+                                   FILE* out) {
   std::vector<BandSummary> summary(script.bands.size());
   for (int i = 0; i < seeds; ++i) {
     RunOptions run = options;
     run.seed = options.seed + static_cast<uint64_t>(i);
-    run.draw = draw_vehicle(run.seed);
+    if (draw) run.draw = draw_vehicle(run.seed);
     const ScenarioResult r = run_scenario(script, run);
     std::string line = to_json(r);
     line.insert(1, "\"sweep\": \"" + script.name + "\", ");

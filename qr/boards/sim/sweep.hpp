@@ -34,8 +34,10 @@ struct BandSummary {
   double worst = 0;  // NaN when a run did not measure the figure
 };
 
-// Runs seeds options.seed .. options.seed + seeds - 1; prints each run's JSON line (with
-// "sweep": the scenario) and then one summary line per band to `out`. Returns the summaries.
-std::vector<BandSummary> run_sweep(const ScenarioScript& script, const RunOptions& options, int seeds, FILE* out);
+// Runs seeds options.seed .. options.seed + seeds - 1, each on its drawn vehicle (draw false:
+// on the scenario's own, the seeds alone); prints each run's JSON line (with "sweep": the
+// scenario) and then one summary line per band to `out`. Returns the summaries.
+std::vector<BandSummary> run_sweep(const ScenarioScript& script, const RunOptions& options, int seeds, bool draw,
+                                   FILE* out);
 
 }  // namespace qrsim
