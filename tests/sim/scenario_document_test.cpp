@@ -24,10 +24,11 @@ std::vector<std::string> section(const std::string& heading) {
   EXPECT_FALSE(all.empty()) << "cannot read " << QR_SIMULATOR_DOC;
   const size_t level = heading.find(' ');
   std::vector<std::string> lines;
-  bool inside = false;
+  bool inside = false, in_code = false;  // a "# comment" in a code block is no heading
   for (const std::string& line : all) {
+    if (line.rfind("```", 0) == 0) in_code = !in_code;
     const size_t hashes = line.find_first_not_of('#');
-    const bool is_heading = line.rfind("#", 0) == 0 && hashes != std::string::npos && line[hashes] == ' ';
+    const bool is_heading = !in_code && line.rfind("#", 0) == 0 && hashes != std::string::npos && line[hashes] == ' ';
     if (is_heading && hashes <= level) inside = line == heading;
     else if (inside) lines.push_back(line);
   }
@@ -89,6 +90,27 @@ TEST(ScenarioDocument, TheFigureTableIsTheCodes) {
   std::vector<std::string> code;
   for (const qrsim::FigureSpec& f : qrsim::kFigureTable) code.push_back(f.name);
   EXPECT_EQ(documented, code) << "the figures of section 6.5, in print order";
+}
+
+// The example of section 6.2, the first code block there, is a file that reads.
+TEST(ScenarioDocument, TheExampleReads) {
+  std::string text;
+  bool inside = false, done = false;
+  for (const std::string& line : section("### 6.2 The file format")) {
+    if (done) break;
+    if (line.rfind("```", 0) == 0) {
+      done = inside;
+      inside = !inside;
+    } else if (inside) {
+      text += line + "\n";
+    }
+  }
+  qrsim::ScenarioScript script;
+  std::string error;
+  ASSERT_TRUE(qrsim::parse_scenario(text, "my-bank", "the example", script, error)) << error << "\n" << text;
+  EXPECT_EQ(script.events.size(), 2u);
+  EXPECT_EQ(script.bands.size(), 3u);
+  EXPECT_FALSE(script.known_failure.empty());
 }
 
 // A flight prints exactly the figures of the table (those it measures in every flight, and the
