@@ -39,6 +39,8 @@ void Quadrotor::set_disturbance(const Vec3& torque_body, const Vec3& force_world
   disturbance_force_ = force_world;
 }
 
+void Quadrotor::set_wind(const Vec3& wind_world) { wind_ = wind_world; }
+
 void Quadrotor::rest_on_ground(double north, double east) {
   PlantState s;
   // Standing on four feet, each carrying a quarter of the weight.
@@ -51,7 +53,8 @@ void Quadrotor::rest_on_ground(double north, double east) {
 Quadrotor::Derivative Quadrotor::evaluate(const PlantState& s) const {
   const VehicleParams& v = vehicle_;
   Derivative d;
-  const Vec3 air_velocity = rotate_inverse(s.attitude, s.velocity);  // still air
+  // The vehicle's velocity through the air, which moves at the wind's velocity.
+  const Vec3 air_velocity = rotate_inverse(s.attitude, s.velocity - wind_);
 
   Wrench body = {airframe_drag(v, air_velocity), {}};
   for (size_t i = 0; i < kRotorCount; ++i) {

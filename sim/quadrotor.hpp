@@ -42,6 +42,9 @@ class Quadrotor {
   // External loads (a gust, a push), held until changed: a torque in body axes and a force in
   // world axes, both acting on the centre of mass.
   void set_disturbance(const Vec3& torque_body, const Vec3& force_world);
+  // The air's velocity in world axes (a steady wind), held until changed: the airframe and rotor
+  // drag act on the velocity relative to it. Still air by default.
+  void set_wind(const Vec3& wind_world);
 
   void step(double dt);
 
@@ -93,6 +96,7 @@ class Quadrotor {
   std::array<double, kRotorCount> phase_{};
   Vec3 disturbance_torque_;
   Vec3 disturbance_force_;
+  Vec3 wind_;
   double volts_;
   double current_ = 0;
 };

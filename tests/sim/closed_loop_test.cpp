@@ -1,7 +1,7 @@
-// The host firmware flying in the simulator, headless, scored by the scenario runner against the
-// bands of issue 6 (the same bands qrsim --scenario judges by). Each test prints its figures as
-// the JSON line qrsim would. Durations: as the brief gives them (hover 30 s); the others use the
-// scenarios' default windows, which already end once the figure is decided.
+// The host firmware flying in the simulator, headless, beyond what the scenario files' bands say
+// (ScenarioFiles.* flies every file): the safety timelines, the figures' meaning on the truth,
+// ground start and wind, determinism, replay and a sweep of vehicles. Each test prints its
+// figures as the JSON line qrsim would.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -17,48 +17,38 @@
 
 namespace {
 
-qrsim::ScenarioResult fly(const std::string& name, double seconds = 0, uint64_t seed = 1,
-                          const sim::VehicleParams& vehicle = sim::default_vehicle(),
-                          const std::string& label = "in4073") {
-  qrsim::ScenarioOptions options;
-  options.name = name;
+qrsim::ScenarioScript builtin(const std::string& name) {
+  qrsim::ScenarioScript script;
+  std::string error;
+  EXPECT_TRUE(qrsim::find_scenario(name, script, error)) << error;
+  return script;
+}
+
+qrsim::ScenarioScript parsed(const std::string& text) {
+  qrsim::ScenarioScript script;
+  std::string error;
+  EXPECT_TRUE(qrsim::parse_scenario(text, "test", "test", script, error)) << error;
+  return script;
+}
+
+qrsim::ScenarioResult fly(const qrsim::ScenarioScript& script, double seconds = 0, uint64_t seed = 1,
+                          const qrsim::VehicleDraw& draw = {}) {
+  qrsim::RunOptions options;
   options.seconds = seconds;
   options.seed = seed;
-  options.vehicle = vehicle;
-  options.vehicle_name = label;
-  const qrsim::ScenarioResult result = qrsim::run_scenario(options);
+  options.draw = draw;
+  const qrsim::ScenarioResult result = qrsim::run_scenario(script, options);
   std::printf("%s\n", qrsim::to_json(result).c_str());
   return result;
+}
+
+qrsim::ScenarioResult fly(const std::string& name, double seconds = 0, uint64_t seed = 1) {
+  return fly(builtin(name), seconds, seed);
 }
 
 void expect_bands_hold(const qrsim::ScenarioResult& r) {
   EXPECT_TRUE(r.error.empty()) << r.error;
   for (const qrsim::CheckResult& c : r.checks) EXPECT_TRUE(c.pass) << c.band << " (" << r.scenario << ")";
-}
-
-TEST(ClosedLoop, HoverThirtySecondsWithNoiseAndVibration) {
-  const qrsim::ScenarioResult r = fly("hover", 30);
-  expect_bands_hold(r);
-  EXPECT_LT(r.figure("att_rms_deg_truth"), 1.0);
-  EXPECT_EQ(r.figure("engine_saturation_pct"), 0);
-}
-
-// The steps and the impulse are the bands that found the chain's first tuning wanting: a P-only
-// cascade with C1 = 256 tilted to 24.6° for a 10° step (docs/signal-chain.md has the story).
-TEST(ClosedLoop, RollStepOfTenDegrees) {
-  const qrsim::ScenarioResult r = fly("step-roll");
-  expect_bands_hold(r);
-  EXPECT_LT(r.figure("rise_s"), 0.35);
-  EXPECT_LT(r.figure("overshoot_pct"), 10);
-  EXPECT_LT(r.figure("settle_s"), 1.0);
-}
-
-TEST(ClosedLoop, PitchStepOfTenDegrees) {
-  const qrsim::ScenarioResult r = fly("step-pitch");
-  expect_bands_hold(r);
-  EXPECT_LT(r.figure("rise_s"), 0.35);
-  EXPECT_LT(r.figure("overshoot_pct"), 10);
-  EXPECT_LT(r.figure("settle_s"), 1.0);
 }
 
 // On the truth against the pilot's set-point: the yaw loop's integral holds the rate where the P
@@ -67,7 +57,6 @@ TEST(ClosedLoop, YawRateStepReachesItsSetpoint) {
   const qrsim::ScenarioResult r = fly("yaw-rate");
   expect_bands_hold(r);
   EXPECT_LT(r.figure("yaw_rate_error_pct"), 10);
-  EXPECT_LT(r.figure("max_tilt_deg"), 2);
   EXPECT_LT(r.figure("yaw_rate_p_only_rad_s"), 0.9 * r.figure("yaw_rate_setpoint_rad_s"))
       << "the P term alone falls short";
 }
@@ -76,13 +65,6 @@ TEST(ClosedLoop, FullYawStickReachesItsSetpoint) {
   const qrsim::ScenarioResult r = fly("yaw-full-stick");
   expect_bands_hold(r);
   EXPECT_NEAR(r.figure("yaw_rate_setpoint_rad_s"), 2.0, 0.01);
-  EXPECT_LT(r.figure("yaw_rate_error_pct"), 10);
-}
-
-TEST(ClosedLoop, TorqueImpulseIsRejectedWithinASecond) {
-  const qrsim::ScenarioResult r = fly("disturbance");
-  expect_bands_hold(r);
-  EXPECT_LT(r.figure("recovery_s"), 1.0);
 }
 
 // An upset past the 45° tilt limit that the controller can take back: the tilt watchdog waits its
@@ -90,15 +72,24 @@ TEST(ClosedLoop, TorqueImpulseIsRejectedWithinASecond) {
 TEST(ClosedLoop, LargePushPastTheTiltLimitRecoversWithoutPanic) {
   const qrsim::ScenarioResult r = fly("large-push");
   expect_bands_hold(r);
-  EXPECT_GT(r.figure("max_tilt_deg"), 45.0) << "the push must take the vehicle past the tilt limit";
-  EXPECT_LT(r.figure("recovery_s"), 1.0);
-  EXPECT_EQ(r.final_mode, "full");
+  EXPECT_GT(r.figure("max_tilt_deg_truth"), 45.0) << "the push must take the vehicle past the tilt limit";
   EXPECT_GT(r.figure("height_m_end"), 1.0) << "still flying, not on the ground";
 }
 
+// The step figures are the truth's: the true peak is the set-point plus the overshoot, and the
+// estimate's figures (which read the bank low, issue 14) are printed beside, not instead.
+TEST(ClosedLoop, StepFiguresJudgeTheTruth) {
+  const qrsim::ScenarioResult r = fly("step-roll");
+  const double peak = r.figure("step_setpoint_deg") * (1 + r.figure("overshoot_pct") / 100);
+  EXPECT_NEAR(r.figure("max_tilt_deg_truth"), peak, 0.2);
+  EXPECT_FALSE(std::isnan(r.figure("overshoot_pct_est")));
+  EXPECT_NE(r.figure("overshoot_pct"), r.figure("overshoot_pct_est"));
+}
+
+// The safety timeline of a pulled cable, whatever the landing (link-loss.txt judges that).
 TEST(ClosedLoop, LinkLossEndsInSafeWithEnginesStill) {
   const qrsim::ScenarioResult r = fly("link-loss");
-  expect_bands_hold(r);
+  EXPECT_TRUE(r.error.empty()) << r.error;
   EXPECT_EQ(r.final_mode, "safe");
   EXPECT_EQ(r.figure("engines_at_end_max"), 0);
   // docs/safety.md: panic after the 250 ms link timeout, 2 s hold, 1 s ramp, then safe.
@@ -108,10 +99,33 @@ TEST(ClosedLoop, LinkLossEndsInSafeWithEnginesStill) {
 
 TEST(ClosedLoop, PanicEndsInSafeWithEnginesStill) {
   const qrsim::ScenarioResult r = fly("panic");
-  expect_bands_hold(r);
+  EXPECT_TRUE(r.error.empty()) << r.error;
   EXPECT_EQ(r.final_mode, "safe");
   EXPECT_EQ(r.figure("engines_at_end_max"), 0);
   EXPECT_LT(r.figure("panic_after_s"), 0.1);  // the request's first send is answered
+  // A fall from 1.5 m can be no faster than free fall from there.
+  const double touchdown = r.figure("touchdown_speed_m_s");
+  EXPECT_GT(touchdown, 0);
+  EXPECT_LT(touchdown, std::sqrt(2 * 9.80665 * 1.6));
+}
+
+// Armed on the ground with the lift stick down: the window starts there, nothing takes off, and
+// there is no touchdown to measure.
+TEST(ClosedLoop, GroundStartStaysOnTheGroundWithTheLiftDown) {
+  const qrsim::ScenarioResult r = fly(parsed("seconds: 2\nstart: ground\nband final_mode == full\n"));
+  expect_bands_hold(r);
+  EXPECT_LT(r.figure("height_m_end"), 0.1);
+  EXPECT_TRUE(std::isnan(r.figure("touchdown_speed_m_s")));
+  EXPECT_LT(r.figure("sim_seconds"), 8) << "no take-off and settle before the window";
+}
+
+// A steady wind blows the hovering vehicle downwind (the pilot holds height, not position).
+TEST(ClosedLoop, WindBlowsTheVehicleDownwind) {
+  const qrsim::ScenarioResult still = fly(parsed("seconds: 4\nband final_mode == full\n"));
+  const qrsim::ScenarioResult windy = fly(parsed("seconds: 4\nat 0 wind 0 4 0\nband final_mode == full\n"));
+  expect_bands_hold(windy);
+  EXPECT_GT(windy.figure("drift_m_end"), 1.0);
+  EXPECT_GT(windy.figure("drift_m_end"), 5 * still.figure("drift_m_end"));
 }
 
 TEST(ClosedLoop, SameSeedSameFlight) {
@@ -146,11 +160,10 @@ std::vector<std::map<std::string, std::string>> read_csv(const std::string& path
 // recording carries exactly what the QR read, and the replay is the same integer chain.
 TEST(ClosedLoop, ReplayOfASimulatedFlightIsBitIdentical) {
   const std::string dir = ::testing::TempDir();
-  qrsim::ScenarioOptions options;
-  options.name = "step-roll";
+  qrsim::RunOptions options;
   options.record_path = dir + "sim_flight_record.csv";
   options.trace_path = dir + "sim_flight_trace.csv";
-  const qrsim::ScenarioResult flown = qrsim::run_scenario(options);
+  const qrsim::ScenarioResult flown = qrsim::run_scenario(builtin("step-roll"), options);
   ASSERT_TRUE(flown.error.empty()) << flown.error;
   std::ostringstream errors;
   ASSERT_EQ(qr::host::run_replay(options.record_path.c_str(), (dir + "sim_flight_replay.csv").c_str(), errors), 0)
@@ -192,18 +205,16 @@ TEST(ClosedLoop, SeededSweepOfVehiclesStaysStable) {
   }
   for (size_t i = 0; i < variants.size(); ++i) {
     const Variant& v = variants[i];
-    sim::VehicleParams vehicle = sim::default_vehicle();
-    vehicle.mass_kg *= v.mass;
-    vehicle.inertia_kgm2 = vehicle.inertia_kgm2 * v.inertia;
-    vehicle.motor_tau_up_s = v.tau_up;
-    vehicle.motor_tau_down_s = v.tau_up * 5 / 3;
+    const double tau_default = sim::default_vehicle().motor_tau_up_s;
     char label[96];
     std::snprintf(label, sizeof label, "in4073 mass x%.2f inertia x%.2f lag %.0f ms", v.mass, v.inertia,
                   v.tau_up * 1000);
-    const qrsim::ScenarioResult r = fly("disturbance", 3, 100 + i, vehicle, label);
+    const qrsim::ScenarioResult r = fly(builtin("disturbance"), 3, 100 + i,
+                                        {v.mass, v.inertia, v.tau_up / tau_default, 1, 1});
     EXPECT_TRUE(r.error.empty()) << label << ": " << r.error;
     EXPECT_EQ(r.final_mode, "full") << label;
-    EXPECT_LT(r.figure("max_tilt_deg"), 30) << label;
+    EXPECT_NEAR(r.figure("motor_tau_ms"), v.tau_up * 1000, 1e-6) << label;
+    EXPECT_LT(r.figure("max_tilt_deg_truth"), 30) << label;
     EXPECT_LT(r.figure("att_rms_deg_last_s"), 2) << label;
   }
 }

@@ -1,3 +1,6 @@
+// One scenario flight: the vehicle the script describes, the standard preflight, the script's
+// timed events, the record of truth and estimate every control period, then the figures and
+// the bands (scenario_score.cpp).
 #include <qr/boards/sim/scenario.hpp>
 
 #include <algorithm>
@@ -7,9 +10,9 @@
 #include <ctime>
 #include <numbers>
 
-#include <qr/boards/sim/manoeuvres.hpp>
+#include <qr/boards/sim/flight_record.hpp>
 #include <qr/boards/sim/pilot.hpp>
-#include <qr/boards/sim/scoring.hpp>
+#include <qr/boards/sim/scenario_score.hpp>
 #include <qr/boards/sim/sim_qr.hpp>
 #include <qr/host/replay.hpp>
 
@@ -17,10 +20,11 @@ namespace qrsim {
 namespace {
 
 constexpr double kDeg = 180 / std::numbers::pi;
+constexpr double kRad = std::numbers::pi / 180;
 
 // ---- the flight plan ------------------------------------------------------------------------
-// What the pilot does before the manoeuvre, one phase after the other. Each phase has a time
-// limit; a flight that overruns one fails with the phase's name as its error.
+// What the pilot does before the manoeuvre, one phase after the other. A flight still in the
+// preflight after kPreflightLimit fails with the phase's name as its error.
 enum class Phase : uint8_t { power_up, calibrate, arm, take_off, settle, manoeuvre };
 
 constexpr double kHoverHeight = 1.5;    // m, centre of mass above the ground
@@ -41,14 +45,172 @@ uint16_t lift_for_height(const sim::Quadrotor& plant, double target, double ramp
   return static_cast<uint16_t>(std::clamp(std::lround(lift), 0L, 1000L));
 }
 
-// What is recorded every control period.
-struct Record {
-  Trace roll_est, pitch_est, roll_true, pitch_true, roll_sp, pitch_sp;  // degrees
-  Trace r_true;                                                         // rad/s
-  Trace att_err, est_err;                                               // degrees, both axes
-  Trace tilt;                                                           // degrees
-  Trace saturated;                                                      // 0 or 100
+int16_t stick(double value) { return static_cast<int16_t>(std::clamp(std::lround(value), -1000L, 1000L)); }
+
+// What the pilot's hands hold after t0, changed by the script's events.
+struct Hands {
+  double roll_deg = 0, pitch_deg = 0, yaw_rad_s = 0;
+  bool hold_height = true;  // else lift_share of the hover lift, open loop
+  double height = kHoverHeight;
+  double lift_share = 0;
+
+  Sticks sticks(const sim::Quadrotor& plant, const wire::ParameterValues& p) const {
+    // Full control: roll and pitch sticks are angle set-points, full stick max_tilt_mrad; the yaw
+    // stick is a rate, full stick max_yaw_rate_rad_s (Q10 rad/s).
+    const double per_degree = kRad * 1000 / (p.get(wire::ParamId::max_tilt_mrad) * 1e-3);
+    const double max_rate = std::ldexp(p.get(wire::ParamId::max_yaw_rate_rad_s), -10);
+    Sticks s;
+    s.lift = hold_height
+                 ? lift_for_height(plant, height, 1)
+                 : static_cast<uint16_t>(std::clamp(std::lround(lift_share * plant.hover_command()), 0L, 1000L));
+    s.roll = stick(roll_deg * per_degree);
+    s.pitch = stick(pitch_deg * per_degree);
+    s.yaw = stick(yaw_rad_s / max_rate * 1000);
+    return s;
+  }
 };
+
+// The vehicle as flown: the base (the --vehicle file, else the scenario's, else the default),
+// the scenario's modifiers, the sweep's draw, and --no-noise last.
+sim::VehicleParams vehicle_for(const ScenarioScript& script, const RunOptions& options, VehicleDraw& flown) {
+  sim::VehicleParams v = options.vehicle ? *options.vehicle : script.vehicle ? *script.vehicle : sim::default_vehicle();
+  const double tau_ratio = v.motor_tau_down_s / v.motor_tau_up_s;
+  flown.mass = script.mass_scale * options.draw.mass;
+  flown.inertia = script.inertia_scale * options.draw.inertia;
+  flown.noise = script.noise_scale * options.draw.noise;
+  flown.vibration = script.vibration_scale * options.draw.vibration;
+  v.mass_kg *= flown.mass;
+  v.inertia_kgm2 = v.inertia_kgm2 * flown.inertia;
+  if (!std::isnan(script.motor_tau_ms)) v.motor_tau_up_s = script.motor_tau_ms * 1e-3;
+  v.motor_tau_up_s *= options.draw.motor_tau;
+  v.motor_tau_down_s = v.motor_tau_up_s * tau_ratio;
+  flown.motor_tau = v.motor_tau_up_s * 1e3;  // reported in ms
+  if (!std::isnan(script.battery_pct)) v.battery_initial_soc = script.battery_pct / 100;
+  v.gyro_noise_dps_rthz *= flown.noise;
+  v.accel_noise_ug_rthz *= flown.noise;
+  v.battery_sense_noise_mv *= flown.noise;
+  v.vibration_accel_g = v.vibration_accel_g * flown.vibration;
+  v.vibration_gyro_dps = v.vibration_gyro_dps * flown.vibration;
+  if (!options.sensor_noise) {
+    v.gyro_noise_dps_rthz = v.accel_noise_ug_rthz = 0;
+    v.gyro_bias_dps = v.accel_bias_xy_mg = v.accel_bias_z_mg = v.scale_error = 0;
+    v.vibration_accel_g = v.vibration_gyro_dps = {};
+    v.battery_sense_noise_mv = 0;
+  }
+  return v;
+}
+
+// The pushes (torque, force events) acting at `since`, summed.
+void apply_pushes(const ScenarioScript& script, double since, sim::Quadrotor& plant) {
+  sim::Vec3 torque, force;
+  for (const Event& e : script.events) {
+    if (since < e.at_s || since >= e.at_s + e.duration_s) continue;
+    if (e.action == Action::torque) torque += e.vector;
+    if (e.action == Action::force) force += e.vector;
+  }
+  plant.set_disturbance(torque, force);
+}
+
+void apply(const Event& e, Hands& hands, Pilot& pilot, sim::Quadrotor& plant) {
+  switch (e.action) {
+    case Action::roll: hands.roll_deg = e.value; break;
+    case Action::pitch: hands.pitch_deg = e.value; break;
+    case Action::yaw: hands.yaw_rad_s = e.value; break;
+    case Action::lift_hold:
+      hands.hold_height = true;
+      hands.height = kHoverHeight;
+      break;
+    case Action::lift_height:
+      hands.hold_height = true;
+      hands.height = e.value;
+      break;
+    case Action::lift_share:
+      hands.hold_height = false;
+      hands.lift_share = e.value;
+      break;
+    case Action::mode: pilot.request_mode(e.mode); break;
+    case Action::param: pilot.set_parameter(e.param, e.raw); break;
+    case Action::torque:
+    case Action::force: break;  // apply_pushes, every tick while they last
+    case Action::wind: plant.set_wind(e.vector); break;
+    case Action::link: pilot.go_silent(e.value == 0); break;
+  }
+}
+
+void write_trace_header(FILE* trace) {
+  std::fprintf(trace,
+               "t_s,mode,roll_deg,pitch_deg,yaw_deg,roll_est_deg,pitch_est_deg,yaw_est_deg,roll_sp_deg,pitch_sp_deg,"
+               "p_rad_s,q_rad_s,r_rad_s,p_est_rad_s,q_est_rad_s,r_est_rad_s,engine0,engine1,engine2,engine3,"
+               "height_m,north_m,east_m,battery_v,roll_est_e4,pitch_est_e4,yaw_est_e4\n");
+}
+
+void write_trace_line(FILE* trace, double t, uint8_t mode, SimQr& qr) {
+  const sim::Quadrotor& plant = qr.world.plant();
+  const sim::PlantState& ps = plant.state();
+  const sim::Euler e = sim::to_euler(ps.attitude);
+  const auto& ch = qr.firmware.chain();
+  const qr::EngineCommand& eng = qr.board.engines();
+  std::fprintf(trace,
+               "%.3f,%u,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%u,%u,%u,%u,%.3f,%."
+               "3f,%.3f,%.3f,%d,%d,%d\n",
+               t, mode, e.roll * kDeg, e.pitch * kDeg, e.yaw * kDeg, ch.roll_e4() * 1e-4 * kDeg,
+               ch.pitch_e4() * 1e-4 * kDeg, ch.yaw_e4() * 1e-4 * kDeg, ch.roll_setpoint_e4() * 1e-4 * kDeg,
+               ch.pitch_setpoint_e4() * 1e-4 * kDeg, ps.rate.x, ps.rate.y, ps.rate.z, ch.p_e3() * 1e-3,
+               ch.q_e3() * 1e-3, ch.r_e3() * 1e-3, eng.value[0], eng.value[1], eng.value[2], eng.value[3],
+               -ps.position.z, ps.position.x, ps.position.y, plant.battery_volts(), ch.roll_e4(), ch.pitch_e4(),
+               ch.yaw_e4());
+}
+
+// One control period of the record, from t0 on.
+void record_tick(FlightRecord& rec, double t, uint8_t mode, SimQr& qr, uint16_t idle, bool& airborne,
+                 double& last_down_speed) {
+  const sim::Quadrotor& plant = qr.world.plant();
+  const sim::PlantState& s = plant.state();
+  const sim::Euler e = sim::to_euler(s.attitude);
+  const auto& chain = qr.firmware.chain();
+  const double roll_est = chain.roll_e4() * 1e-4 * kDeg, pitch_est = chain.pitch_e4() * 1e-4 * kDeg;
+  const double roll_sp = chain.roll_setpoint_e4() * 1e-4 * kDeg;
+  const double pitch_sp = chain.pitch_setpoint_e4() * 1e-4 * kDeg;
+  const double roll = e.roll * kDeg, pitch = e.pitch * kDeg;
+  rec.roll_est.push_back({t, roll_est});
+  rec.pitch_est.push_back({t, pitch_est});
+  rec.roll_true.push_back({t, roll});
+  rec.pitch_true.push_back({t, pitch});
+  rec.roll_sp.push_back({t, roll_sp});
+  rec.pitch_sp.push_back({t, pitch_sp});
+  rec.r_true.push_back({t, s.rate.z});
+  const sim::Vec3 body_down = sim::rotate(s.attitude, {0, 0, 1});
+  rec.tilt.push_back({t, std::acos(std::clamp(body_down.z, -1.0, 1.0)) * kDeg});
+  const double er = roll - roll_sp, ep = pitch - pitch_sp;
+  rec.worst_err.push_back({t, std::max(std::abs(er), std::abs(ep))});
+  if (mode == static_cast<uint8_t>(wire::Mode::full_control)) {
+    rec.att_err.push_back({t, std::sqrt((er * er + ep * ep) / 2)});
+    rec.axis_err.push_back({t, std::max(std::abs(er), std::abs(ep))});
+    const double xr = roll_est - roll, xp = pitch_est - pitch;
+    rec.est_err.push_back({t, std::sqrt((xr * xr + xp * xp) / 2)});
+    rec.est_err_axis.push_back({t, std::max(std::abs(xr), std::abs(xp))});
+    bool at_limit = false;
+    for (uint16_t v : qr.board.engines().value) at_limit = at_limit || v >= 1000 || v <= idle;
+    rec.saturated.push_back({t, at_limit ? 100.0 : 0.0});
+  }
+  const double rested = plant.battery().open_circuit_volts();
+  if (mode == static_cast<uint8_t>(wire::Mode::panic) && !rec.entered_panic) {
+    rec.entered_panic = true;
+    rec.panic_at = t;
+    rec.rested_v_at_panic = rested;
+  }
+  if (rec.entered_panic && mode == static_cast<uint8_t>(wire::Mode::safe) && std::isnan(rec.safe_at)) rec.safe_at = t;
+  rec.battery_v_min = std::isnan(rec.battery_v_min) ? plant.battery_volts()
+                                                    : std::min(rec.battery_v_min, plant.battery_volts());
+  rec.rested_v_min = std::isnan(rec.rested_v_min) ? rested : std::min(rec.rested_v_min, rested);
+  // Touchdown: the first tick with a contact point on the ground after one with none. The speed
+  // is the last airborne tick's (at most one control period, 0.01 m/s of free fall, earlier):
+  // the contact's damper stops the vehicle within a millisecond.
+  const bool in_air = plant.deepest_contact() < 0;
+  if (airborne && !in_air && std::isnan(rec.touchdown_speed)) rec.touchdown_speed = last_down_speed;
+  airborne = in_air;
+  last_down_speed = std::abs(s.velocity.z);
+}
 
 }  // namespace
 
@@ -59,48 +221,39 @@ double ScenarioResult::figure(const std::string& name) const {
   return kNotMeasured;
 }
 
-ScenarioResult run_scenario(const ScenarioOptions& options) {
+const char* mode_name(uint8_t mode) { return wire::mode_key(static_cast<wire::Mode>(mode)); }
+
+ScenarioResult run_scenario(const ScenarioScript& script, const RunOptions& options) {
   const auto wall_start = std::chrono::steady_clock::now();
   const std::clock_t cpu_start = std::clock();
   ScenarioResult result;
-  result.scenario = options.name;
-  result.vehicle = options.vehicle_name;
-  const ScenarioSpec* spec = find_scenario(options.name);
-  if (spec == nullptr) {
-    result.error = "no scenario " + options.name;
-    return result;
-  }
-  const double seconds = options.seconds > 0 ? options.seconds : spec->default_seconds;
+  result.scenario = script.name;
+  result.known_failure = script.known_failure;
+  result.vehicle = options.vehicle  ? options.vehicle_name
+                   : script.vehicle ? script.vehicle_file
+                                    : std::string(sim::default_vehicle_name());
+  const double seconds = options.seconds > 0 ? options.seconds : script.seconds;
 
-  sim::VehicleParams vehicle = options.vehicle;
-  if (!options.sensor_noise) {
-    vehicle.gyro_noise_dps_rthz = vehicle.accel_noise_ug_rthz = 0;
-    vehicle.gyro_bias_dps = vehicle.accel_bias_xy_mg = vehicle.accel_bias_z_mg = vehicle.scale_error = 0;
-    vehicle.vibration_accel_g = vehicle.vibration_gyro_dps = {};
-    vehicle.battery_sense_noise_mv = 0;
-  }
+  VehicleDraw flown;
+  const sim::VehicleParams vehicle = vehicle_for(script, options, flown);
   std::unique_ptr<SimQr> qr = make_qr(vehicle, {.seed = options.seed});
   sim::Quadrotor& plant = qr->world.plant();
   Pilot pilot(qr->board);
 
   Phase phase = Phase::power_up;
-  double phase_start = 0, t0 = -1, t_end = 1e9;
-  double yaw_p = 0, yaw_steady_from = 0;
-  bool entered_panic = false;
-  bool manoeuvre_started = false;
-  double panic_at = kNotMeasured, safe_at = kNotMeasured;
+  double phase_start = 0;
   int calibration_requests = 0;
-  Record rec;
+  Hands hands;
+  size_t next_event = 0;
+  FlightRecord rec;
+  rec.t_end = 1e9;
+  bool airborne = false;
+  double last_down_speed = 0;
   FILE* record = options.record_path.empty() ? nullptr : std::fopen(options.record_path.c_str(), "w");
   if (record != nullptr) std::fprintf(record, "%s\n", qr::host::replay_input_header().c_str());
   bool recording = false;
   FILE* trace = options.trace_path.empty() ? nullptr : std::fopen(options.trace_path.c_str(), "w");
-  if (trace != nullptr) {
-    std::fprintf(trace,
-                 "t_s,mode,roll_deg,pitch_deg,yaw_deg,roll_est_deg,pitch_est_deg,yaw_est_deg,roll_sp_deg,pitch_sp_deg,"
-                 "p_rad_s,q_rad_s,r_rad_s,p_est_rad_s,q_est_rad_s,r_est_rad_s,engine0,engine1,engine2,engine3,"
-                 "height_m,north_m,east_m,battery_v,roll_est_e4,pitch_est_e4,yaw_est_e4\n");
-  }
+  if (trace != nullptr) write_trace_header(trace);
   const auto idle = static_cast<uint16_t>(qr->firmware.parameters().get(wire::ParamId::idle_level));
 
   for (;;) {
@@ -111,11 +264,18 @@ ScenarioResult run_scenario(const ScenarioOptions& options) {
       phase = next;
       phase_start = t;
     };
+    const auto begin_manoeuvre = [&] {
+      enter(Phase::manoeuvre);
+      rec.t0 = t;
+      rec.t_end = t + seconds;
+      airborne = plant.deepest_contact() < 0;
+    };
 
     // ---- the pilot ----
     switch (phase) {
       case Phase::power_up:  // sensors settle, parameters go up
         if (t - phase_start >= 0.3) {
+          for (const auto& [id, raw] : script.parameters) pilot.set_parameter(id, raw);
           for (const auto& [id, raw] : options.parameters) pilot.set_parameter(id, raw);
           enter(Phase::calibrate);
         }
@@ -132,7 +292,13 @@ ScenarioResult run_scenario(const ScenarioOptions& options) {
         }
         break;
       case Phase::arm:
-        if (view.mode == wire::Mode::full_control) enter(Phase::take_off);
+        if (view.mode != wire::Mode::full_control) break;
+        if (script.start == Start::ground) {
+          hands.hold_height = false;  // armed on the ground, lift stick down
+          begin_manoeuvre();
+        } else {
+          enter(Phase::take_off);
+        }
         break;
       case Phase::take_off: {
         pilot.set_sticks({lift_for_height(plant, kHoverHeight, (t - phase_start) / 1.0), 0, 0, 0});
@@ -142,22 +308,17 @@ ScenarioResult run_scenario(const ScenarioOptions& options) {
       }
       case Phase::settle:
         pilot.set_sticks({lift_for_height(plant, kHoverHeight, 1), 0, 0, 0});
-        if (t - phase_start >= kSettleSeconds) {
-          enter(Phase::manoeuvre);
-          t0 = t;
-          t_end = t0 + seconds;
-          yaw_p = qr->firmware.parameters().get(wire::ParamId::yaw_p) / 16.0;
-        }
+        if (t - phase_start >= kSettleSeconds) begin_manoeuvre();
         break;
-      case Phase::manoeuvre: {
-        const double since = t - t0;
-        Sticks s{lift_for_height(plant, kHoverHeight, 1), 0, 0, 0};
-        ManoeuvreStep step{*spec, since, !manoeuvre_started, s, pilot, plant, qr->firmware.parameters()};
-        fly_manoeuvre(step);
-        manoeuvre_started = true;
-        pilot.set_sticks(s);
-        break;
+      case Phase::manoeuvre: break;
+    }
+    if (phase == Phase::manoeuvre) {
+      const double since = t - rec.t0;
+      while (next_event < script.events.size() && script.events[next_event].at_s <= since + 1e-9) {
+        apply(script.events[next_event++], hands, pilot, plant);
       }
+      apply_pushes(script, since, plant);
+      pilot.set_sticks(hands.sticks(plant, qr->firmware.parameters()));
     }
     if (phase != Phase::manoeuvre && t > kPreflightLimit) {
       static const char* const kPhaseNames[] = {"power up", "calibration", "arming", "take-off", "settling"};
@@ -167,57 +328,9 @@ ScenarioResult run_scenario(const ScenarioOptions& options) {
     }
     pilot.step();
 
-    // ---- the record (from the manoeuvre on) ----
-    if (t0 >= 0) {
-      const sim::PlantState& s = plant.state();
-      const sim::Euler e = sim::to_euler(s.attitude);
-      const auto& chain = qr->firmware.chain();
-      const double roll_est = chain.roll_e4() * 1e-4 * kDeg, pitch_est = chain.pitch_e4() * 1e-4 * kDeg;
-      const double roll_sp = chain.roll_setpoint_e4() * 1e-4 * kDeg;
-      const double pitch_sp = chain.pitch_setpoint_e4() * 1e-4 * kDeg;
-      const double roll = e.roll * kDeg, pitch = e.pitch * kDeg;
-      rec.roll_est.push_back({t, roll_est});
-      rec.pitch_est.push_back({t, pitch_est});
-      rec.roll_true.push_back({t, roll});
-      rec.pitch_true.push_back({t, pitch});
-      rec.roll_sp.push_back({t, roll_sp});
-      rec.pitch_sp.push_back({t, pitch_sp});
-      rec.r_true.push_back({t, s.rate.z});
-      const sim::Vec3 body_down = sim::rotate(s.attitude, {0, 0, 1});
-      rec.tilt.push_back({t, std::acos(std::clamp(body_down.z, -1.0, 1.0)) * kDeg});
-      if (mode == static_cast<uint8_t>(wire::Mode::full_control)) {
-        const double er = roll - roll_sp, ep = pitch - pitch_sp;
-        rec.att_err.push_back({t, std::sqrt((er * er + ep * ep) / 2)});
-        const double xr = roll_est - roll, xp = pitch_est - pitch;
-        rec.est_err.push_back({t, std::sqrt((xr * xr + xp * xp) / 2)});
-        const qr::EngineCommand& eng = qr->board.engines();
-        bool at_limit = false;
-        for (uint16_t v : eng.value) at_limit = at_limit || v >= 1000 || v <= idle;
-        rec.saturated.push_back({t, at_limit ? 100.0 : 0.0});
-      }
-      if (mode == static_cast<uint8_t>(wire::Mode::panic) && !entered_panic) {
-        entered_panic = true;
-        panic_at = t;
-      }
-      if (entered_panic && mode == static_cast<uint8_t>(wire::Mode::safe) && std::isnan(safe_at)) safe_at = t;
-    }
-
-    if (trace != nullptr) {
-      const sim::PlantState& ps = plant.state();
-      const sim::Euler e = sim::to_euler(ps.attitude);
-      const auto& ch = qr->firmware.chain();
-      const qr::EngineCommand& eng = qr->board.engines();
-      std::fprintf(trace,
-                   "%.3f,%u,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%u,%u,%u,%u,%.3f,%."
-                   "3f,%.3f,%.3f,%d,%d,%d\n",
-                   t, mode, e.roll * kDeg, e.pitch * kDeg, e.yaw * kDeg, ch.roll_e4() * 1e-4 * kDeg,
-                   ch.pitch_e4() * 1e-4 * kDeg, ch.yaw_e4() * 1e-4 * kDeg, ch.roll_setpoint_e4() * 1e-4 * kDeg,
-                   ch.pitch_setpoint_e4() * 1e-4 * kDeg, ps.rate.x, ps.rate.y, ps.rate.z, ch.p_e3() * 1e-3,
-                   ch.q_e3() * 1e-3, ch.r_e3() * 1e-3, eng.value[0], eng.value[1], eng.value[2], eng.value[3],
-                   -ps.position.z, ps.position.x, ps.position.y, plant.battery_volts(), ch.roll_e4(), ch.pitch_e4(),
-                   ch.yaw_e4());
-    }
-    if (t >= t_end) break;
+    if (rec.t0 >= 0) record_tick(rec, t, mode, *qr, idle, airborne, last_down_speed);
+    if (trace != nullptr) write_trace_line(trace, t, mode, *qr);
+    if (t >= rec.t_end) break;
     recording = recording || mode == static_cast<uint8_t>(wire::Mode::calibration);
     if (!qr->tick()) break;  // the firmware stopped
     if (record != nullptr && recording) {
@@ -227,11 +340,28 @@ ScenarioResult run_scenario(const ScenarioOptions& options) {
                    in.gyro[2], in.accel[0], in.accel[1], in.accel[2], in.battery_mv, c.lift, c.roll, c.pitch, c.yaw);
     }
   }
-
   if (trace != nullptr) std::fclose(trace);
   if (record != nullptr) std::fclose(record);
 
-  // ---- figures ----
+  // ---- what only the end knows ----
+  EndState end;
+  end.battery_panic_volts = qr->firmware.parameters().get(wire::ParamId::battery_panic_mv) * 1e-3;
+  end.yaw_rate_setpoint = qr->firmware.chain().yaw_rate_setpoint_e3() * 1e-3;
+  {
+    // Where the yaw loop's P term alone would settle, its moment balancing the rotor drag's yaw
+    // damping:  yaw_p (r_sp - r) k_m w_max^2 / 1000 = c_rd l^2 (sum of rotor speeds) r
+    // (thrust units: w_i = e_i^2 / 1000, so a thrust unit is k_m w_max^2 / 1000 of yaw torque,
+    // engine_mixer.hpp; w_max = speed per volt x battery volts).
+    const double yaw_p = qr->firmware.parameters().get(wire::ParamId::yaw_p) / 16.0;
+    const sim::VehicleParams& v = plant.vehicle();
+    const double w_max = v.speed_per_volt() * plant.battery_volts();
+    double speeds = 0;
+    for (double w : plant.state().rotor_speed) speeds += w;
+    const double gain = yaw_p * v.torque_coeff * w_max * w_max / 1000;
+    const double damping = v.rotor_drag_coeff * v.arm_m * v.arm_m * speeds;
+    end.yaw_rate_p_only = end.yaw_rate_setpoint * gain / (gain + damping);
+  }
+
   const double sim_seconds = static_cast<double>(qr->world.now_us()) * 1e-6;
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   const uint8_t final_mode = static_cast<uint8_t>(qr->firmware.mode());
@@ -248,79 +378,16 @@ ScenarioResult run_scenario(const ScenarioOptions& options) {
   f.push_back({"cpu_seconds", static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC});
   f.push_back({"control_hz", static_cast<double>(qr::kControlHz)});
   f.push_back({"seed", static_cast<double>(options.seed)});
-  f.push_back({"att_rms_deg_truth", rms(rec.att_err, t0, t_end)});
-  f.push_back({"est_err_rms_deg", rms(rec.est_err, t0, t_end)});
-  f.push_back({"max_tilt_deg", peak_abs(rec.tilt, t0, t_end)});
-  f.push_back({"att_rms_deg_last_s", rms(rec.att_err, t_end - 1, t_end)});  // how it ended
+  f.push_back({"mass_scale", flown.mass});
+  f.push_back({"inertia_scale", flown.inertia});
+  f.push_back({"motor_tau_ms", flown.motor_tau});
+  f.push_back({"noise_scale", flown.noise});
+  f.push_back({"vibration_scale", flown.vibration});
+  add_flight_figures(script, rec, end, f);
 
-  StepFigures step;
-  if (spec->manoeuvre == Manoeuvre::roll_step || spec->manoeuvre == Manoeuvre::pitch_step) {
-    const bool roll = spec->manoeuvre == Manoeuvre::roll_step;
-    const Trace& sp = roll ? rec.roll_sp : rec.pitch_sp;
-    const Trace& est = roll ? rec.roll_est : rec.pitch_est;
-    // The step starts when the firmware's set-point moves (the stick's frame has arrived).
-    double t_step = kNotMeasured, target = 0;
-    for (const Sample& s : sp) {
-      if (std::abs(s.value) > 0.5 * spec->amount) {
-        t_step = s.t;
-        target = s.value;
-        break;
-      }
-    }
-    if (!std::isnan(t_step)) {
-      Trace held;
-      for (const Sample& s : est) {
-        if (s.t <= t0 + spec->hold_s) held.push_back(s);
-      }
-      step = step_response(held, t_step, mean(est, t0, t_step), target, 1.0);
-      f.push_back({"step_setpoint_deg", target});
-      f.push_back({"step_delay_s", t_step - t0});
-    }
-  }
-  f.push_back({"rise_s", step.rise_s});
-  f.push_back({"overshoot_pct", step.overshoot_pct});
-  f.push_back({"settle_s", step.settle_s});
-
-  if (spec->manoeuvre == Manoeuvre::yaw_rate_step && t0 >= 0) {
-    // Steady state over the last 40 % of the window, on the truth, against the pilot's set-point
-    // (the yaw loop's integral holds it there against the rotor drag's yaw damping). Beside it,
-    // what the P term alone would settle at, where its moment balances that damping:
-    //   yaw_p (r_sp - r) k_m w_max^2 / 1000 = c_rd l^2 (sum of rotor speeds) r
-    // (thrust units: w_i = e_i^2 / 1000, so a thrust unit is k_m w_max^2 / 1000 of yaw torque,
-    // engine_mixer.hpp; w_max = speed per volt x battery volts).
-    yaw_steady_from = t0 + 0.6 * seconds;
-    const double r = mean(rec.r_true, yaw_steady_from, t_end);
-    const double r_sp = qr->firmware.chain().yaw_rate_setpoint_e3() * 1e-3;
-    const sim::VehicleParams& v = plant.vehicle();
-    const double w_max = v.speed_per_volt() * plant.battery_volts();
-    double speeds = 0;
-    for (double w : plant.state().rotor_speed) speeds += w;
-    const double gain = yaw_p * v.torque_coeff * w_max * w_max / 1000;
-    const double damping = v.rotor_drag_coeff * v.arm_m * v.arm_m * speeds;
-    f.push_back({"yaw_rate_setpoint_rad_s", r_sp});
-    f.push_back({"yaw_rate_rad_s", r});
-    f.push_back({"yaw_rate_p_only_rad_s", r_sp * gain / (gain + damping)});
-    f.push_back({"yaw_rate_error_pct", std::abs(r / r_sp - 1) * 100});
-  }
-
-  if (spec->manoeuvre == Manoeuvre::torque_impulse && t0 >= 0) {
-    f.push_back({"peak_error_deg", peak_abs(rec.att_err, t0, t_end) * std::sqrt(2.0)});
-    Trace worst;  // the larger of the two axes' errors
-    for (size_t i = 0; i < rec.roll_true.size(); ++i) {
-      const double er = rec.roll_true[i].value - rec.roll_sp[i].value;
-      const double ep = rec.pitch_true[i].value - rec.pitch_sp[i].value;
-      worst.push_back({rec.roll_true[i].t, std::max(std::abs(er), std::abs(ep))});
-    }
-    f.push_back({"recovery_s", recovery_time(worst, t0, 1.0)});
-  }
-
-  if (spec->manoeuvre == Manoeuvre::link_loss || spec->manoeuvre == Manoeuvre::panic_request) {
-    f.push_back({"entered_panic", entered_panic ? 1.0 : 0.0});
-    f.push_back({"panic_after_s", panic_at - t0});
-    f.push_back({"safe_after_s", safe_at - t0});
-  }
-
-  f.push_back({"engine_saturation_pct", mean(rec.saturated, t0, t_end)});
+  const sim::Vec3 body_down = sim::rotate(plant.state().attitude, {0, 0, 1});
+  f.push_back({"final_upright", body_down.z >= std::cos(30 * kRad) ? 1.0 : 0.0});
+  f.push_back({"engine_saturation_pct", mean(rec.saturated, rec.t0, rec.t_end)});
   f.push_back({"engines_at_end_max", static_cast<double>(engines_max)});
   f.push_back({"deadline_misses", static_cast<double>(qr->scheduler.stats().deadline_misses)});
   f.push_back({"final_mode", static_cast<double>(final_mode)});
@@ -331,36 +398,7 @@ ScenarioResult run_scenario(const ScenarioOptions& options) {
   f.push_back({"requests_given_up", static_cast<double>(pilot.view().requests_given_up)});
   f.push_back({"nacks", static_cast<double>(pilot.view().nacks)});
 
-  // ---- judgement ----
-  result.pass = result.error.empty();
-  for (const Band& band : spec->bands) {
-    if (band.figure == nullptr) break;
-    const double value = result.figure(band.figure);
-    bool ok = false;
-    std::string text = band.figure;
-    char limit[32];
-    if (std::string(band.figure) == "final_mode") {
-      std::snprintf(limit, sizeof limit, "%s", mode_name(static_cast<uint8_t>(band.limit)));
-    } else {
-      std::snprintf(limit, sizeof limit, "%g", band.limit);
-    }
-    switch (band.compare) {
-      case Compare::below:
-        ok = value < band.limit;
-        text += std::string(" < ") + limit;
-        break;
-      case Compare::at_most:
-        ok = value <= band.limit;
-        text += std::string(" <= ") + limit;
-        break;
-      case Compare::equal:
-        ok = value == band.limit;
-        text += std::string(" == ") + limit;
-        break;
-    }
-    result.checks.push_back({text, ok});
-    result.pass = result.pass && ok;
-  }
+  judge(script, result);
   return result;
 }
 

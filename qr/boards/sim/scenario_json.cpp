@@ -1,16 +1,29 @@
-#include <qr/boards/sim/scenario.hpp>
-
 #include <cmath>
 #include <cstdio>
 
+#include <qr/boards/sim/scenario.hpp>
+
 namespace qrsim {
+namespace {
+
+// A JSON string: quotes and backslashes escaped, control characters dropped.
+std::string quoted(const std::string& text) {
+  std::string out = "\"";
+  for (char c : text) {
+    if (c == '"' || c == '\\') out += '\\';
+    if (static_cast<unsigned char>(c) >= 0x20) out += c;
+  }
+  return out + "\"";
+}
+
+}  // namespace
 
 std::string to_json(const ScenarioResult& r) {
-  std::string out = "{\"scenario\": \"" + r.scenario + "\", \"vehicle\": \"" + r.vehicle + "\"";
+  std::string out = "{\"scenario\": " + quoted(r.scenario) + ", \"vehicle\": " + quoted(r.vehicle);
   char buffer[64];
   for (const Figure& f : r.figures) {
     if (f.name == "final_mode") {
-      out += ", \"final_mode\": \"" + r.final_mode + "\"";
+      out += ", \"final_mode\": " + quoted(r.final_mode);
       continue;
     }
     if (std::isnan(f.value) || std::isinf(f.value)) {
@@ -22,10 +35,11 @@ std::string to_json(const ScenarioResult& r) {
     }
     out += ", \"" + f.name + "\": " + buffer;
   }
-  if (!r.error.empty()) out += ", \"error\": \"" + r.error + "\"";
+  if (!r.error.empty()) out += ", \"error\": " + quoted(r.error);
+  if (!r.known_failure.empty()) out += ", \"known_failure\": " + quoted(r.known_failure);
   out += ", \"bands\": {";
   for (size_t i = 0; i < r.checks.size(); ++i) {
-    out += (i == 0 ? "\"" : ", \"") + r.checks[i].band + "\": " + (r.checks[i].pass ? "true" : "false");
+    out += (i == 0 ? "" : ", ") + quoted(r.checks[i].band) + ": " + (r.checks[i].pass ? "true" : "false");
   }
   out += std::string("}, \"pass\": ") + (r.pass ? "true" : "false") + "}";
   return out;

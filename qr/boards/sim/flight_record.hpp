@@ -1,0 +1,38 @@
+// What a scenario flight records from t0 on, every control period, for the figures: the truth
+// from the plant, the firmware's estimate and set-points, and the events that happen once
+// (panic, touchdown). scenario.cpp fills it; scenario_score.cpp turns it into figures.
+#pragma once
+
+#include <qr/boards/sim/scoring.hpp>
+
+namespace qrsim {
+
+struct FlightRecord {
+  double t0 = -1;                                                       // the manoeuvre's start (s of simulated time)
+  double t_end = 0;                                                     // the window's end
+  Trace roll_true, pitch_true, roll_est, pitch_est, roll_sp, pitch_sp;  // degrees, every tick
+  Trace r_true;                                                         // rad/s
+  Trace tilt;                                                           // degrees from vertical
+  // Full-control ticks only (the attitude figures judge the flight, not a panic's descent):
+  Trace att_err;       // √((e_φ² + e_θ²)/2) of truth - set-point
+  Trace axis_err;      // max(|e_φ|, |e_θ|) of truth - set-point
+  Trace est_err;       // √((x_φ² + x_θ²)/2) of estimate - truth
+  Trace est_err_axis;  // max(|x_φ|, |x_θ|)
+  Trace saturated;     // 0 or 100
+  Trace worst_err;     // every tick: max(|e_φ|, |e_θ|), for the recovery after a push
+
+  bool entered_panic = false;
+  double panic_at = kNotMeasured, safe_at = kNotMeasured;
+  double rested_v_at_panic = kNotMeasured;
+  double battery_v_min = kNotMeasured, rested_v_min = kNotMeasured;
+  double touchdown_speed = kNotMeasured;  // m/s, the first after having been airborne
+};
+
+// The plant and firmware at the end, for the figures that need them.
+struct EndState {
+  double yaw_rate_setpoint = 0;    // rad/s, the firmware's
+  double yaw_rate_p_only = 0;      // rad/s, where the P term alone settles
+  double battery_panic_volts = 0;  // the firmware's parameter
+};
+
+}  // namespace qrsim

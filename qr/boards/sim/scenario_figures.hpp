@@ -1,0 +1,81 @@
+// Every figure a scenario flight reports, with its meaning: the names a band may judge (a band
+// naming anything else is an error in the scenario file) and the figure table of
+// docs/simulator.md (ScenarioDocument.* keeps the two equal). A figure that a flight did not
+// measure is NaN (null in the JSON), and a band on it fails.
+#pragma once
+
+#include <iterator>
+#include <string_view>
+
+namespace qrsim {
+
+struct FigureSpec {
+  const char* name;
+  const char* meaning;
+};
+
+inline constexpr FigureSpec kFigureTable[] = {
+    {"sim_seconds", "simulated time, preflight included"},
+    {"wall_seconds", "wall-clock time of the run"},
+    {"speedup", "sim_seconds / wall_seconds"},
+    {"cpu_seconds", "CPU time of the process (the fair benchmark on a busy machine)"},
+    {"control_hz", "the build's control rate"},
+    {"seed", "the seed of every random source"},
+    {"mass_scale", "vehicle mass over the vehicle file's (scenario modifier times sweep draw)"},
+    {"inertia_scale", "inertia over the vehicle file's"},
+    {"motor_tau_ms", "motor spin-up time constant flown"},
+    {"noise_scale", "sensor white-noise densities over the vehicle file's"},
+    {"vibration_scale", "vibration amplitudes over the vehicle file's"},
+    {"att_rms_deg_truth", "RMS over the window of the true attitude minus the set-point, both axes"},
+    {"att_rms_deg_last_s", "the same over the window's last second"},
+    {"att_err_deg_truth_max_after_settle",
+     "largest absolute truth minus set-point of either axis in the held part: from 0.8 s after the "
+     "step's set-point moved to the release (a step), or over the whole window (no step)"},
+    {"max_tilt_deg_truth", "largest true tilt (body z from vertical) in the window"},
+    {"est_err_rms_deg", "RMS of the estimate minus the truth, both axes"},
+    {"est_err_max_deg", "largest absolute estimate minus truth of either axis"},
+    {"step_setpoint_deg", "the step's set-point as the firmware holds it"},
+    {"step_delay_s", "from the stick event to the set-point moving (the link)"},
+    {"rise_s", "truth: 10 % to 90 % of the step, first crossings"},
+    {"overshoot_pct", "truth: peak beyond the set-point in % of the step"},
+    {"settle_s", "truth: from the step until it stays within 1 deg of the set-point to the release"},
+    {"rise_s_est", "the same three on the firmware's estimate"},
+    {"overshoot_pct_est", "estimate: overshoot"},
+    {"settle_s_est", "estimate: settling time"},
+    {"release_settle_s", "truth: from the stick's return to centre until within 1 deg of level for good"},
+    {"yaw_rate_setpoint_rad_s", "the firmware's yaw-rate set-point at the end"},
+    {"yaw_rate_rad_s", "mean true yaw rate over the last 40 % of the window"},
+    {"yaw_rate_p_only_rad_s", "where the yaw loop's P term alone would settle"},
+    {"yaw_rate_error_pct", "absolute yaw_rate_rad_s / set-point - 1, in %"},
+    {"peak_error_deg", "push: the largest error, both axes combined"},
+    {"recovery_s", "push: from its start until the larger axis error stays within 1 deg"},
+    {"recovery_2deg_s", "push: the same within 2 deg"},
+    {"entered_panic", "1 when the firmware entered panic in the window"},
+    {"panic_after_s", "when (from t0) it entered panic"},
+    {"safe_after_s", "when, after the panic, it entered safe"},
+    {"panic_while_rested_above_threshold",
+     "1 when it entered panic while the battery's resting voltage was above battery_panic_mv"},
+    {"battery_v_min", "lowest terminal voltage in the window (what the sensor sees)"},
+    {"battery_rested_v_min", "lowest resting (open-circuit) voltage in the window"},
+    {"touchdown_speed_m_s", "vertical speed at the first ground contact after being airborne in the window"},
+    {"final_upright", "1 when body z is within 30 deg of vertical at the end"},
+    {"engine_saturation_pct", "share of full-control ticks with an engine at 1000 or at or below idle"},
+    {"engines_at_end_max", "the largest engine value at the end"},
+    {"deadline_misses", "the scheduler's count"},
+    {"final_mode", "the mode at the end (a band compares the mode key: safe, panic, full, ...)"},
+    {"battery_v_end", "terminal voltage at the end"},
+    {"height_m_end", "height of the centre of mass at the end"},
+    {"drift_m_end", "horizontal distance from the start"},
+    {"speed_m_s_end", "speed at the end"},
+    {"requests_given_up", "pilot requests never answered"},
+    {"nacks", "pilot requests refused"},
+};
+
+constexpr bool is_figure(std::string_view name) {
+  for (const FigureSpec& f : kFigureTable) {
+    if (name == f.name) return true;
+  }
+  return false;
+}
+
+}  // namespace qrsim

@@ -1,0 +1,388 @@
+// The scenario file format (docs/simulator.md): one statement a line, `#` starts a comment.
+//   keyword: value          a setting (summary, seconds, start, vehicle, mass, ...)
+//   at T action values...   an event, T seconds after t0, in time order
+//   band figure op limit    a pass band, op one of <, <=, ==
+// Every error names the file and the line, so a user finds the mistake without the source.
+#include <qr/boards/sim/scenario_script.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <qr/boards/sim/scenario_figures.hpp>
+
+namespace qrsim {
+namespace {
+
+bool number(const std::string& text, double& out) {
+  if (text.empty()) return false;
+  char* end = nullptr;
+  out = std::strtod(text.c_str(), &end);
+  return end == text.c_str() + text.size() && std::isfinite(out);
+}
+
+std::vector<std::string> words_of(const std::string& text) {
+  std::vector<std::string> words;
+  std::istringstream in(text);
+  for (std::string w; in >> w;) words.push_back(w);
+  return words;
+}
+
+std::string joined(const std::vector<std::string>& words, size_t from) {
+  std::string out;
+  for (size_t i = from; i < words.size(); ++i) out += (i == from ? "" : " ") + words[i];
+  return out;
+}
+
+std::string text_of(double v) {
+  std::ostringstream out;
+  out << v;
+  return out.str();
+}
+
+bool mode_from_key(const std::string& key, wire::Mode& mode) {
+  for (const wire::ModeSpec& m : wire::kModeTable) {
+    if (key == m.key) {
+      mode = m.mode;
+      return true;
+    }
+  }
+  return false;
+}
+
+std::string mode_keys() {
+  std::string out;
+  for (const wire::ModeSpec& m : wire::kModeTable) out += (out.empty() ? "" : ", ") + std::string(m.key);
+  return out;
+}
+
+// Reads one file's statements into a script; the first problem ends the reading.
+class Reader {
+ public:
+  Reader(const std::string& origin, ScenarioScript& out) : origin_(origin), out_(out) {}
+
+  bool line(int number, const std::string& raw) {
+    line_ = number;
+    const std::string text = raw.substr(0, raw.find('#'));
+    const std::vector<std::string> w = words_of(text);
+    if (w.empty()) return true;
+    if (w[0] == "at") return event(w);
+    if (w[0] == "band") return band(w);
+    if (w[0].size() > 1 && w[0].back() == ':') return setting(w[0].substr(0, w[0].size() - 1), w);
+    return fail("unknown keyword '" + w[0] + "' (a setting 'name: value', 'at T ...' or 'band ...')");
+  }
+
+  bool finish() {
+    line_ = 0;
+    if (!seen("seconds")) return fail("no 'seconds:' line: the scored window must be given");
+    if (out_.bands.empty()) return fail("no band: a scenario must say what it is judged by");
+    for (const Event& e : out_.events) {
+      if (e.at_s >= out_.seconds) {
+        line_ = e.line;
+        return fail("event at " + std::to_string(e.at_s) +
+                    " s is past the window (seconds: " + std::to_string(out_.seconds) + ")");
+      }
+    }
+    return true;
+  }
+
+  const std::string& error() const { return error_; }
+
+ private:
+  bool fail(const std::string& what) {
+    error_ = origin_ + (line_ > 0 ? ":" + std::to_string(line_) : "") + ": " + what;
+    return false;
+  }
+
+  bool get_number(const std::string& text, double& out, const char* what) {
+    if (number(text, out)) return true;
+    return fail(std::string("bad number '") + text + "' for " + what);
+  }
+
+  bool seen(const std::string& key) const {
+    for (const std::string& s : seen_) {
+      if (s == key) return true;
+    }
+    return false;
+  }
+
+  bool setting(const std::string& key, const std::vector<std::string>& w) {
+    if (seen(key)) return fail("'" + key + ":' given twice");
+    seen_.push_back(key);
+    const std::string value = joined(w, 1);
+    if (key == "summary") {
+      out_.summary = value;
+      return true;
+    }
+    if (key == "known_failure") {
+      if (value.empty()) return fail("known_failure: needs its reason");
+      out_.known_failure = value;
+      return true;
+    }
+    if (key == "vehicle") {
+      if (w.size() != 2) return fail("vehicle: needs one file name");
+      out_.vehicle_file = value;
+      out_.vehicle_line = line_;
+      return true;
+    }
+    if (key == "start") {
+      if (value == "hover") {
+        out_.start = Start::hover;
+      } else if (value == "ground") {
+        out_.start = Start::ground;
+      } else {
+        return fail("start: is 'hover' or 'ground', not '" + value + "'");
+      }
+      return true;
+    }
+    if (key == "param") {
+      if (w.size() != 3) return fail("param: needs NAME VALUE");
+      wire::ParamId id{};
+      int32_t raw = 0;
+      const std::string problem = parameter_from_text(w[1], w[2], id, raw);
+      if (!problem.empty()) return fail(problem);
+      out_.parameters.emplace_back(id, raw);
+      return true;
+    }
+    struct Number {
+      const char* key;
+      double* field;
+      double min, max;  // accepted, inclusive
+    };
+    const Number numbers[] = {
+        {"seconds", &out_.seconds, 0.01, 3600},       {"mass", &out_.mass_scale, 0.1, 10},
+        {"inertia", &out_.inertia_scale, 0.1, 10},    {"motor_tau_ms", &out_.motor_tau_ms, 1, 1000},
+        {"battery_pct", &out_.battery_pct, 0, 100},   {"noise", &out_.noise_scale, 0, 100},
+        {"vibration", &out_.vibration_scale, 0, 100},
+    };
+    for (const Number& n : numbers) {
+      if (key != n.key) continue;
+      if (w.size() != 2) return fail(key + ": needs one number");
+      double v = 0;
+      if (!get_number(w[1], v, n.key)) return false;
+      if (v < n.min || v > n.max) {
+        std::ostringstream range;
+        range << key << ": " << v << " is outside " << n.min << " .. " << n.max;
+        return fail(range.str());
+      }
+      *n.field = v;
+      return true;
+    }
+    return fail("unknown setting '" + key + ":'");
+  }
+
+  bool vector_for(const std::vector<std::string>& w, Event& e, const char* unit) {
+    // at T torque X Y Z for S  /  at T force N E D for S  /  at T wind N E D
+    const bool lasting = e.action != Action::wind;
+    const size_t want = lasting ? 8 : 6;
+    if (w.size() != want || (lasting && w[6] != "for")) {
+      return fail(w[2] + (lasting ? " needs X Y Z for SECONDS (" : " needs N E D (") + unit + ")");
+    }
+    if (!get_number(w[3], e.vector.x, unit) || !get_number(w[4], e.vector.y, unit) ||
+        !get_number(w[5], e.vector.z, unit)) {
+      return false;
+    }
+    // Far beyond what the vehicle can take (its weight is 10 N; 1 N m tips it past 45 deg).
+    const double limit = e.action == Action::torque ? 10 : e.action == Action::force ? 100 : 50;
+    if (std::abs(e.vector.x) > limit || std::abs(e.vector.y) > limit || std::abs(e.vector.z) > limit) {
+      return fail(w[2] + " is beyond +-" + text_of(limit) + " (" + unit + ") on an axis");
+    }
+    if (lasting) {
+      if (!get_number(w[7], e.duration_s, "the duration")) return false;
+      if (e.duration_s <= 0) return fail("the duration must be > 0");
+    }
+    return true;
+  }
+
+  bool event(const std::vector<std::string>& w) {
+    if (w.size() < 3) return fail("an event is 'at T action ...'");
+    Event e;
+    e.line = line_;
+    if (!get_number(w[1], e.at_s, "the event's time")) return false;
+    if (e.at_s < 0) return fail("event time must be >= 0");
+    if (!out_.events.empty() && e.at_s < out_.events.back().at_s) {
+      std::ostringstream order;
+      order << "event out of order: at " << e.at_s << " after an event at " << out_.events.back().at_s;
+      return fail(order.str());
+    }
+    const std::string& action = w[2];
+    // Limits keep a user's typo from feeding the plant numbers it cannot integrate.
+    const auto one_number = [&](Action kind, const char* what, double limit) {
+      e.action = kind;
+      if (w.size() != 4) return fail(action + " needs one number (" + what + ")");
+      if (!get_number(w[3], e.value, what)) return false;
+      return std::abs(e.value) <= limit || fail(action + " " + w[3] + " is beyond +-" + text_of(limit) + " " + what);
+    };
+    bool ok = false;
+    if (action == "roll") {
+      ok = one_number(Action::roll, "degrees", 90);
+    } else if (action == "pitch") {
+      ok = one_number(Action::pitch, "degrees", 90);
+    } else if (action == "yaw") {
+      ok = one_number(Action::yaw, "rad/s", 20);
+    } else if (action == "lift") {
+      if (w.size() == 4 && w[3] == "hold") {
+        e.action = Action::lift_hold;
+        ok = true;
+      } else if (w.size() == 5 && w[3] == "height") {
+        e.action = Action::lift_height;
+        ok = get_number(w[4], e.value, "the height");
+        if (ok && (e.value < 0.2 || e.value > 100)) ok = fail("lift height must be 0.2 .. 100 m");
+      } else if (w.size() == 4) {
+        e.action = Action::lift_share;
+        ok = get_number(w[3], e.value, "the share of hover lift");
+        if (ok && (e.value < 0 || e.value > 3)) ok = fail("lift share must be 0 .. 3 (of the hover lift)");
+      } else {
+        ok = fail("lift needs 'hold', 'height METRES' or a share of the hover lift");
+      }
+    } else if (action == "mode") {
+      e.action = Action::mode;
+      if (w.size() != 4) return fail("mode needs one mode key (" + mode_keys() + ")");
+      ok = mode_from_key(w[3], e.mode) || fail("unknown mode '" + w[3] + "' (" + mode_keys() + ")");
+    } else if (action == "param") {
+      e.action = Action::param;
+      if (w.size() != 5) return fail("param needs NAME VALUE");
+      const std::string problem = parameter_from_text(w[3], w[4], e.param, e.raw);
+      ok = problem.empty() || fail(problem);
+    } else if (action == "torque") {
+      e.action = Action::torque;
+      ok = vector_for(w, e, "N m, body axes");
+    } else if (action == "force") {
+      e.action = Action::force;
+      ok = vector_for(w, e, "N, world axes");
+    } else if (action == "wind") {
+      e.action = Action::wind;
+      ok = vector_for(w, e, "m/s, world axes");
+    } else if (action == "link") {
+      e.action = Action::link;
+      if (w.size() == 4 && (w[3] == "on" || w[3] == "off")) {
+        e.value = w[3] == "on" ? 1 : 0;
+        ok = true;
+      } else {
+        ok = fail("link is 'on' or 'off'");
+      }
+    } else {
+      return fail("unknown action '" + action + "' (roll, pitch, yaw, lift, mode, param, torque, force, wind, link)");
+    }
+    if (ok) out_.events.push_back(e);
+    return ok;
+  }
+
+  bool band(const std::vector<std::string>& w) {
+    if (w.size() != 4) return fail("a band is 'band FIGURE OP LIMIT'");
+    Band b;
+    b.line = line_;
+    b.figure = w[1];
+    if (!is_figure(b.figure)) return fail("unknown band figure '" + b.figure + "' (docs/simulator.md lists them)");
+    if (w[2] == "<") {
+      b.compare = Compare::below;
+    } else if (w[2] == "<=") {
+      b.compare = Compare::at_most;
+    } else if (w[2] == "==") {
+      b.compare = Compare::equal;
+    } else {
+      return fail("unknown comparison '" + w[2] + "' (<, <= or ==)");
+    }
+    if (b.figure == "final_mode") {
+      if (b.compare != Compare::equal) return fail("final_mode is compared with ==");
+      wire::Mode mode{};
+      if (!mode_from_key(w[3], mode)) return fail("unknown mode '" + w[3] + "' (" + mode_keys() + ")");
+      b.limit = static_cast<double>(mode);
+    } else if (!get_number(w[3], b.limit, "the band's limit")) {
+      return false;
+    }
+    out_.bands.push_back(b);
+    return true;
+  }
+
+  std::string origin_;
+  ScenarioScript& out_;
+  int line_ = 0;
+  std::vector<std::string> seen_;
+  std::string error_;
+};
+
+}  // namespace
+
+const char* compare_text(Compare compare) {
+  switch (compare) {
+    case Compare::below: return "<";
+    case Compare::at_most: return "<=";
+    case Compare::equal: return "==";
+  }
+  return "?";
+}
+
+std::string band_text(const Band& band) {
+  char limit[32];
+  if (band.figure == "final_mode") {
+    std::snprintf(limit, sizeof limit, "%s", wire::mode_key(static_cast<wire::Mode>(band.limit)));
+  } else {
+    std::snprintf(limit, sizeof limit, "%g", band.limit);
+  }
+  return band.figure + " " + compare_text(band.compare) + " " + limit;
+}
+
+std::string parameter_from_text(const std::string& name, const std::string& value, wire::ParamId& id, int32_t& raw) {
+  const wire::ParameterSpec* spec = nullptr;
+  for (const wire::ParameterSpec& s : wire::kParameterTable) {
+    if (name == s.name) spec = &s;
+  }
+  if (spec == nullptr) return "unknown parameter '" + name + "' (docs/parameters.md names them)";
+  double real = 0;
+  if (!number(value, real)) return "bad number '" + value + "' for parameter " + name;
+  const double scaled = std::round(std::ldexp(real, spec->frac_bits));
+  if (scaled < spec->min || scaled > spec->max) return "parameter " + name + ": " + value + " is out of range";
+  id = spec->id;
+  raw = static_cast<int32_t>(scaled);
+  return "";
+}
+
+bool parse_scenario(const std::string& text, const std::string& name, const std::string& origin, ScenarioScript& out,
+                    std::string& error) {
+  out = ScenarioScript{};
+  out.name = name;
+  out.origin = origin;
+  Reader reader(origin, out);
+  std::istringstream in(text);
+  int number = 0;
+  for (std::string line; std::getline(in, line);) {
+    if (!reader.line(++number, line)) {
+      error = reader.error();
+      return false;
+    }
+  }
+  if (!reader.finish()) {
+    error = reader.error();
+    return false;
+  }
+  return true;
+}
+
+bool load_scenario_file(const std::string& path, ScenarioScript& out, std::string& error) {
+  namespace fs = std::filesystem;
+  std::ifstream in(path);
+  if (!in) {
+    error = path + ": cannot read";
+    return false;
+  }
+  std::stringstream text;
+  text << in.rdbuf();
+  if (!parse_scenario(text.str(), fs::path(path).stem().string(), path, out, error)) return false;
+  if (!out.vehicle_file.empty()) {
+    const fs::path vehicle = fs::path(path).parent_path() / out.vehicle_file;
+    sim::VehicleParams v;
+    std::string why;
+    if (!sim::load_vehicle_file(vehicle.string(), v, why)) {
+      error = path + ":" + std::to_string(out.vehicle_line) + ": vehicle " + vehicle.string() + ": " + why;
+      return false;
+    }
+    out.vehicle = v;
+  }
+  return true;
+}
+
+}  // namespace qrsim

@@ -1,0 +1,100 @@
+// A scenario as a user writes it (docs/simulator.md, "Scenario files"): how the flight starts,
+// the vehicle and its modifiers, the pilot's timed events after the preflight, and the bands the
+// flight is judged by. parse_scenario reads the text; it touches no file, so it can be fuzzed
+// (tests/fuzz/scenario_file_fuzz.cpp). load_scenario_file also reads the vehicle file it names.
+#pragma once
+
+#include <stdint.h>
+
+#include <limits>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <common/mode.hpp>
+#include <common/parameter_table.hpp>
+#include <sim/vec3.hpp>
+#include <sim/vehicle.hpp>
+
+namespace qrsim {
+
+enum class Start : uint8_t {
+  hover,   // calibrate, full control, take off to 1.5 m, settle 1.5 s: then t0
+  ground,  // calibrate, full control with the lift at 0, still on the ground: then t0
+};
+
+enum class Compare : uint8_t { below, at_most, equal };
+
+// A pass band: figure `compare` limit. A figure that was not measured (NaN) fails.
+struct Band {
+  std::string figure;
+  Compare compare = Compare::below;
+  double limit = 0;  // final_mode: the mode's number
+  int line = 0;
+};
+
+enum class Action : uint8_t {
+  roll,         // value: stick for this roll angle, degrees
+  pitch,        // value: degrees
+  yaw,          // value: yaw-rate stick, rad/s
+  lift_hold,    // the pilot holds the hover height (1.5 m), taking off if on the ground
+  lift_height,  // value: the pilot holds this height, m
+  lift_share,   // value: this share of the hover lift, held open loop (0: lift stick down)
+  mode,         // mode: the pilot requests it
+  param,        // param, raw: the pilot uploads it
+  torque,       // vector: N·m in body axes, for duration_s
+  force,        // vector: N in world axes (north, east, down), for duration_s
+  wind,         // vector: air velocity in world axes, m/s, held until changed
+  link,         // value 1: the pilot's line is live, 0: silent
+};
+
+struct Event {
+  double at_s = 0;  // after t0
+  Action action = Action::roll;
+  double value = 0;
+  sim::Vec3 vector;
+  double duration_s = 0;
+  wire::Mode mode = wire::Mode::safe;
+  wire::ParamId param = wire::ParamId::idle_level;
+  int32_t raw = 0;
+  int line = 0;
+};
+
+inline constexpr double kUnset = std::numeric_limits<double>::quiet_NaN();
+
+struct ScenarioScript {
+  std::string name;     // the file's name without its extension
+  std::string origin;   // where the text came from, for messages ("sim/scenarios/hover.txt")
+  std::string summary;  // one line for qrsim --list
+  double seconds = 0;   // scored window from t0
+  Start start = Start::hover;
+  std::string vehicle_file;  // as written, relative to the scenario file
+  int vehicle_line = 0;
+  std::optional<sim::VehicleParams> vehicle;  // loaded by load_scenario_file
+  double mass_scale = 1, inertia_scale = 1;
+  double motor_tau_ms = kUnset;  // spin-up; spin-down keeps the vehicle's ratio
+  double battery_pct = kUnset;   // charge at start
+  double noise_scale = 1, vibration_scale = 1;
+  std::vector<std::pair<wire::ParamId, int32_t>> parameters;  // uploaded before the flight
+  std::vector<Event> events;                                  // in time order
+  std::vector<Band> bands;
+  std::string known_failure;  // non-empty: today's firmware fails a band, and why
+};
+
+// Reads a scenario's text. `name` names it; `origin` starts every error message
+// ("origin:line: what is wrong").
+bool parse_scenario(const std::string& text, const std::string& name, const std::string& origin, ScenarioScript& out,
+                    std::string& error);
+
+// Reads a scenario file and the vehicle file it names (relative to the scenario file).
+bool load_scenario_file(const std::string& path, ScenarioScript& out, std::string& error);
+
+// A parameter by its name in docs/parameters.md with a value in its unit, as the wire carries it.
+// Returns an empty string on success, otherwise what is wrong.
+std::string parameter_from_text(const std::string& name, const std::string& value, wire::ParamId& id, int32_t& raw);
+
+const char* compare_text(Compare compare);  // "<", "<=", "=="
+std::string band_text(const Band& band);    // "rise_s < 0.3", "final_mode == full"
+
+}  // namespace qrsim

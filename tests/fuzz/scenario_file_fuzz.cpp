@@ -1,0 +1,54 @@
+// Fuzz target: arbitrary text into the scenario file parser (parse_scenario touches no file).
+// Checks, beyond what ASan and UBSan catch: a refused text says where (the origin, then a line
+// number within the text, or the origin alone for what is missing at the end); an accepted one
+// is consistent: events in time order inside the window, at least one band, every band on a
+// known figure, every number finite.
+#include <stddef.h>
+#include <stdint.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <string>
+
+#include <qr/boards/sim/scenario_figures.hpp>
+#include <qr/boards/sim/scenario_script.hpp>
+
+namespace {
+
+void require(bool condition) {
+  if (!condition) __builtin_trap();
+}
+
+size_t line_count(const std::string& text) {
+  size_t lines = 1;
+  for (char c : text) lines += c == '\n' ? 1 : 0;
+  return lines;
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  const std::string text(reinterpret_cast<const char*>(data), size);
+  qrsim::ScenarioScript script;
+  std::string error;
+  if (!qrsim::parse_scenario(text, "fuzz", "fuzz.txt", script, error)) {
+    require(error.rfind("fuzz.txt", 0) == 0);
+    if (error.rfind("fuzz.txt:", 0) == 0) {
+      const long line = std::strtol(error.c_str() + 9, nullptr, 10);
+      require(line >= 1 && static_cast<size_t>(line) <= line_count(text));
+    } else {
+      require(error.rfind("fuzz.txt: ", 0) == 0);
+    }
+    return 0;
+  }
+  require(std::isfinite(script.seconds) && script.seconds > 0);
+  require(!script.bands.empty());
+  for (const qrsim::Band& b : script.bands) require(qrsim::is_figure(b.figure) && std::isfinite(b.limit));
+  double previous = 0;
+  for (const qrsim::Event& e : script.events) {
+    require(std::isfinite(e.at_s) && e.at_s >= previous && e.at_s < script.seconds);
+    require(std::isfinite(e.value) && std::isfinite(e.duration_s));
+    previous = e.at_s;
+  }
+  return 0;
+}

@@ -1,0 +1,88 @@
+// Every scenario file of sim/scenarios/ flown at seed 1 and judged by its own bands on the
+// simulator's truth. A file with a known_failure line must still fail (a band, not the
+// preflight): when the firmware is fixed the test says so, and the line must go. The built-ins
+// compiled into qrsim must be these files, byte for byte.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <qr/boards/sim/builtin_scenarios.hpp>
+#include <qr/boards/sim/scenario.hpp>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<std::string> scenario_files() {
+  std::vector<std::string> files;
+  for (const auto& entry : fs::directory_iterator(QR_SIM_SCENARIO_DIR)) {
+    if (entry.path().extension() == ".txt") files.push_back(entry.path().stem().string());
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+std::string path_of(const std::string& name) { return std::string(QR_SIM_SCENARIO_DIR) + "/" + name + ".txt"; }
+
+class ScenarioFiles : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(ScenarioFiles, FliesAndIsJudgedByItsBands) {
+  qrsim::ScenarioScript script;
+  std::string error;
+  ASSERT_TRUE(qrsim::load_scenario_file(path_of(GetParam()), script, error)) << error;
+  const qrsim::ScenarioResult r = qrsim::run_scenario(script, {});
+  std::printf("%s\n", qrsim::to_json(r).c_str());
+  ASSERT_TRUE(r.error.empty()) << r.error;
+  ASSERT_EQ(r.checks.size(), script.bands.size());
+  if (script.known_failure.empty()) {
+    for (const qrsim::CheckResult& c : r.checks) EXPECT_TRUE(c.pass) << c.band;
+    EXPECT_TRUE(r.pass);
+  } else {
+    EXPECT_FALSE(r.pass) << GetParam() << " passes every band now: remove its known_failure line ("
+                         << script.known_failure << ")";
+    for (const qrsim::CheckResult& c : r.checks) {
+      if (!c.pass) std::printf("known failure, band fails: %s\n", c.band.c_str());
+    }
+  }
+}
+
+std::string test_name(const ::testing::TestParamInfo<std::string>& info) {
+  std::string name = info.param;
+  std::replace(name.begin(), name.end(), '-', '_');
+  return name;
+}
+
+INSTANTIATE_TEST_SUITE_P(SimScenarios, ScenarioFiles, ::testing::ValuesIn(scenario_files()), test_name);
+
+TEST(BuiltinScenarios, AreTheFilesOfSimScenarios) {
+  std::vector<std::string> builtin;
+  for (const qrsim::BuiltinScenario& b : qrsim::builtin_scenarios()) {
+    builtin.push_back(b.name);
+    std::ifstream in(path_of(b.name));
+    ASSERT_TRUE(in) << b.name << " is built in but has no file";
+    std::stringstream text;
+    text << in.rdbuf();
+    EXPECT_EQ(text.str(), b.text) << b.name << ": the compiled-in text is stale (reconfigure)";
+  }
+  std::sort(builtin.begin(), builtin.end());
+  EXPECT_EQ(builtin, scenario_files());
+}
+
+// The issue's list of scenarios, each a file.
+TEST(BuiltinScenarios, IncludeTheIssuesScenarios) {
+  const std::vector<std::string> files = scenario_files();
+  for (const char* name :
+       {"hover", "step-roll", "step-pitch", "full-stick-30", "yaw-rate", "yaw-full-stick", "disturbance", "large-push",
+        "link-loss", "panic", "bank-hold", "yaw-while-banked", "ground-windup-takeoff", "battery-sag-climb",
+        "heavy-slow", "step-roll-20", "vibration-x5"}) {
+    EXPECT_NE(std::find(files.begin(), files.end(), name), files.end()) << name;
+  }
+}
+
+}  // namespace
