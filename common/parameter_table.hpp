@@ -52,7 +52,11 @@ namespace wire {
       "flies on)") \
   ROW(yaw_i, 21, 4, 0, 16000, 4800, "thrust units per rad", \
       "yaw rate loop integral gain: holds the yaw rate at its set-point against the rotors' drag") \
-  ROW(max_tilt_mrad, 22, 0, 87, 698, 524, "mrad", "roll/pitch angle set-point at full stick (524 = 30 deg)")
+  ROW(max_tilt_mrad, 22, 0, 87, 698, 524, "mrad", "roll/pitch angle set-point at full stick (524 = 30 deg)") \
+  ROW(battery_sag_mv, 23, 0, 0, 3000, 1100, "mV", \
+      "the battery's sag with all four engines at full command (internal resistance x that current); the " \
+      "battery rules judge the voltage plus this x the engines' load, sum of (e/1000)^3 / 4: an estimate of the " \
+      "resting voltage; 0: the voltage as measured")
 
 enum class ParamId : uint8_t {
 #define WIRE_PARAMETER_ENUMERATOR(name, id, frac_bits, min, max, default_value, unit, meaning) name = id,

@@ -30,6 +30,7 @@ struct SafetyLimits {
   uint32_t panic_hold_us;
   uint32_t panic_ramp_us;
   uint16_t idle;                         // no engine below this while lift > 0 in flight
+  uint16_t battery_sag_mv;               // the sag at all engines full (battery_sag_mv parameter)
   uint32_t battery_trip_us = 100000;     // the battery measure below the panic level this long: panic
   uint16_t battery_hysteresis_mv = 100;  // the warning ends only this far above its level
 };
@@ -56,9 +57,10 @@ class SafetyMachine {
   bool stopped() const { return stopped_; }
   PanicCause panic_cause() const { return panic_cause_; }
   bool battery_warning() const { return battery_warning_; }
-  // What the battery rules judge, in mV: the voltage low-passed with a time constant of about a
-  // second, so a climb's sag of a few hundred ms (the pack's internal resistance under load) is
-  // not an empty battery.
+  // What the battery rules judge, in mV: the resting voltage (the measured one plus the sag the
+  // engines' load causes through the pack's internal resistance, battery_sag_mv) low-passed with a
+  // time constant of about a second: a climb's sag is not an empty battery, and what sag the load
+  // model misses passes in the mean when it lasts a few hundred ms.
   uint16_t battery_measure_mv() const { return static_cast<uint16_t>(battery_q8_ >> 8); }
   SafetyLimits& limits() { return limits_; }
   const SafetyLimits& limits() const { return limits_; }
