@@ -32,12 +32,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   qrsim::ScenarioScript script;
   std::string error;
   if (!qrsim::parse_scenario(text, "fuzz", "fuzz.txt", script, error)) {
-    require(error.rfind("fuzz.txt", 0) == 0);
-    if (error.rfind("fuzz.txt:", 0) == 0) {
-      const long line = std::strtol(error.c_str() + 9, nullptr, 10);
-      require(line >= 1 && static_cast<size_t>(line) <= line_count(text));
-    } else {
-      require(error.rfind("fuzz.txt: ", 0) == 0);
+    require(error.rfind("fuzz.txt:", 0) == 0);
+    if (error.rfind("fuzz.txt: ", 0) != 0) {  // not the whole file's problem: a line's
+      char* end = nullptr;
+      const long line = std::strtol(error.c_str() + 9, &end, 10);
+      require(line >= 1 && static_cast<size_t>(line) <= line_count(text) && *end == ':');
     }
     return 0;
   }

@@ -240,6 +240,27 @@ TEST(Plant, RotorDragOpposesHorizontalVelocitySoTheAccelerometerSeesIt) {
   EXPECT_LT(expected, -1.0);
 }
 
+// Drag depends on the velocity through the air only: flying north at 5 m/s in still air and
+// hanging still in a 5 m/s wind from the north are the same to every drag term; still air and a
+// wind the vehicle moves with are the same too.
+TEST(Plant, WindActsThroughTheVelocityRelativeToTheAir) {
+  const sim::VehicleParams v = sim::default_vehicle();
+  Quadrotor moving(v), blown(v);
+  place_in_air(moving, v.hover_speed());
+  place_in_air(blown, v.hover_speed());
+  sim::PlantState s = moving.state();
+  s.velocity = {5, 0, 0};
+  moving.set_state(s);
+  blown.set_wind({-5, 0, 0});
+  const sim::Vec3 a = moving.specific_force(), b = blown.specific_force();
+  EXPECT_NEAR(a.x, b.x, 1e-12);
+  EXPECT_NEAR(a.y, b.y, 1e-12);
+  EXPECT_NEAR(a.z, b.z, 1e-12);
+  EXPECT_LT(b.x, -1.0) << "pushed downwind (south) by the rotor and airframe drag";
+  moving.set_wind({5, 0, 0});  // moving with the air: no drag at all
+  EXPECT_NEAR(moving.specific_force().x, 0, 1e-12);
+}
+
 TEST(Plant, VehicleFileErrorsAreReported) {
   sim::VehicleParams v;
   std::string error;

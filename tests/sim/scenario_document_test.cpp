@@ -13,6 +13,7 @@
 
 #include <qr/boards/sim/scenario.hpp>
 #include <qr/boards/sim/scenario_figures.hpp>
+#include <qr/boards/sim/sweep.hpp>
 
 #include "../support/source_text.hpp"
 
@@ -90,6 +91,23 @@ TEST(ScenarioDocument, TheFigureTableIsTheCodes) {
   std::vector<std::string> code;
   for (const qrsim::FigureSpec& f : qrsim::kFigureTable) code.push_back(f.name);
   EXPECT_EQ(documented, code) << "the figures of section 6.5, in print order";
+}
+
+// Section 6.4's ranges, row by row in the code's order (mass, inertia, motor lag, vibration, noise).
+TEST(ScenarioDocument, TheSweepRangesAreTheCodes) {
+  std::vector<std::string> documented;
+  const std::regex row(R"(^\| [a-zA-Z].* \| (× [0-9.]+ \.\. [0-9.]+) \|.*\|$)");
+  for (const std::string& line : section("### 6.4 Robustness sweep")) {
+    std::smatch m;
+    if (std::regex_match(line, m, row)) documented.push_back(m[1].str());
+  }
+  std::vector<std::string> code;
+  for (const qrsim::SweepRange& r : qrsim::kSweepRanges) {
+    std::ostringstream text;
+    text << "× " << r.low << " .. " << r.high;
+    code.push_back(text.str());
+  }
+  EXPECT_EQ(documented, code);
 }
 
 // The example of section 6.2, the first code block there, is a file that reads.
