@@ -78,6 +78,7 @@ ScenarioResult run_scenario(const ScenarioOptions& options) {
     vehicle.gyro_bias_dps = vehicle.accel_bias_xy_mg = vehicle.accel_bias_z_mg = vehicle.scale_error = 0;
     vehicle.vibration_accel_g = vehicle.vibration_gyro_dps = {};
     vehicle.battery_sense_noise_mv = 0;
+    vehicle.baro_noise_pa = vehicle.baro_temp_coeff_pa_per_k = 0;
   }
   std::unique_ptr<SimQr> qr = make_qr(vehicle, {.seed = options.seed});
   sim::Quadrotor& plant = qr->world.plant();
@@ -223,8 +224,9 @@ ScenarioResult run_scenario(const ScenarioOptions& options) {
     if (record != nullptr && recording) {
       const qr::SensorSample& in = qr->board.read_sensors();  // what this tick ran on
       const qr::ControlInput& c = qr->firmware.controls();
-      std::fprintf(record, "%u,%d,%d,%d,%d,%d,%d,%u,%u,%d,%d,%d\n", qr->board.now_us(), in.gyro[0], in.gyro[1],
-                   in.gyro[2], in.accel[0], in.accel[1], in.accel[2], in.battery_mv, c.lift, c.roll, c.pitch, c.yaw);
+      std::fprintf(record, "%u,%d,%d,%d,%d,%d,%d,%u,%u,%d,%d,%d,%d\n", qr->board.now_us(), in.gyro[0], in.gyro[1],
+                   in.gyro[2], in.accel[0], in.accel[1], in.accel[2], in.battery_mv, c.lift, c.roll, c.pitch, c.yaw,
+                   in.pressure_pa);
     }
   }
 
