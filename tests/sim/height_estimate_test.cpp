@@ -13,8 +13,13 @@
 #include <cstdlib>
 #include <vector>
 
+#include <map>
+#include <sstream>
+#include <string>
+
 #include <qr/boards/sim/pilot.hpp>
 #include <qr/boards/sim/sim_qr.hpp>
+#include <qr/host/replay.hpp>
 
 namespace {
 
@@ -38,6 +43,10 @@ struct HeightFlight {
   double bias_end_mm_s2 = std::nan("");
   bool valid = false;
   bool flew = false;
+  // The flight as the replay's input (from the first calibration tick), and the height read-outs
+  // of each of those ticks, by time.
+  std::string recording;
+  std::map<uint32_t, std::pair<int32_t, int32_t>> flown;
 };
 
 // The pilot's thumb on the lift stick, following a height target (as the scenarios' pilot does,
@@ -62,7 +71,8 @@ HeightFlight fly(uint64_t seed) {
   qrsim::Pilot pilot(qr->board);
   sim::Quadrotor& plant = qr->world.plant();
   double armed_at = -1, ground = std::nan("");
-  bool asked_calibration = false, asked_arm = false;
+  bool asked_calibration = false, asked_arm = false, recording = false;
+  out.recording = qr::host::replay_input_header() + "\n";
   for (int tick = 0; tick < 40000; ++tick) {
     const double t = static_cast<double>(qr->world.now_us()) * 1e-6;
     const qrsim::ConsoleView& view = pilot.view();
@@ -84,9 +94,20 @@ HeightFlight fly(uint64_t seed) {
     }
     pilot.step();
     if (since > kEnd) break;
+    recording = recording || qr->firmware.mode() == wire::Mode::calibration;
     if (!qr->tick()) break;
 
     const auto& chain = qr->firmware.chain();
+    if (recording) {
+      const qr::SensorSample& in = qr->board.read_sensors();
+      const qr::ControlInput& c = qr->firmware.controls();
+      char line[160];
+      std::snprintf(line, sizeof line, "%u,%d,%d,%d,%d,%d,%d,%u,%u,%d,%d,%d,%d\n", qr->board.now_us(), in.gyro[0],
+                    in.gyro[1], in.gyro[2], in.accel[0], in.accel[1], in.accel[2], in.battery_mv, c.lift, c.roll,
+                    c.pitch, c.yaw, in.pressure_pa);
+      out.recording += line;
+      out.flown[qr->board.now_us()] = {chain.height_mm(), chain.climb_mm_s()};
+    }
     // Height 0 is where the vehicle stood while it calibrated.
     if (std::isnan(ground) && chain.height_valid()) ground = -plant.state().position.z;
     if (since < 0 || std::isnan(ground)) continue;
@@ -134,6 +155,43 @@ TEST(HeightEstimate, FollowsTheTruthInHoverAndClimb) {
     // The fusion is worth having: smoother than the barometer alone.
     EXPECT_LT(h.rms(h.height), 0.7 * h.rms(h.baro)) << "seed " << seed;
   }
+}
+
+// Test mode reproduces the flight's height estimate: the recorded samples replayed give the
+// height and speed the firmware had, tick for tick (the flight's safe mode between calibration and
+// arming runs the height row as full control does, so the replay's shortcut changes nothing).
+TEST(HeightEstimate, ReplayOfTheFlightGivesItsHeightBitForBit) {
+  const HeightFlight f = fly(1);
+  std::istringstream in(f.recording);
+  std::ostringstream out, errors;
+  ASSERT_EQ(qr::host::run_replay(in, "flight", out, errors), 0) << errors.str();
+  std::istringstream rows(out.str());
+  std::string line;
+  std::getline(rows, line);
+  std::vector<std::string> names;
+  {
+    std::istringstream header(line);
+    for (std::string n; std::getline(header, n, ',');) names.push_back(n);
+  }
+  const auto column = [&](const std::string& name) {
+    return static_cast<size_t>(std::find(names.begin(), names.end(), name) - names.begin());
+  };
+  const size_t time = column("time_us"), height = column("height_mm"), climb = column("climb_mm_s");
+  ASSERT_LT(climb, names.size());
+  size_t compared = 0, moving = 0;
+  while (std::getline(rows, line)) {
+    std::vector<std::string> v;
+    std::istringstream fields(line);
+    for (std::string x; std::getline(fields, x, ',');) v.push_back(x);
+    const auto it = f.flown.find(static_cast<uint32_t>(std::stoul(v[time])));
+    ASSERT_NE(it, f.flown.end()) << v[time];
+    ASSERT_EQ(std::stol(v[height]), it->second.first) << "height at " << v[time] << " us";
+    ASSERT_EQ(std::stol(v[climb]), it->second.second) << "climb at " << v[time] << " us";
+    ++compared;
+    if (it->second.first > 1000) ++moving;
+  }
+  EXPECT_GT(compared, 20000u);
+  EXPECT_GT(moving, 10000u) << "the comparison covers the flight above 1 m";
 }
 
 }  // namespace
