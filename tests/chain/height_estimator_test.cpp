@@ -70,15 +70,13 @@ struct Rig {
   double bias() const { return test::as_double(e.accel_bias()); }
 };
 
-template <class N>
-class HeightEstimatorTest : public ::testing::Test {};
-using Numbers = ::testing::Types<FixedNumbers, DoubleNumbers>;
-TYPED_TEST_SUITE(HeightEstimatorTest, Numbers);
+// Each check below runs in the flight's Q formats and in double.
 
 // The barometer says 2 m higher at once (no acceleration: the accelerometer disagrees, so the
 // filter must weigh them): the estimate reaches 2 m through the loop's three poles at 1/tau, and
 // the bias it picked up on the way drains again.
-TYPED_TEST(HeightEstimatorTest, StepInTheBarometersHeightIsFollowed) {
+template <class TypeParam>
+void StepInTheBarometersHeightIsFollowed() {
   Rig<TypeParam> rig;
   for (int i = 0; i < kHz; ++i) rig.step({});
   EXPECT_NEAR(rig.height(), 0, 0.01);
@@ -94,11 +92,18 @@ TYPED_TEST(HeightEstimatorTest, StepInTheBarometersHeightIsFollowed) {
   EXPECT_NEAR(rig.climb(), 0, 0.005);
   EXPECT_NEAR(rig.bias(), 0, 0.01);
 }
+TEST(HeightEstimator, StepInTheBarometersHeightIsFollowedInFixedPoint) {
+  StepInTheBarometersHeightIsFollowed<FixedNumbers>();
+}
+TEST(HeightEstimator, StepInTheBarometersHeightIsFollowedInDouble) {
+  StepInTheBarometersHeightIsFollowed<DoubleNumbers>();
+}
 
 // Accelerate at 0.5 m/s² for 1 s, climb at 0.5 m/s for 10 s, stop over 1 s: height and speed
 // follow the truth, and the accelerometer's share makes the speed right while the barometer
 // alone, in 8 cm steps, could not.
-TYPED_TEST(HeightEstimatorTest, ConstantClimbIsTracked) {
+template <class TypeParam>
+void ConstantClimbIsTracked() {
   Rig<TypeParam> rig;
   Truth t;
   const double dt = 1.0 / kHz;
@@ -120,10 +125,13 @@ TYPED_TEST(HeightEstimatorTest, ConstantClimbIsTracked) {
   EXPECT_LT(max_climb_error, 0.03);
   EXPECT_NEAR(rig.height(), 5.5, 0.1);
 }
+TEST(HeightEstimator, ConstantClimbIsTrackedInFixedPoint) { ConstantClimbIsTracked<FixedNumbers>(); }
+TEST(HeightEstimator, ConstantClimbIsTrackedInDouble) { ConstantClimbIsTracked<DoubleNumbers>(); }
 
 // The accelerometer reads 0.3 m/s² too much upward acceleration (a scale error in hover, a
 // vibration rectification): the bias state learns it, the height stays put.
-TYPED_TEST(HeightEstimatorTest, AccelerometerBiasIsLearnt) {
+template <class TypeParam>
+void AccelerometerBiasIsLearnt() {
   Rig<TypeParam> rig;
   double max_height_error = 0;
   for (int i = 0; i < 20 * kHz; ++i) {
@@ -136,10 +144,13 @@ TYPED_TEST(HeightEstimatorTest, AccelerometerBiasIsLearnt) {
   EXPECT_NEAR(rig.height(), 0, 0.05);
   EXPECT_NEAR(rig.climb(), 0, 0.01);
 }
+TEST(HeightEstimator, AccelerometerBiasIsLearntInFixedPoint) { AccelerometerBiasIsLearnt<FixedNumbers>(); }
+TEST(HeightEstimator, AccelerometerBiasIsLearntInDouble) { AccelerometerBiasIsLearnt<DoubleNumbers>(); }
 
 // The same with the vehicle banked 20° and pitched 10°: the rotation to the earth frame finds
 // the vertical, so a level-hover's worth of thrust along a tilted z is no climb.
-TYPED_TEST(HeightEstimatorTest, TiltedVehicleClimbsOnlyWhenItDoes) {
+template <class TypeParam>
+void TiltedVehicleClimbsOnlyWhenItDoes() {
   Rig<TypeParam> rig;
   const double roll = 0.35, pitch = 0.17;
   for (int i = 0; i < 10 * kHz; ++i) rig.step({}, roll, pitch);
@@ -154,10 +165,15 @@ TYPED_TEST(HeightEstimatorTest, TiltedVehicleClimbsOnlyWhenItDoes) {
   EXPECT_NEAR(rig.climb(), 1.0, 0.05);
   EXPECT_NEAR(rig.height(), 0.5, 0.1);
 }
+TEST(HeightEstimator, TiltedVehicleClimbsOnlyWhenItDoesInFixedPoint) {
+  TiltedVehicleClimbsOnlyWhenItDoes<FixedNumbers>();
+}
+TEST(HeightEstimator, TiltedVehicleClimbsOnlyWhenItDoesInDouble) { TiltedVehicleClimbsOnlyWhenItDoes<DoubleNumbers>(); }
 
 // A barometer with the MS5611's 1.2 Pa of noise at OSR 4096 (10 cm) at rest: the estimate is
 // several times quieter than the barometer, and its speed stays near 0.
-TYPED_TEST(HeightEstimatorTest, NoisyBarometerIsSmoothed) {
+template <class TypeParam>
+void NoisyBarometerIsSmoothed() {
   Rig<TypeParam> rig;
   std::mt19937 random(7);
   std::normal_distribution<double> noise(0, 1.2);
@@ -181,10 +197,13 @@ TYPED_TEST(HeightEstimatorTest, NoisyBarometerIsSmoothed) {
   EXPECT_LT(rms_h, 0.4 * rms_baro);
   EXPECT_LT(rms_v, 0.05);
 }
+TEST(HeightEstimator, NoisyBarometerIsSmoothedInFixedPoint) { NoisyBarometerIsSmoothed<FixedNumbers>(); }
+TEST(HeightEstimator, NoisyBarometerIsSmoothedInDouble) { NoisyBarometerIsSmoothed<DoubleNumbers>(); }
 
 // No barometer at calibration: no reference, the estimate stays 0 whatever the accelerometer
 // says. A barometer that drops out in flight: the estimate coasts on the accelerometer.
-TYPED_TEST(HeightEstimatorTest, NoBarometerNoEstimate) {
+template <class TypeParam>
+void NoBarometerNoEstimate() {
   Rig<TypeParam> absent(0);
   EXPECT_FALSE(absent.e.has_reference());
   for (int i = 0; i < kHz; ++i) absent.step({0, 0, 1.0}, 0, 0, 0, 0, false);
@@ -197,11 +216,14 @@ TYPED_TEST(HeightEstimatorTest, NoBarometerNoEstimate) {
   EXPECT_NEAR(dropout.climb(), 1.0, 0.01) << "integrated acceleration, no barometer to pull it back";
   EXPECT_NEAR(dropout.height(), 0.5, 0.02);
 }
+TEST(HeightEstimator, NoBarometerNoEstimateInFixedPoint) { NoBarometerNoEstimate<FixedNumbers>(); }
+TEST(HeightEstimator, NoBarometerNoEstimateInDouble) { NoBarometerNoEstimate<DoubleNumbers>(); }
 
 // A new calibration is a new zero, and the metres per pascal are the site's: calibrated at
 // 1500 m (where 1 Pa is 0.098 m, not the 0.083 m of sea level), 10 m of climb reads 10 m. The
 // barometer's 1 Pa step is 0.1 m here.
-TYPED_TEST(HeightEstimatorTest, CalibrationZeroesTheReferenceAtTheSitesPressure) {
+template <class TypeParam>
+void CalibrationZeroesTheReferenceAtTheSitesPressure() {
   const int32_t site = static_cast<int32_t>(std::lround(isa_pa(1500)));
   Rig<TypeParam> rig(site);
   Truth t{1500, 0, 0};
@@ -210,6 +232,12 @@ TYPED_TEST(HeightEstimatorTest, CalibrationZeroesTheReferenceAtTheSitesPressure)
   t.height = 1510;
   for (int i = 0; i < 20 * kHz; ++i) rig.step(t);
   EXPECT_NEAR(rig.height(), 10.0, 0.1) << "with sea level's gradient it would read 8.5 m";
+}
+TEST(HeightEstimator, CalibrationZeroesTheReferenceAtTheSitesPressureInFixedPoint) {
+  CalibrationZeroesTheReferenceAtTheSitesPressure<FixedNumbers>();
+}
+TEST(HeightEstimator, CalibrationZeroesTheReferenceAtTheSitesPressureInDouble) {
+  CalibrationZeroesTheReferenceAtTheSitesPressure<DoubleNumbers>();
 }
 
 // The flight's formats against double over a noisy climb: within 1 mm and 1 mm/s.

@@ -115,7 +115,7 @@ TEST(Barometer, TheWorldsBarometerFollowsTheVehicleAndTheSeed) {
 // Vehicle files written before the barometer load, with the datasheet's defaults.
 TEST(Barometer, VehicleFilesWithoutItLoad) {
   std::string text = sim::default_vehicle_text();
-  text = text.substr(0, text.find("# --- Barometer"));
+  text.resize(text.find("# --- Barometer"));
   sim::VehicleParams v;
   std::string error;
   ASSERT_TRUE(sim::parse_vehicle(text, v, error)) << error;
