@@ -3,6 +3,7 @@
 // reference within stated bounds; bad input fails with its line number and leaves no output.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -97,6 +98,23 @@ TEST(Replay, Recordings500HzRunTheChainAt500Hz) {
   }
   FlightChain<chain::FixedNumbers, 500> direct;
   EXPECT_EQ(h.value(), chain::checksum::fly(direct));
+}
+
+// The height estimate at both control rates (it runs at 250 Hz in both): the synthetic barometer
+// falls 6 Pa/s for 1.9 s, 0.95 m of climb; both estimates end near it and near each other.
+TEST(Replay, HeightEstimateRunsAtBothRates) {
+  std::istringstream header(replay_output_header());
+  std::vector<std::string> names;
+  for (std::string n; std::getline(header, n, ',');) names.push_back(n);
+  const size_t height = static_cast<size_t>(std::find(names.begin(), names.end(), "height_mm") - names.begin());
+  ASSERT_LT(height, names.size());
+  const int64_t at_1000 = parse_output(replay_text(chain::test::synthetic_recording_csv<1000>())).back()[height];
+  const int64_t at_500 = parse_output(replay_text(chain::test::synthetic_recording_csv<500>())).back()[height];
+  std::printf("  height at the end: %lld mm at 1 kHz, %lld mm at 500 Hz (the barometer's ramp: 950 mm)\n",
+              static_cast<long long>(at_1000), static_cast<long long>(at_500));
+  EXPECT_LE(std::llabs(at_1000 - 950), 150);
+  EXPECT_LE(std::llabs(at_500 - 950), 150);
+  EXPECT_LE(std::llabs(at_500 - at_1000), 100);
 }
 
 // The flight build against the double chain over the recording, column by column, in the

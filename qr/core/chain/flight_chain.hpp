@@ -56,6 +56,7 @@ class FlightChain {
   // accelerometer it integrates is low-passed at the full rate, as for the angles.
   static constexpr uint32_t kHeightHz = 250;
   static constexpr uint32_t kHeightDivider = SampleHz > kHeightHz ? SampleHz / kHeightHz : 1;
+  static constexpr uint32_t kHeightRunHz = SampleHz / kHeightDivider;  // its time step's rate
 
   FlightChain() { set_parameters(wire::ParameterValues{}); }
 
@@ -237,7 +238,7 @@ class FlightChain {
   // The blocks themselves, for tests and tools that look inside.
   const chain::AttitudeEstimator<Num, SampleHz>& estimator() const { return estimator_; }
   const chain::SensorCalibration<Num>& calibration() const { return calibration_; }
-  const chain::HeightEstimator<Num, kHeightHz>& height_estimator() const { return height_; }
+  const chain::HeightEstimator<Num, kHeightRunHz>& height_estimator() const { return height_; }
 
  private:
   using Units = chain::SensorUnits<Num>;
@@ -257,7 +258,7 @@ class FlightChain {
   chain::SensorFilters<Num, SampleHz> filters_{chain::parameter_spec(wire::ParamId::filter_cutoff_hz).default_value};
   chain::SensorCalibration<Num> calibration_;
   chain::AttitudeEstimator<Num, SampleHz> estimator_;
-  chain::HeightEstimator<Num, kHeightHz> height_;
+  chain::HeightEstimator<Num, kHeightRunHz> height_;
   chain::PilotSetpoints<Num> pilot_;
   chain::YawRateController<Num, SampleHz> yaw_;
   chain::AttitudeController<Num, SampleHz> tilt_[2];  // roll, pitch
