@@ -8,7 +8,7 @@
 namespace wire {
 
 inline constexpr const char* kTaskNames[] = {
-    "link", "filter", "calibration", "accel_angles", "estimator", "attitude",
+    "link", "filter", "calibration", "accel_angles", "estimator", "height", "attitude",
     "yaw",  "mixer",  "manual",      "safety",       "telemetry", "logger",
 };
 inline constexpr uint8_t kTaskCount = sizeof(kTaskNames) / sizeof(kTaskNames[0]);

@@ -15,6 +15,7 @@ using Field = double& (*)(VehicleParams&);
 struct ParamRow {
   const char* name;
   Field field;
+  bool optional = false;  // may be missing: the field keeps VehicleParams' default
 };
 
 // The file's vocabulary. Names carry their unit where it is not obvious.
@@ -65,6 +66,11 @@ constexpr ParamRow kRows[] = {
     {"imu_scale_error", [](VehicleParams& v) -> double& { return v.scale_error; }},
     {"battery_sense_noise_mv", [](VehicleParams& v) -> double& { return v.battery_sense_noise_mv; }},
     {"battery_sense_lsb_mv", [](VehicleParams& v) -> double& { return v.battery_sense_lsb_mv; }},
+    // Optional: vehicle files older than the barometer do not name them.
+    {"baro_noise_pa", [](VehicleParams& v) -> double& { return v.baro_noise_pa; }, true},
+    {"baro_temp_coeff_pa_per_k", [](VehicleParams& v) -> double& { return v.baro_temp_coeff_pa_per_k; }, true},
+    {"baro_warmup_k", [](VehicleParams& v) -> double& { return v.baro_warmup_k; }, true},
+    {"baro_warmup_tau_s", [](VehicleParams& v) -> double& { return v.baro_warmup_tau_s; }, true},
 };
 constexpr size_t kRowCount = std::size(kRows);
 
@@ -97,6 +103,7 @@ bool check(const VehicleParams& v, std::string& error) {
       {v.foot_depth_m > 0 && v.foot_radius_m > 0, "feet must be below and away from the centre"},
       {v.imu_bandwidth_hz > 0, "imu_bandwidth_hz must be > 0"},
       {v.battery_sense_lsb_mv > 0, "battery_sense_lsb_mv must be > 0"},
+      {v.baro_noise_pa >= 0 && v.baro_warmup_tau_s > 0, "baro_noise_pa >= 0 and baro_warmup_tau_s > 0"},
   };
   for (const Rule& r : rules) {
     if (!r.ok) {
@@ -152,7 +159,7 @@ bool parse_vehicle(const std::string& text, VehicleParams& out, std::string& err
     kRows[row].field(v) = parsed;
   }
   for (size_t row = 0; row < kRowCount; ++row) {
-    if (!seen[row]) {
+    if (!seen[row] && !kRows[row].optional) {
       error = std::string("missing parameter `") + kRows[row].name + "`";
       return false;
     }

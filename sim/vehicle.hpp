@@ -65,6 +65,13 @@ struct VehicleParams {
   double battery_sense_noise_mv = 0;
   double battery_sense_lsb_mv = 0;
 
+  // Barometer (MS5611 class, sim/barometer.hpp). Optional in a file: a file written before the
+  // barometer existed gets these defaults (the datasheet's noise at OSR 4096, our drift estimate).
+  double baro_noise_pa = 1.2;             // RMS noise of one reading (0.012 mbar at OSR 4096)
+  double baro_temp_coeff_pa_per_k = 0.5;  // residual pressure error per kelvin of warming
+  double baro_warmup_k = 5.0;             // the board's warming after power-up
+  double baro_warmup_tau_s = 120.0;       // ... and its time constant
+
   // Derived
   double speed_per_volt() const;  // rad/s per volt at full command
   double hover_speed() const;     // rad/s per rotor for thrust = weight

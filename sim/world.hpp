@@ -5,6 +5,7 @@
 
 #include <stdint.h>
 
+#include <sim/barometer.hpp>
 #include <sim/battery_sensor.hpp>
 #include <sim/imu.hpp>
 #include <sim/quadrotor.hpp>
@@ -20,6 +21,7 @@ struct WorldConfig {
 struct SensorReading {
   ImuReading imu;
   uint16_t battery_mv = 0;
+  int32_t pressure_pa = 0;  // the barometer's last reading (0 before its first)
 };
 
 class World {
@@ -39,12 +41,16 @@ class World {
   Quadrotor& plant() { return plant_; }
   const Quadrotor& plant() const { return plant_; }
   const Imu& imu() const { return imu_; }
+  const Barometer& barometer() const { return barometer_; }
+  // The board's altitude above the (ISA sea-level) ground, m: what the barometer measures.
+  double altitude_m() const { return -plant_.state().position.z; }
 
  private:
   Quadrotor plant_;
   Vibration vibration_;
   Imu imu_;
   BatterySensor battery_sensor_;
+  Barometer barometer_;
   uint32_t step_us_;
   uint64_t now_us_ = 0;
 };

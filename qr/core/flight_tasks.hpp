@@ -23,6 +23,7 @@ enum FlightTask : uint8_t {
   kCalibrationTask,
   kAccelAnglesTask,
   kEstimatorTask,
+  kHeightTask,
   kAttitudeControlTask,
   kYawControlTask,
   kMixerTask,
@@ -36,19 +37,22 @@ static_assert(kFlightTaskCount == wire::kTaskCount, "one wire task number per ro
 
 // Budgets are RV32IM instructions per run: the largest run `scripts/devboard --bench` measures in
 // any mode, rounded up with 10-50 % room (the link's largest is a parameter report burst, the
-// estimator's its restart from the accelerometer, the safety machine's a mode announcement). The
+// estimator's its restart from the accelerometer, the safety machine's a mode announcement, the
+// calibration's the run that finishes: offsets, and the height reference's one division). The
 // logger's is not measured by the bench (it has no log memory) and is an estimate. The rv32 test Devboard.TaskBudgetsHold fails when a measured maximum
 // exceeds its budget. Phases keep the divided tasks off each other's ticks: the accelerometer
-// angles fall on ticks 0 mod 4, telemetry and the logger on odd ones.
+// angles fall on ticks 0 mod 4, the height estimate on 2 mod 4, telemetry and the logger on odd ones.
 template <class Flight>
 inline constexpr Task<Flight> kFlightTaskTable[kFlightTaskCount] = {
     // name          run                                                   divider  phase  budget
     {wire::kTaskNames[kLinkTask], [](Flight& f) { f.run_link(); }, 1, 0, 4000},
     {wire::kTaskNames[kFilterTask], [](Flight& f) { f.run_filter(); }, 1, 0, 700},
-    {wire::kTaskNames[kCalibrationTask], [](Flight& f) { f.run_calibration(); }, 1, 0, 250},
+    {wire::kTaskNames[kCalibrationTask], [](Flight& f) { f.run_calibration(); }, 1, 0, 400},
     {wire::kTaskNames[kAccelAnglesTask], [](Flight& f) { f.chain().estimate_accel_angles(); },
      Flight::ChainType::kAccelDivider, 0, 900},
     {wire::kTaskNames[kEstimatorTask], [](Flight& f) { f.chain().estimate(); }, 1, 0, 1300},
+    {wire::kTaskNames[kHeightTask], [](Flight& f) { f.chain().estimate_height(); }, Flight::ChainType::kHeightDivider,
+     Flight::ChainType::kHeightDivider / 2, 400},
     {wire::kTaskNames[kAttitudeControlTask], [](Flight& f) { f.chain().control_attitude(); }, 1, 0, 350},
     {wire::kTaskNames[kYawControlTask], [](Flight& f) { f.chain().control_yaw(); }, 1, 0, 140},
     {wire::kTaskNames[kMixerTask], [](Flight& f) { f.run_mixer(); }, 1, 0, 800},
@@ -78,22 +82,22 @@ constexpr bool rows_in_task_order() {
 }
 
 namespace task_sets {
-// The filter and estimator also run in safe and panic, so the pilot sees attitude on the bench
-// and the filters are settled when a flight mode starts. The logger runs in every mode: a log
+// The filter and estimators also run in safe and panic, so the pilot sees attitude and height on
+// the bench and the filters are settled when a flight mode starts. The logger runs in every mode: a log
 // covers the whole flight, panic included.
-inline constexpr uint8_t kSafe[] = {kLinkTask,   kFilterTask,    kAccelAnglesTask, kEstimatorTask,
-                                    kSafetyTask, kTelemetryTask, kLoggerTask};
-inline constexpr uint8_t kPanic[] = {kLinkTask,   kFilterTask,    kAccelAnglesTask, kEstimatorTask,
-                                     kSafetyTask, kTelemetryTask, kLoggerTask};
-inline constexpr uint8_t kManual[] = {kLinkTask,        kFilterTask, kAccelAnglesTask, kEstimatorTask,
+inline constexpr uint8_t kSafe[] = {kLinkTask,   kFilterTask, kAccelAnglesTask, kEstimatorTask,
+                                    kHeightTask, kSafetyTask, kTelemetryTask,   kLoggerTask};
+inline constexpr uint8_t kPanic[] = {kLinkTask,   kFilterTask, kAccelAnglesTask, kEstimatorTask,
+                                     kHeightTask, kSafetyTask, kTelemetryTask,   kLoggerTask};
+inline constexpr uint8_t kManual[] = {kLinkTask,        kFilterTask, kAccelAnglesTask, kEstimatorTask, kHeightTask,
                                       kManualMixerTask, kSafetyTask, kTelemetryTask,   kLoggerTask};
 inline constexpr uint8_t kCalibration[] = {kLinkTask,   kFilterTask,    kCalibrationTask,
                                            kSafetyTask, kTelemetryTask, kLoggerTask};
-inline constexpr uint8_t kYawControl[] = {kLinkTask,  kFilterTask, kAccelAnglesTask, kEstimatorTask, kYawControlTask,
-                                          kMixerTask, kSafetyTask, kTelemetryTask,   kLoggerTask};
-inline constexpr uint8_t kFullControl[] = {
-    kLinkTask,       kFilterTask, kAccelAnglesTask, kEstimatorTask, kAttitudeControlTask,
-    kYawControlTask, kMixerTask,  kSafetyTask,      kTelemetryTask, kLoggerTask};
+inline constexpr uint8_t kYawControl[] = {kLinkTask,       kFilterTask, kAccelAnglesTask, kEstimatorTask, kHeightTask,
+                                          kYawControlTask, kMixerTask,  kSafetyTask,      kTelemetryTask, kLoggerTask};
+inline constexpr uint8_t kFullControl[] = {kLinkTask,   kFilterTask,          kAccelAnglesTask, kEstimatorTask,
+                                           kHeightTask, kAttitudeControlTask, kYawControlTask,  kMixerTask,
+                                           kSafetyTask, kTelemetryTask,       kLoggerTask};
 
 template <size_t N>
 constexpr TaskSet set(const uint8_t (&ids)[N]) {

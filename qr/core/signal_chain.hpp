@@ -21,6 +21,7 @@ template <class C>
 concept SignalChain = requires(C& c, const C& cc, const wire::ParameterValues& p, const ControlInput& sticks,
                                const SensorSample& sample) {
   {C::kAccelDivider};   // the accelerometer-angle task's divider of the control rate
+  {C::kHeightDivider};  // the height estimate's
   c.set_parameters(p);  // when a parameter changes, never per tick
   c.set_pilot(sticks);
   // tasks
@@ -28,6 +29,7 @@ concept SignalChain = requires(C& c, const C& cc, const wire::ParameterValues& p
   {c.calibrate()};  // true once the running calibration has finished
   c.estimate_accel_angles();
   c.estimate();
+  c.estimate_height();
   c.control_attitude();
   c.control_yaw();
   { c.mix() } -> ConvertibleToEngines;
@@ -39,6 +41,8 @@ concept SignalChain = requires(C& c, const C& cc, const wire::ParameterValues& p
   // read-outs, in the wire's units
   {cc.calibrated()};
   {cc.tilt_mrad()};
+  {cc.height_mm()};
+  {cc.climb_mm_s()};
   {cc.roll_e4()};
   {cc.pitch_e4()};
   {cc.yaw_e4()};

@@ -30,6 +30,13 @@ struct RealNumbers {
   using BiasGain = R;
   using BiasSum = R;
   using Thrust = R;
+  using Height = R;
+  using Climb = R;
+  using VerticalAccel = R;
+  using HeightGain = R;
+  using HeightStep = R;
+  static constexpr int kPressureFrac = 14;  // the Q format's: raw pressures arrive scaled by it
+  using Pressure = R;
 
   template <int Frac>
   static R fixed(int32_t raw) {

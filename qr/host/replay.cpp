@@ -39,8 +39,12 @@ constexpr Field kInputFields[] = {
     {"roll", -1000, 1000},
     {"pitch", -1000, 1000},
     {"yaw", -1000, 1000},
+    // The barometer (board.hpp: 0 = absent); the MS5611 reads 1000..120000 Pa. Recordings made
+    // before it existed end at yaw and replay with no barometer.
+    {"pressure_pa", 0, 120000},
 };
 constexpr size_t kInputFieldCount = sizeof(kInputFields) / sizeof(kInputFields[0]);
+constexpr size_t kFieldsWithoutPressure = kInputFieldCount - 1;
 
 struct Row {
   size_t line;
@@ -84,6 +88,8 @@ class InputError {
     out_ << "replay: " << file_ << ": " << what << "\n";
     return 1;
   }
+  // Not an error: the replay goes on.
+  void note(const std::string& what) const { out_ << "replay: " << file_ << ": note: " << what << "\n"; }
 
  private:
   const char* file_;
@@ -91,13 +97,14 @@ class InputError {
 };
 
 // Parses one data row, or says what is wrong with it.
-std::string parse_row(std::string_view line, Row& row) {
+// `count`: the fields the header named (with or without the pressure).
+std::string parse_row(std::string_view line, size_t count, Row& row) {
   const std::vector<std::string_view> fields = split(line);
-  if (fields.size() != kInputFieldCount) {
-    return "expected " + std::to_string(kInputFieldCount) + " fields, got " + std::to_string(fields.size());
+  if (fields.size() != count) {
+    return "expected " + std::to_string(count) + " fields, got " + std::to_string(fields.size());
   }
-  int64_t v[kInputFieldCount];
-  for (size_t i = 0; i < kInputFieldCount; ++i) {
+  int64_t v[kInputFieldCount] = {};
+  for (size_t i = 0; i < count; ++i) {
     const std::string_view f = fields[i];
     const auto [end, ec] = std::from_chars(f.data(), f.data() + f.size(), v[i]);
     if (f.empty() || ec != std::errc() || end != f.data() + f.size()) {
@@ -118,6 +125,7 @@ std::string parse_row(std::string_view line, Row& row) {
   row.sticks.roll = static_cast<int16_t>(v[9]);
   row.sticks.pitch = static_cast<int16_t>(v[10]);
   row.sticks.yaw = static_cast<int16_t>(v[11]);
+  row.sample.pressure_pa = static_cast<int32_t>(v[12]);  // 0 when the file has no such column
   return {};
 }
 
@@ -166,7 +174,11 @@ int read_rows(std::istream& in, const InputError& error, std::vector<Row>& rows)
   size_t number = 0;
   if (!std::getline(in, line)) return error.at(1, "empty: expected the header '" + replay_input_header() + "'");
   ++number;
-  if (trim(line) != replay_input_header()) {
+  size_t count = kInputFieldCount;
+  if (trim(line) == replay_input_header_without_pressure()) {
+    count = kFieldsWithoutPressure;
+    error.note("no pressure_pa column: the barometer is absent, so the height estimate stays 0");
+  } else if (trim(line) != replay_input_header()) {
     return error.at(number, "header must be '" + replay_input_header() + "', got '" + std::string(trim(line)) + "'");
   }
   while (std::getline(in, line)) {
@@ -174,7 +186,7 @@ int read_rows(std::istream& in, const InputError& error, std::vector<Row>& rows)
     if (trim(line).empty()) continue;
     Row row{};
     row.line = number;
-    if (const std::string what = parse_row(line, row); !what.empty()) return error.at(number, what);
+    if (const std::string what = parse_row(line, count, row); !what.empty()) return error.at(number, what);
     rows.push_back(row);
   }
   if (in.bad()) return error.whole("read error");
@@ -187,6 +199,15 @@ const std::string& replay_input_header() {
   static const std::string header = [] {
     std::vector<std::string> names;
     for (const Field& f : kInputFields) names.push_back(f.name);
+    return join(names);
+  }();
+  return header;
+}
+
+const std::string& replay_input_header_without_pressure() {
+  static const std::string header = [] {
+    std::vector<std::string> names;
+    for (size_t i = 0; i < kFieldsWithoutPressure; ++i) names.push_back(kInputFields[i].name);
     return join(names);
   }();
   return header;

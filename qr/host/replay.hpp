@@ -4,7 +4,7 @@
 //
 // docs/replay.md describes both CSV formats. In short: the input has a header and one row per
 // control period (time_us, gyro_x..z, accel_x..z in raw counts, battery_mv, lift, roll, pitch,
-// yaw sticks); the control rate (1000 or 500 Hz) is the input's time step. The first
+// yaw sticks, pressure_pa); the control rate (1000 or 500 Hz) is the input's time step. The first
 // kCalibrationSamples rows (512) calibrate the sensors, so the vehicle must be level and still
 // in them; the rest run in full control. Deterministic: the flight build is integer arithmetic.
 #pragma once
@@ -35,8 +35,11 @@ int run_replay(const char* in_csv, const char* out_csv);
 int run_replay(std::istream& in, const char* in_name, std::ostream& out, std::ostream& errors,
                const ReplayOptions& options = {});
 
-// The header lines of both formats (without the line end).
+// The header lines of both formats (without the line end). Input without the last column,
+// pressure_pa, is the format before the barometer: it replays with no barometer, and says so on
+// the error stream.
 const std::string& replay_input_header();
+const std::string& replay_input_header_without_pressure();
 const std::string& replay_output_header();
 
 }  // namespace qr::host

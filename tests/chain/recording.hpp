@@ -19,9 +19,9 @@ std::string synthetic_recording_csv() {
     const synthetic::Tick t = flight.next();
     const SensorSample& s = t.sample;
     char line[128];
-    std::snprintf(line, sizeof line, "%u,%d,%d,%d,%d,%d,%d,%u,%u,%d,%d,%d\n", synthetic::kStartUs + n * (1000000u / Hz),
-                  s.gyro[0], s.gyro[1], s.gyro[2], s.accel[0], s.accel[1], s.accel[2], s.battery_mv, t.sticks.lift,
-                  t.sticks.roll, t.sticks.pitch, t.sticks.yaw);
+    std::snprintf(line, sizeof line, "%u,%d,%d,%d,%d,%d,%d,%u,%u,%d,%d,%d,%d\n",
+                  synthetic::kStartUs + n * (1000000u / Hz), s.gyro[0], s.gyro[1], s.gyro[2], s.accel[0], s.accel[1],
+                  s.accel[2], s.battery_mv, t.sticks.lift, t.sticks.roll, t.sticks.pitch, t.sticks.yaw, s.pressure_pa);
     csv += line;
   }
   return csv;

@@ -3,6 +3,7 @@
 // reference within stated bounds; bad input fails with its line number and leaves no output.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -99,6 +100,23 @@ TEST(Replay, Recordings500HzRunTheChainAt500Hz) {
   EXPECT_EQ(h.value(), chain::checksum::fly(direct));
 }
 
+// The height estimate at both control rates (it runs at 250 Hz in both): the synthetic barometer
+// falls 6 Pa/s for 1.9 s, 0.95 m of climb; both estimates end near it and near each other.
+TEST(Replay, HeightEstimateRunsAtBothRates) {
+  std::istringstream header(replay_output_header());
+  std::vector<std::string> names;
+  for (std::string n; std::getline(header, n, ',');) names.push_back(n);
+  const size_t height = static_cast<size_t>(std::find(names.begin(), names.end(), "height_mm") - names.begin());
+  ASSERT_LT(height, names.size());
+  const int64_t at_1000 = parse_output(replay_text(chain::test::synthetic_recording_csv<1000>())).back()[height];
+  const int64_t at_500 = parse_output(replay_text(chain::test::synthetic_recording_csv<500>())).back()[height];
+  std::printf("  height at the end: %lld mm at 1 kHz, %lld mm at 500 Hz (the barometer's ramp: 950 mm)\n",
+              static_cast<long long>(at_1000), static_cast<long long>(at_500));
+  EXPECT_LE(std::llabs(at_1000 - 950), 150);
+  EXPECT_LE(std::llabs(at_500 - 950), 150);
+  EXPECT_LE(std::llabs(at_500 - at_1000), 100);
+}
+
 // The flight build against the double chain over the recording, column by column, in the
 // read-outs' own units. Bounds: the measured worst differences.
 TEST(Replay, FixedMatchesTheDoubleReference) {
@@ -155,17 +173,19 @@ TEST(Replay, BadInputFailsWithItsLineNumber) {
       {"", "in.csv:1: empty"},
       {"time_us,gyro_x\n1,2\n",
        "in.csv:1: header must be 'time_us,gyro_x,gyro_y,gyro_z,accel_x,accel_y,accel_z,"
-       "battery_mv,lift,roll,pitch,yaw', got 'time_us,gyro_x'"},
-      {recording_with(5, "1004000,1,2,3,4,5,6,7,8,9,10"), "in.csv:5: expected 12 fields, got 11"},
-      {recording_with(7, "1006000,1,2,3,4,x5,6,7,8,9,10,11"), "in.csv:7: accel_y: 'x5' is not an integer"},
-      {recording_with(7, "1006000,1,2,3,4,5.5,6,7,8,9,10,11"), "in.csv:7: accel_y: '5.5' is not an integer"},
-      {recording_with(9, "1008000,1,2,3,4,5,6,7,1200,9,10,11"), "in.csv:9: lift: 1200 is outside 0..1000"},
-      {recording_with(9, "1008000,40000,2,3,4,5,6,7,8,9,10,11"), "in.csv:9: gyro_x: 40000 is outside -32768..32767"},
-      {recording_with(9, "1008000,1,2,3,4,5,6,7,8,9,10,"), "in.csv:9: yaw: '' is not an integer"},
-      {recording_with(11, "1009500,1,2,3,4,5,6,7,8,9,10,11"),
+       "battery_mv,lift,roll,pitch,yaw,pressure_pa', got 'time_us,gyro_x'"},
+      {recording_with(5, "1004000,1,2,3,4,5,6,7,8,9,10,11"), "in.csv:5: expected 13 fields, got 12"},
+      {recording_with(7, "1006000,1,2,3,4,x5,6,7,8,9,10,11,0"), "in.csv:7: accel_y: 'x5' is not an integer"},
+      {recording_with(7, "1006000,1,2,3,4,5.5,6,7,8,9,10,11,0"), "in.csv:7: accel_y: '5.5' is not an integer"},
+      {recording_with(9, "1008000,1,2,3,4,5,6,7,1200,9,10,11,0"), "in.csv:9: lift: 1200 is outside 0..1000"},
+      {recording_with(9, "1008000,40000,2,3,4,5,6,7,8,9,10,11,0"), "in.csv:9: gyro_x: 40000 is outside -32768..32767"},
+      {recording_with(9, "1008000,1,2,3,4,5,6,7,8,9,10,11,"), "in.csv:9: pressure_pa: '' is not an integer"},
+      {recording_with(9, "1008000,1,2,3,4,5,6,7,8,9,10,11,130000"),
+       "in.csv:9: pressure_pa: 130000 is outside 0..120000"},
+      {recording_with(11, "1009500,1,2,3,4,5,6,7,8,9,10,11,0"),
        "in.csv:11: time step 1500 us differs from the first, 1000 us"},
-      {recording_with(3, "1003000,1,2,3,4,5,6,7,8,9,10,11"), "in.csv:3: time step 3000 us: the chain runs at"},
-      {replay_input_header() + "\n1000,0,0,0,0,0,-8192,12000,0,0,0,0\n", "in.csv: has 1 rows; the first 512"},
+      {recording_with(3, "1003000,1,2,3,4,5,6,7,8,9,10,11,0"), "in.csv:3: time step 3000 us: the chain runs at"},
+      {replay_input_header() + "\n1000,0,0,0,0,0,-8192,12000,0,0,0,0,0\n", "in.csv: has 1 rows; the first 512"},
   };
   for (const auto& c : cases) {
     const Failure f = replay_failure(c.input);
@@ -194,7 +214,7 @@ TEST(Replay, BadInputLeavesNoOutputFile) {
   }
   std::ostringstream errors;
   EXPECT_EQ(run_replay((dir / "bad.csv").c_str(), (dir / "out.csv").c_str(), errors), 1);
-  EXPECT_NE(errors.str().find(":600: expected 12 fields, got 1"), std::string::npos) << errors.str();
+  EXPECT_NE(errors.str().find(":600: expected 13 fields, got 1"), std::string::npos) << errors.str();
   EXPECT_FALSE(fs::exists(dir / "out.csv"));
   fs::remove_all(dir);
 }
@@ -204,6 +224,42 @@ TEST(Replay, HeaderMayEndInCarriageReturnAndBlankLinesAreSkipped) {
   input.insert(input.find('\n'), "\r");
   input += "\n\n";
   EXPECT_EQ(replay_text(input), replay_text(read_file(kRecording)));
+}
+
+// A recording from before the barometer (no pressure_pa column) still replays: the same attitude,
+// engines and every other column as with its pressures, no height estimate, and a note.
+TEST(Replay, RecordingWithoutPressureReplaysWithNoBarometer) {
+  std::istringstream full(read_file(kRecording));
+  std::string old, line;
+  for (bool first = true; std::getline(full, line); first = false) {
+    old += (first ? replay_input_header_without_pressure() : line.substr(0, line.rfind(','))) + "\n";
+  }
+  std::istringstream in(old);
+  std::ostringstream out, errors;
+  ASSERT_EQ(run_replay(in, "old.csv", out, errors), 0) << errors.str();
+  EXPECT_NE(errors.str().find("replay: old.csv: note: no pressure_pa column: the barometer is absent"),
+            std::string::npos)
+      << errors.str();
+  const auto without = parse_output(out.str());
+  const auto with = parse_output(replay_text(read_file(kRecording)));
+  ASSERT_EQ(without.size(), with.size());
+  std::istringstream header(replay_output_header());
+  std::vector<std::string> names;
+  for (std::string n; std::getline(header, n, ',');) names.push_back(n);
+  bool height_moved = false;
+  for (size_t r = 0; r < with.size(); ++r) {
+    for (size_t c = 0; c < names.size(); ++c) {
+      const bool height = names[c].find("height") != std::string::npos || names[c] == "climb_mm_s" ||
+                          names[c] == "accel_bias_mm_s2";
+      if (height) {
+        EXPECT_EQ(without[r][c], 0) << names[c] << " row " << r;
+        height_moved = height_moved || with[r][c] != 0;
+      } else {
+        ASSERT_EQ(without[r][c], with[r][c]) << names[c] << " row " << r;
+      }
+    }
+  }
+  EXPECT_TRUE(height_moved) << "with its pressures the same recording has a height estimate";
 }
 
 }  // namespace

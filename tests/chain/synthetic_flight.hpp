@@ -14,6 +14,10 @@
 // (x +40, y -25, z +15 counts); specific force g (sin theta, -sin phi cos theta, -cos phi cos theta) plus an
 // accelerometer offset (x +60, y -35, z +90 counts); triangular-ish noise (sum of four uniform
 // draws) of +-12 gyro counts and +-80 accelerometer counts.
+// Barometer: a reading every 20 ms, held in between: 101325 Pa while still, then falling 6 Pa/s
+// (about 0.5 m/s of climb; the accelerometer knows nothing of it, so the height estimate has two
+// sensors that disagree, which is all a checksum needs) with +-2 Pa of noise from its own stream,
+// so the gyro and accelerometer samples are those of the flight before the barometer.
 #pragma once
 
 #include <stdint.h>
@@ -44,6 +48,7 @@ struct Tick {
 // xorshift32: small, fast, and the same sequence everywhere.
 class Noise {
  public:
+  explicit Noise(uint32_t seed = 2463534242u) : state_(seed) {}
   int32_t next(int32_t half_width) {  // sum of four draws in [-w/4, w/4]
     int32_t sum = 0;
     for (int i = 0; i < 4; ++i) {
@@ -57,7 +62,7 @@ class Noise {
   }
 
  private:
-  uint32_t state_ = 2463534242u;
+  uint32_t state_;
 };
 
 inline int16_t saturate16(int32_t v) { return static_cast<int16_t>(v > 32767 ? 32767 : v < -32768 ? -32768 : v); }
@@ -119,6 +124,11 @@ class Flight {
     t.sample.accel[1] = saturate16(-g_counts(fx::narrow<Unit>(fx::mul_wide(sr, cp))) - 35 + noise_.next(80));
     t.sample.accel[2] = saturate16(-g_counts(fx::narrow<Unit>(fx::mul_wide(cr, cp))) + 90 + noise_.next(80));
     t.sample.battery_mv = static_cast<uint16_t>(11800 - n / 100);
+    if (n % kBaroDivider == 0) {
+      const int32_t climbing = n >= kRollStart ? static_cast<int32_t>(n - kRollStart) : 0;
+      pressure_pa_ = 101325 - climbing * 6 / static_cast<int32_t>(SampleHz) + baro_noise_.next(4);
+    }
+    t.sample.pressure_pa = pressure_pa_;
 
     if (n >= kRollStart) {
       t.sticks.lift = 450;
@@ -139,6 +149,7 @@ class Flight {
   static constexpr uint32_t kPitchStart = kStill + SampleHz * 3 / 5;
   static constexpr uint32_t kPitchRamp = SampleHz / 2;
   static constexpr uint32_t kYawStart = kStill + SampleHz * 6 / 5;
+  static constexpr uint32_t kBaroDivider = SampleHz / 50;  // a reading every 20 ms
 
   static constexpr Angle kRollPhaseStep = Angle(2 * kPiD / kRollPeriod);
   static constexpr Angle kRollAmplitude = Angle(0.25);
@@ -159,6 +170,8 @@ class Flight {
   uint32_t n_ = 0;
   Angle yaw_{};
   Noise noise_;
+  Noise baro_noise_{123456789u};
+  int32_t pressure_pa_ = 0;
 };
 
 }  // namespace qr::chain::synthetic

@@ -12,6 +12,7 @@ namespace qr::test {
 
 struct ScriptedChain {
   static constexpr uint32_t kAccelDivider = 4;
+  static constexpr uint32_t kHeightDivider = 4;
 
   // Scripted behaviour
   uint32_t calibration_samples = 10;
@@ -21,6 +22,7 @@ struct ScriptedChain {
   uint32_t filtered = 0;
   uint32_t estimated = 0;
   uint32_t accel_angles = 0;
+  uint32_t height_estimated = 0;
   uint32_t calibrations_entered = 0;
   uint32_t attitude_entered = 0;
   uint32_t yaw_entered = 0;
@@ -48,6 +50,9 @@ struct ScriptedChain {
   }
   void estimate_accel_angles() { ++accel_angles; }
   void estimate() { ++estimated; }
+  void estimate_height() { ++height_estimated; }
+  int32_t height_mm() const { return 0; }
+  int32_t climb_mm_s() const { return 0; }
   void enter_attitude_control() { ++attitude_entered; }
   void enter_yaw_control() { ++yaw_entered; }
   void control_yaw() { ++yaw_controlled; }

@@ -13,7 +13,10 @@ Recording::Recording(const uint8_t* bytes) {
   for (int i = 0; i < 4; ++i) {
     if (bytes[i] != kRecordingMagic[i]) return;
   }
-  if (u16(bytes + 4) != kRecordingVersion || u16(bytes + 6) != kRecordBytes) return;
+  const uint16_t version = u16(bytes + 4), size = u16(bytes + 6);
+  if (!(version == kRecordingVersion && size == kRecordBytes) && !(version == 1 && size == kRecordBytesVersion1))
+    return;
+  record_bytes_ = size;
   const uint32_t rate = u32(bytes + 12);
   if (rate == 0 || 1000000u % rate != 0) return;
   records_ = bytes + kRecordingHeaderBytes;
@@ -23,7 +26,7 @@ Recording::Recording(const uint8_t* bytes) {
 }
 
 RecordedTick Recording::at(uint32_t index) const {
-  const uint8_t* r = records_ + static_cast<size_t>(index) * kRecordBytes;
+  const uint8_t* r = records_ + static_cast<size_t>(index) * record_bytes_;
   RecordedTick t;
   for (int axis = 0; axis < 3; ++axis) {
     t.sample.gyro[axis] = i16(r + 2 * axis);
@@ -34,6 +37,7 @@ RecordedTick Recording::at(uint32_t index) const {
   t.sticks.roll = i16(r + 16);
   t.sticks.pitch = i16(r + 18);
   t.sticks.yaw = i16(r + 20);
+  t.sample.pressure_pa = record_bytes_ == kRecordBytes ? static_cast<int32_t>(u32(r + 24)) : 0;
   return t;
 }
 

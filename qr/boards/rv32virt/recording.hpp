@@ -1,9 +1,9 @@
 // A sensor recording as the devboard reads it from memory (docs/devboard.md): a 20-byte header,
-// then one 24-byte record per control period, all little-endian.
-//   header: "QRRC" | u16 version (1) | u16 record bytes (24) | u32 record count | u32 rate (Hz)
-//           | u32 time of the first record (µs)
+// then one record per control period, all little-endian.
+//   header: "QRRC" | u16 version (2; 1 is read too) | u16 record bytes (28; 24 in version 1)
+//           | u32 record count | u32 rate (Hz) | u32 time of the first record (µs)
 //   record: i16 gyro x,y,z | i16 accel x,y,z | u16 battery mV | u16 lift | i16 roll, pitch, yaw
-//           | u16 flags (0)
+//           | u16 flags (0) | i32 pressure Pa (version 2 only: version 1 has no barometer, 0)
 // The sticks are used by test mode (replay) only; flying from the console, they come from the link.
 #pragma once
 
@@ -16,9 +16,10 @@
 namespace rv32virt {
 
 inline constexpr uint8_t kRecordingMagic[4] = {'Q', 'R', 'R', 'C'};
-inline constexpr uint16_t kRecordingVersion = 1;
+inline constexpr uint16_t kRecordingVersion = 2;
 inline constexpr size_t kRecordingHeaderBytes = 20;
-inline constexpr size_t kRecordBytes = 24;
+inline constexpr size_t kRecordBytes = 28;
+inline constexpr size_t kRecordBytesVersion1 = 24;  // before the barometer
 
 struct RecordedTick {
   qr::SensorSample sample;
@@ -39,6 +40,7 @@ class Recording {
 
  private:
   const uint8_t* records_ = nullptr;
+  size_t record_bytes_ = kRecordBytes;
   uint32_t count_ = 0;
   uint32_t rate_hz_ = 0;
   uint32_t start_us_ = 0;

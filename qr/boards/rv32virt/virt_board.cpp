@@ -124,6 +124,7 @@ qr::SensorSample VirtBoard::read_sensors() const {
     qr::SensorSample level;  // at rest, level: the accelerometer feels 1 g upwards
     level.accel[2] = -8192;
     level.battery_mv = 12000;
+    level.pressure_pa = 101325;  // a barometer at ISA sea level
     return level;
   }
   const uint32_t tick = g_kicks - first_kick_;

@@ -96,6 +96,7 @@ sim::VehicleParams vehicle_for(const ScenarioScript& script, const RunOptions& o
     v.gyro_bias_dps = v.accel_bias_xy_mg = v.accel_bias_z_mg = v.scale_error = 0;
     v.vibration_accel_g = v.vibration_gyro_dps = {};
     v.battery_sense_noise_mv = 0;
+    v.baro_noise_pa = v.baro_temp_coeff_pa_per_k = 0;
   }
   return v;
 }
@@ -336,8 +337,9 @@ ScenarioResult run_scenario(const ScenarioScript& script, const RunOptions& opti
     if (record != nullptr && recording) {
       const qr::SensorSample& in = qr->board.read_sensors();  // what this tick ran on
       const qr::ControlInput& c = qr->firmware.controls();
-      std::fprintf(record, "%u,%d,%d,%d,%d,%d,%d,%u,%u,%d,%d,%d\n", qr->board.now_us(), in.gyro[0], in.gyro[1],
-                   in.gyro[2], in.accel[0], in.accel[1], in.accel[2], in.battery_mv, c.lift, c.roll, c.pitch, c.yaw);
+      std::fprintf(record, "%u,%d,%d,%d,%d,%d,%d,%u,%u,%d,%d,%d,%d\n", qr->board.now_us(), in.gyro[0], in.gyro[1],
+                   in.gyro[2], in.accel[0], in.accel[1], in.accel[2], in.battery_mv, c.lift, c.roll, c.pitch, c.yaw,
+                   in.pressure_pa);
     }
   }
   if (trace != nullptr) std::fclose(trace);

@@ -13,7 +13,7 @@ qr::SensorSample to_sensor_sample(const sim::SensorReading& reading) {
     s.accel[i] = reading.imu.accel[i];
   }
   s.battery_mv = reading.battery_mv;
-  s.pressure_pa = 0;  // no barometer modelled
+  s.pressure_pa = reading.pressure_pa;  // MS5611 model, a new reading every 20 ms
   return s;
 }
 

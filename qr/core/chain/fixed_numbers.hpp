@@ -33,6 +33,14 @@ struct FixedNumbers {
   using BiasGain = fx::Q<24>;     // fs / C2 in 1/s; up to 128
   using BiasSum = fx::Wide<52>;   // gyro bias accumulator: Angle x BiasGain, exact, +-2048 rad/s
   using Thrust = fx::Q<16>;       // thrust units (1000 = one engine at full speed); +-32768
+  // Height estimate (height_estimator.hpp)
+  using Height = fx::Q<16>;         // m; +-32768, lsb 1.5e-5
+  using Climb = fx::Q<24>;          // m/s; +-128, lsb 6e-8
+  using VerticalAccel = fx::Q<24>;  // m/s²; +-128 (the accelerometer's 4 g per axis is 39)
+  using HeightGain = fx::Q<27>;     // 3/tau (1/s) and 3/tau² (1/s²); +-16
+  using HeightStep = fx::Q<24>;     // the run's time step, s: speed x step and height x step add in Wide<48>
+  static constexpr int kPressureFrac = 14;
+  using Pressure = fx::Q<kPressureFrac>;  // Pa; +-131072 (the MS5611 reads up to 120000), lsb 6e-5
 
   template <int Frac>
   static constexpr fx::Q<Frac> fixed(int32_t raw) {

@@ -1,7 +1,7 @@
 // The signal chain as the firmware runs it: one object, one method per scheduler task, data
 // flowing one way through a tick:
 //
-//   set_pilot -> filter -> (calibrate) -> (estimate_accel_angles) -> estimate
+//   set_pilot -> filter -> (calibrate) -> (estimate_accel_angles) -> estimate -> (estimate_height)
 //             -> (control_attitude) (control_yaw) -> mix          (manual: mix_manual)
 //
 // Each method reads what the ones before it left and writes its own outputs; none reaches back.
@@ -26,6 +26,7 @@
 #include <qr/core/chain/controllers.hpp>
 #include <qr/core/chain/engine_mixer.hpp>
 #include <qr/core/chain/fixed_numbers.hpp>
+#include <qr/core/chain/height_estimator.hpp>
 #include <qr/core/chain/pilot_setpoints.hpp>
 #include <qr/core/chain/sensor_calibration.hpp>
 #include <qr/core/chain/sensor_filters.hpp>
@@ -50,6 +51,12 @@ class FlightChain {
   // 125 Hz for the sampling to fold down.
   static constexpr uint32_t kAccelHz = 250;
   static constexpr uint32_t kAccelDivider = SampleHz > kAccelHz ? SampleHz / kAccelHz : 1;
+  // The height estimate runs at 250 Hz too (on other ticks than the accelerometer angles: the
+  // task table's phase): its fastest dynamics are the baro-inertial loop's 1/tau, and the
+  // accelerometer it integrates is low-passed at the full rate, as for the angles.
+  static constexpr uint32_t kHeightHz = 250;
+  static constexpr uint32_t kHeightDivider = SampleHz > kHeightHz ? SampleHz / kHeightHz : 1;
+  static constexpr uint32_t kHeightRunHz = SampleHz / kHeightDivider;  // its time step's rate
 
   FlightChain() { set_parameters(wire::ParameterValues{}); }
 
@@ -83,11 +90,18 @@ class FlightChain {
   // previous offsets stay in use.
   bool calibrate() {
     const bool was_done = calibration_.samples() >= chain::kCalibrationSamples;
+    height_.add_calibration(sample_.pressure_pa);
     const bool done = calibration_.add(sample_);
-    if (done && !was_done) estimator_.restart();
+    if (done && !was_done) {
+      estimator_.restart();
+      height_.zero_reference();  // the height estimate counts from here
+    }
     return done;
   }
-  void enter_calibration() { calibration_.restart(); }
+  void enter_calibration() {
+    calibration_.restart();
+    height_.restart_calibration();
+  }
   // Offsets exist (some calibration run has finished since start-up).
   bool calibrated() const { return calibration_.done(); }
 
@@ -108,6 +122,14 @@ class FlightChain {
       accel[i] = filters_.accel(i) - calibration_.accel_offset(i);
     }
     estimator_.update(rate, accel);
+  }
+
+  // Task "height": calibrated filtered accelerometer, the attitude estimate and the barometer ->
+  // height and vertical speed (height_estimator.hpp).
+  void estimate_height() {
+    Accel accel[3];
+    for (int i = 0; i < 3; ++i) accel[i] = filters_.accel(i) - calibration_.accel_offset(i);
+    height_.update(accel, estimator_.roll(), estimator_.pitch(), sample_.pressure_pa);
   }
 
   // Entry action of yaw and full control: the yaw loop's integral starts empty.
@@ -203,9 +225,20 @@ class FlightChain {
   const EngineCommand& engines() const { return engines_; }
   int32_t cutoff_hz() const { return filters_.cutoff_hz(); }
 
+  // The height estimate, up, relative to the height at the last calibration: height in mm,
+  // vertical speed in mm/s, the accelerometer's vertical bias it tracks in mm/s², and the
+  // barometer's own height in mm. All 0 while there is no barometer reference
+  // (height_valid() false: no calibration yet, or no barometer in it).
+  bool height_valid() const { return height_.has_reference(); }
+  int32_t height_mm() const { return Num::round_to_int(fx::mul_wide(height_.height(), kThousand)); }
+  int32_t climb_mm_s() const { return Num::round_to_int(fx::mul_wide(height_.climb(), kThousand)); }
+  int32_t accel_bias_mm_s2() const { return Num::round_to_int(fx::mul_wide(height_.accel_bias(), kThousand)); }
+  int32_t baro_height_mm() const { return Num::round_to_int(fx::mul_wide(height_.baro_height(), kThousand)); }
+
   // The blocks themselves, for tests and tools that look inside.
   const chain::AttitudeEstimator<Num, SampleHz>& estimator() const { return estimator_; }
   const chain::SensorCalibration<Num>& calibration() const { return calibration_; }
+  const chain::HeightEstimator<Num, kHeightRunHz>& height_estimator() const { return height_; }
 
  private:
   using Units = chain::SensorUnits<Num>;
@@ -225,6 +258,7 @@ class FlightChain {
   chain::SensorFilters<Num, SampleHz> filters_{chain::parameter_spec(wire::ParamId::filter_cutoff_hz).default_value};
   chain::SensorCalibration<Num> calibration_;
   chain::AttitudeEstimator<Num, SampleHz> estimator_;
+  chain::HeightEstimator<Num, kHeightRunHz> height_;
   chain::PilotSetpoints<Num> pilot_;
   chain::YawRateController<Num, SampleHz> yaw_;
   chain::AttitudeController<Num, SampleHz> tilt_[2];  // roll, pitch

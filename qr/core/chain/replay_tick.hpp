@@ -162,6 +162,10 @@ inline constexpr ReplayColumn<Chain> kReplayColumns[] = {
     {"ae2", [](const Chain& c) -> int32_t { return c.engines().value[2]; }},
     {"ae3", [](const Chain& c) -> int32_t { return c.engines().value[3]; }},
     {"calibrated", [](const Chain& c) -> int32_t { return c.calibrated() ? 1 : 0; }},
+    {"height_mm", [](const Chain& c) -> int32_t { return c.height_mm(); }},
+    {"climb_mm_s", [](const Chain& c) -> int32_t { return c.climb_mm_s(); }},
+    {"accel_bias_mm_s2", [](const Chain& c) -> int32_t { return c.accel_bias_mm_s2(); }},
+    {"baro_height_mm", [](const Chain& c) -> int32_t { return c.baro_height_mm(); }},
 };
 
 }  // namespace qr::chain
