@@ -1,5 +1,6 @@
 // docs/simulator.md prints the built-in scenarios with their bands and every figure a flight
-// reports: both must be what the files and the code say.
+// reports: both must be what the files and the code say. Section 7's figures, which
+// scripts/envelope writes, must have a row for every scenario and band.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -108,6 +109,97 @@ TEST(ScenarioDocument, TheSweepRangesAreTheCodes) {
     code.push_back(text.str());
   }
   EXPECT_EQ(documented, code);
+}
+
+// Section 7's figures are written by scripts/envelope between its markers (the runs take minutes
+// on a release build, so they are not repeated here). What is cheap to check: the markers are
+// there, the step table has a row for every scenario with a step, the band table one for every
+// built-in scenario and band, each with a seed-1 verdict and both sweeps' counts, and the seed-1
+// verdicts agree with the files' known_failure lines (a file without one passes every band at
+// seed 1, a file with one fails at least one), so a section older than the files fails.
+TEST(ScenarioDocument, TheEnvelopeHasEveryScenarioAndBand) {
+  const std::vector<std::string> lines = section("## 7. Figures today");
+  std::vector<size_t> begins, ends;
+  for (size_t i = 0; i < lines.size(); ++i) {
+    if (lines[i].rfind("<!-- envelope:begin", 0) == 0) begins.push_back(i);
+    if (lines[i].rfind("<!-- envelope:end", 0) == 0) ends.push_back(i);
+  }
+  ASSERT_EQ(begins.size(), 1u) << "section 7 needs one <!-- envelope:begin marker";
+  ASSERT_EQ(ends.size(), 1u) << "section 7 needs one <!-- envelope:end marker";
+  ASSERT_LT(begins[0], ends[0]);
+  ASSERT_LT(begins[0] + 1, ends[0]) << "nothing between the markers: run scripts/envelope";
+  EXPECT_EQ(lines[begins[0] + 1].rfind("Measured by `scripts/envelope", 0), 0u) << lines[begins[0] + 1];
+
+  std::map<std::string, int> step_rows;
+  std::map<std::pair<std::string, std::string>, int> band_rows;
+  std::map<std::string, std::vector<bool>> seed1_verdicts;
+  std::set<std::pair<std::string, std::string>> mixed_rows;
+  const std::regex name(R"(^`([a-z0-9-]+)`$)"), band(R"(^`(.+)`$)");
+  const std::regex seed1(R"(^(pass|fail), .+$)"), sweep(R"(^([0-9]+)/([0-9]+), worst .+$)");
+  for (size_t i = begins[0] + 1; i < ends[0]; ++i) {
+    if (lines[i].rfind("| `", 0) != 0) continue;
+    const std::vector<std::string> c = cells(lines[i]);
+    std::smatch n, b;
+    ASSERT_TRUE(std::regex_match(c[0], n, name)) << lines[i];
+    if (c.size() == 9) {  // the steps at seed 1: scenario and eight figures
+      ++step_rows[n[1].str()];
+      continue;
+    }
+    ASSERT_GE(c.size(), 5u) << lines[i];
+    ASSERT_TRUE(std::regex_match(c[1], b, band)) << lines[i];
+    const std::pair<std::string, std::string> key{n[1].str(), b[1].str()};
+    if (c.size() == 10) {  // a band some runs of a sweep passed and others failed
+      mixed_rows.insert(key);
+      continue;
+    }
+    ASSERT_EQ(c.size(), 5u) << lines[i];
+    ++band_rows[key];
+    std::smatch v, s1, s2;
+    ASSERT_TRUE(std::regex_match(c[2], v, seed1)) << lines[i];
+    seed1_verdicts[key.first].push_back(v[1] == "pass");
+    ASSERT_TRUE(std::regex_match(c[3], s1, sweep)) << lines[i];
+    ASSERT_TRUE(std::regex_match(c[4], s2, sweep)) << lines[i];
+    EXPECT_EQ(s1[2].str(), s2[2].str()) << "both sweeps fly as many seeds: " << lines[i];
+    EXPECT_LE(std::stoi(s1[1].str()), std::stoi(s1[2].str())) << lines[i];
+    EXPECT_LE(std::stoi(s2[1].str()), std::stoi(s2[2].str())) << lines[i];
+  }
+
+  std::set<std::string> files;
+  std::set<std::pair<std::string, std::string>> bands;
+  for (const auto& entry : std::filesystem::directory_iterator(QR_SIM_SCENARIO_DIR)) {
+    if (entry.path().extension() != ".txt") continue;
+    const std::string scenario = entry.path().stem().string();
+    files.insert(scenario);
+    qrsim::ScenarioScript script;
+    std::string error;
+    ASSERT_TRUE(qrsim::load_scenario_file(entry.path().string(), script, error)) << error;
+    const bool has_step = std::any_of(script.events.begin(), script.events.end(), [](const qrsim::Event& e) {
+      return (e.action == qrsim::Action::roll || e.action == qrsim::Action::pitch) && e.value != 0;
+    });
+    EXPECT_EQ(step_rows.count(scenario) != 0, has_step)
+        << scenario << ": a row in the step table if and only if it has a step";
+    if (has_step) EXPECT_EQ(step_rows[scenario], 1) << scenario << ": one row in the step table";
+    for (const qrsim::Band& b : script.bands) {
+      const std::pair<std::string, std::string> key{scenario, qrsim::band_text(b)};
+      bands.insert(key);
+      EXPECT_EQ(band_rows[key], 1) << scenario << " `" << key.second
+                                   << "`: one row in the band table (scripts/envelope)";
+    }
+    const std::vector<bool>& verdicts = seed1_verdicts[scenario];
+    const bool all_pass = std::all_of(verdicts.begin(), verdicts.end(), [](bool pass) { return pass; });
+    if (script.known_failure.empty()) {
+      EXPECT_TRUE(all_pass) << scenario
+                            << " has no known_failure, but section 7 fails it at seed 1: run scripts/envelope";
+    } else {
+      EXPECT_FALSE(all_pass) << scenario
+                             << " has a known_failure, but section 7 passes it at seed 1: run scripts/envelope";
+    }
+  }
+  for (const auto& [scenario, count] : step_rows) EXPECT_TRUE(files.count(scenario) != 0) << scenario << " has no file";
+  for (const auto& [key, count] : band_rows) {
+    EXPECT_TRUE(bands.count(key) != 0) << key.first << " `" << key.second << "` is no band of the files";
+  }
+  for (const auto& key : mixed_rows) EXPECT_TRUE(bands.count(key) != 0) << key.first << " `" << key.second << "`";
 }
 
 // The example of section 6.2, the first code block there, is a file that reads.
