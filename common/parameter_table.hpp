@@ -25,11 +25,11 @@ namespace wire {
 #define WIRE_PARAMETER_ROWS(ROW) \
   ROW(yaw_p, 1, 4, 0, 16000, 4800, "thrust units per rad/s", "yaw rate controller gain") \
   ROW(roll_pitch_p1, 2, 8, 0, 5120, 1408, "1/s", "roll/pitch angle loop: rate set-point per rad of angle error") \
-  ROW(roll_pitch_p2, 3, 4, 0, 16000, 2560, "thrust units per rad/s", "roll/pitch rate loop gain") \
-  ROW(attitude_c1, 4, 0, 1, 65535, 8000, "samples", \
+  ROW(roll_pitch_p2, 3, 4, 0, 16000, 3520, "thrust units per rad/s", "roll/pitch rate loop gain") \
+  ROW(attitude_c1, 4, 0, 1, 65535, 16000, "samples", \
       "attitude estimator (complementary filter): accelerometer angle correction divisor; the angle follows " \
       "the accelerometer with a time constant of C1 samples") \
-  ROW(attitude_c2, 5, 0, 1, 1073741824, 256000000, "samples^2", \
+  ROW(attitude_c2, 5, 0, 1, 1073741824, 1024000000, "samples^2", \
       "attitude estimator (complementary filter): gyro bias correction divisor; bias += angle error x fs / C2, " \
       "C2 = 4 C1^2 is critically damped") \
   ROW(filter_cutoff_hz, 6, 0, 1, 250, 20, "Hz", "sensor low-pass cut-off") \
@@ -45,7 +45,7 @@ namespace wire {
   ROW(idle_level, 16, 0, 0, 500, 180, "engine units", "lowest engine value while lift > 0 in flight") \
   ROW(log_divider, 17, 0, 1, 1000, 10, "control periods", "write a log line every this many periods") \
   ROW(roll_pitch_i, 18, 4, 0, 16000, 1280, "thrust units per rad", "roll/pitch rate loop integral gain") \
-  ROW(roll_pitch_d, 19, 8, 0, 5120, 1280, "thrust units per rad/s^2", \
+  ROW(roll_pitch_d, 19, 8, 0, 5120, 2048, "thrust units per rad/s^2", \
       "roll/pitch rate loop derivative gain (on the measured rate)") \
   ROW(tilt_time_ms, 20, 0, 0, 2000, 500, "ms", \
       "tilt beyond tilt_limit_mrad for this long in yaw/full control: panic (an upset that recovers sooner " \
@@ -56,7 +56,18 @@ namespace wire {
   ROW(battery_sag_mv, 23, 0, 0, 3000, 1100, "mV", \
       "the battery's sag with all four engines at full command (internal resistance x that current); the " \
       "battery rules judge the voltage plus this x the engines' load, sum of (e/1000)^3 / 4: an estimate of the " \
-      "resting voltage; 0: the voltage as measured")
+      "resting voltage; 0: the voltage as measured") \
+  ROW(accel_lag_ms, 24, 0, 0, 30000, 3000, "ms", \
+      "attitude estimator: time constant with which the accelerometer's angle follows a change of tilt in " \
+      "free flight (the rotors' drag: mass / (drag coefficient x sum of rotor speeds)); 0: at once, the plain " \
+      "complementary filter") \
+  ROW(takeoff_mg, 25, 0, 1000, 4000, 1100, "mg", \
+      "landed detector: from lift 0 the vehicle counts as on the ground (attitude and yaw integrals held empty) " \
+      "until the accelerometer reads more than this along the thrust for 50 ms (the vehicle climbing off)") \
+  ROW(drag_moment, 26, 0, 0, 1000, 150, "thrust units per rad", \
+      "roll/pitch feed-forward against the rotors' drag moment (drag at the hubs, above the centre of mass, " \
+      "tilts a moving vehicle back): moment per rad of the accelerometer angle the estimator's drag model " \
+      "expects; mass x g x hub height in thrust units; 0: none")
 
 enum class ParamId : uint8_t {
 #define WIRE_PARAMETER_ENUMERATOR(name, id, frac_bits, min, max, default_value, unit, meaning) name = id,

@@ -239,3 +239,32 @@ TEST(Controllers, PidCascadeFixedFollowsDouble) {
 
 }  // namespace
 }  // namespace qr::chain
+
+namespace qr::chain {
+namespace {
+
+// The feed-forward (the body rate that holds the angle while yawing) adds to the angle loop's
+// rate set-point: with no angle error the rate loop is asked for exactly it, and the integral
+// sees no error when the vehicle turns at it. The sum is clamped as before (+-4 rad/s).
+TEST(Controllers, FeedForwardAddsToTheRateSetPoint) {
+  auto c = tilt_controller<F>(1024, 800, 1600);
+  c.moment(FAngle{}, FAngle{}, FRate{}, true, test::quantise<FRate>(0.3));
+  EXPECT_NEAR(c.rate_setpoint().to_double(), 0.3, 1e-8);
+  // Turning at the feed-forward rate: no rate error, no moment, the integral stays empty.
+  c.reset();
+  for (int n = 0; n < 1000; ++n) {
+    EXPECT_EQ(c.moment(FAngle{}, FAngle{}, test::quantise<FRate>(0.3), true, test::quantise<FRate>(0.3)), F::Thrust{});
+  }
+  EXPECT_EQ(c.integral(), F::Thrust{});
+  // With an angle error the two add: P1 x 0.1 = 0.4, plus 0.3.
+  c.moment(test::quantise<FAngle>(0.1), FAngle{}, FRate{}, false, test::quantise<FRate>(0.3));
+  EXPECT_NEAR(c.rate_setpoint().to_double(), 0.7, 1e-6);
+  // Clamped: P1 x 2 = 8 and 4 more are 4, and -8 with +4 is -4, not a wrapped value.
+  c.moment(test::quantise<FAngle>(2.0), FAngle{}, FRate{}, false, test::quantise<FRate>(9.0));
+  EXPECT_EQ(c.rate_setpoint(), kMaxTiltRateSetpoint<F>);
+  c.moment(test::quantise<FAngle>(-3.0), FAngle{}, FRate{}, false, test::quantise<FRate>(4.0));
+  EXPECT_NEAR(c.rate_setpoint().to_double(), -4.0, 1e-8);
+}
+
+}  // namespace
+}  // namespace qr::chain

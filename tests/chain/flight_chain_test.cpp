@@ -205,9 +205,17 @@ TEST(FlightChain, ParametersReachTheBlocks) {
 // The rate loops' integrals (anti-windup, controllers.hpp): they grow on a held angle error in
 // full control, start empty whenever full control is entered, stay empty while the lift is 0,
 // and hold while the mixer has to scale the moments down.
+// A level vehicle whose thrust exceeds its weight: the accelerometer reads `g` along -z.
+SensorSample climbing(double g) {
+  SensorSample s = sample_at(0, 0);
+  s.accel[2] = chain::test::counts(-g * sensor::kAccelCountsPerG);
+  return s;
+}
+
 TEST(FlightChain, IntegralsStartEmptyAndHoldWhenTheyMust) {
   Pilot<FixedChain> p;
   p.calibrate_level();
+  p.run(Mode::full, climbing(1.3), sticks(500), 60);                // take-off (the landed detector's test below)
   p.run(Mode::full, sample_at(0, 0), sticks(500, 300, -300), 500);  // set-points 0.105 / -0.105 rad
   const int32_t roll_after_half_a_second = p.chain.roll_integral_e3();
   EXPECT_GT(roll_after_half_a_second, 0);
@@ -234,6 +242,74 @@ TEST(FlightChain, IntegralsStartEmptyAndHoldWhenTheyMust) {
   p.run(Mode::full, sample_at(0, 0), sticks(200, 1000, -1000), 300);
   EXPECT_EQ(p.chain.roll_integral_e3(), roll);
   EXPECT_EQ(p.chain.pitch_integral_e3(), pitch);
+}
+
+// The landed detector (landed_detector.hpp): on the ground the accelerometer reads 1 g whatever
+// the lift, and the integrals stay empty however long a stick is held; a climb (more than
+// takeoff_mg, 1.1 g, for 50 ms) lets them work; lift 0 means landed again.
+TEST(FlightChain, OnTheGroundTheIntegralsStayEmpty) {
+  Pilot<FixedChain> p;
+  p.calibrate_level();
+  EXPECT_TRUE(p.chain.landed());
+  // 3 degrees of roll stick (100/1000 of 30) at lift 400 for 15 s: nothing winds up.
+  p.run(Mode::full, sample_at(0, 0), sticks(400, 100, -100, 300), 15000);
+  EXPECT_TRUE(p.chain.landed());
+  EXPECT_EQ(p.chain.roll_integral_e3(), 0);
+  EXPECT_EQ(p.chain.pitch_integral_e3(), 0);
+  // A bump of 1.3 g for 30 ms is not a take-off; nor is 1.05 g for a second.
+  p.run(Mode::full, climbing(1.3), sticks(400, 100, -100), 30);
+  p.run(Mode::full, climbing(1.05), sticks(400, 100, -100), 1000);
+  p.run(Mode::full, sample_at(0, 0), sticks(400, 100, -100), 100);
+  EXPECT_TRUE(p.chain.landed());
+  EXPECT_EQ(p.chain.roll_integral_e3(), 0);
+  // Climbing at 1.2 g: flying 50 ms after the (20 Hz low-passed) reading passes 1.1 g, and the
+  // integrals work.
+  int ticks = 0;
+  while (p.chain.landed() && ticks < 1000) {
+    p.tick(Mode::full, climbing(1.2), sticks(600, 100, -100));
+    ++ticks;
+  }
+  EXPECT_GE(ticks, 50);
+  EXPECT_LE(ticks, 75);
+  p.run(Mode::full, sample_at(0, 0), sticks(600, 100, -100), 500);
+  EXPECT_FALSE(p.chain.landed());
+  EXPECT_GT(p.chain.roll_integral_e3(), 0);
+  EXPECT_LT(p.chain.pitch_integral_e3(), 0);
+  // Lift 0: landed, emptied.
+  p.run(Mode::full, sample_at(0, 0), sticks(0, 100, -100), 1);
+  EXPECT_TRUE(p.chain.landed());
+  EXPECT_EQ(p.chain.roll_integral_e3(), 0);
+  EXPECT_EQ(p.chain.pitch_integral_e3(), 0);
+}
+
+// The angle loops' feed-forwards are wired (controllers.hpp, flight_chain.hpp). Banked 0.2 rad
+// and yawing at 1 rad/s (Euler) with the set-point on the estimate, the roll loop must ask for
+// q = r tan(roll) (0.199 rad/s) and nothing else; in flight, the drag moment adds drag_moment x
+// the expected accelerometer angle (on a stand, lag 0: the angle, 0.2 rad x 150 = 30 thrust units).
+wire::ParameterValues on_a_stand(int32_t drag_moment) {
+  wire::ParameterValues p = quick_estimator();
+  EXPECT_EQ(p.set(static_cast<uint8_t>(wire::ParamId::accel_lag_ms), 0), wire::NackReason::none);
+  EXPECT_EQ(p.set(static_cast<uint8_t>(wire::ParamId::drag_moment), drag_moment), wire::NackReason::none);
+  return p;
+}
+
+TEST(FlightChain, TheAngleLoopsFeedForwardTheRatesToHoldAndTheDragMoment) {
+  const double roll = 0.2, yaw_rate = 1.0;
+  const SensorSample turning = sample_at(roll, 0, 0, yaw_rate * std::sin(roll), yaw_rate * std::cos(roll));
+  const int16_t stick = static_cast<int16_t>(std::lround(roll / 0.524 * 1000));  // max_tilt_mrad 524
+  Pilot<FixedChain> with, without;
+  with.chain.set_parameters(on_a_stand(150));
+  without.chain.set_parameters(on_a_stand(0));
+  for (auto* p : {&with, &without}) {
+    p->calibrate_level();
+    p->run(Mode::full, climbing(1.3), sticks(500), 100);  // off the ground
+    p->run(Mode::full, turning, sticks(500, stick), 1000);
+    EXPECT_FALSE(p->chain.landed());
+    EXPECT_NEAR(p->chain.q_setpoint_e3(), 199, 2);  // r tan(roll) = cos(0.2) tan(0.2)
+    EXPECT_NEAR(p->chain.p_setpoint_e3(), 0, 2);
+  }
+  // 150 thrust units per rad x the estimated roll (the expected angle on a stand), in 1e-3 units.
+  EXPECT_NEAR(with.chain.moments_e3().roll - without.chain.moments_e3().roll, 15 * with.chain.roll_e4(), 20);
 }
 
 TEST(FlightChain, LiftZeroKeepsTheEnginesStopped) {

@@ -97,17 +97,30 @@ class TiltEstimator {
   // Starts from this angle (e.g. the accelerometer's) with no bias.
   void start(Angle angle) {
     angle_.set(angle);
+    expected_.set(angle);
     bias_sum_ = {};
     bias_ = {};
   }
 
+  // follow: the share of the gap between the tilt and the accelerometer's expected angle that
+  // closes per sample, dt / lag (1: no lag).
+  void set_follow(typename N::AngleGain follow) { follow_ = follow; }
+
   // gyro: the axis' body rate; coupling: what the other axes add to this angle's rate (Euler
-  // kinematics, AttitudeEstimator::update), already bias-corrected.
-  void update(Rate gyro, Rate coupling, Angle accel_angle) {
+  // kinematics, AttitudeEstimator::update), already bias-corrected; cross: what the yaw rate
+  // turns into this axis' expected accelerometer angle from the other's (the body's velocity
+  // turning with it), already x dt (1 - follow).
+  void update(Rate gyro, Rate coupling, typename AngleIntegral<N>::Sum cross, Angle accel_angle, bool no_lag) {
     rate_ = gyro - bias_;
     const auto predict = fx::mul_wide(rate_, kDt) + fx::mul_wide(coupling, kDt);
-    const Angle e = wrap_angle(angle_.peek(predict) - accel_angle);
+    // The angle the accelerometer should show: the predicted tilt seen through the drag's lag.
+    // With follow = 1 (no lag) it is the predicted angle itself, and this is the plain
+    // complementary filter.
+    const auto expect = fx::mul_wide(wrap_angle(angle_.peek(predict) - expected_.angle()), no_lag ? kNoLag : follow_) +
+                        cross;
+    const Angle e = wrap_angle(expected_.peek(expect) - accel_angle);
     angle_.add(predict - fx::mul_wide(e, k1_));  // predict and correct, wrapped once
+    expected_.add(expect);
     bias_sum_ += fx::mul_wide(e, k2_);
     bias_ = N::template convert_sat<Rate>(bias_sum_);
     if (kMaxBias < bias_) {
@@ -119,6 +132,8 @@ class TiltEstimator {
     }
   }
 
+  // The accelerometer angle the model expects now (for the other axis' cross term, the logs).
+  Angle expected() const { return expected_.angle(); }
   Angle angle() const { return angle_.angle(); }
   Rate rate() const { return rate_; }
   Rate bias() const { return bias_; }
@@ -128,7 +143,10 @@ class TiltEstimator {
 
   typename N::AngleGain k1_{};
   typename N::BiasGain k2_{};
+  static constexpr typename N::AngleGain kNoLag = typename N::AngleGain(1.0);
+  typename N::AngleGain follow_ = kNoLag;  // dt / lag, at most 1
   AngleIntegral<N> angle_;
+  AngleIntegral<N> expected_;  // the accelerometer's expected angle
   Rate rate_{};
   Rate bias_{};
   typename N::BiasSum bias_sum_{};
@@ -154,6 +172,20 @@ class AttitudeEstimator {
     pitch_.set_gains(k1, k2);
   }
 
+  // lag_ms: the time constant with which the accelerometer's angle follows a change of tilt in
+  // free flight (the rotors' drag: 1 / mu, docs/signal-chain.md); 0 for none (a vehicle on a
+  // stand, whose accelerometer sees gravity at once). One division, at parameter changes only.
+  void set_lag(int32_t lag_ms) {
+    const int64_t samples_x1000 = static_cast<int64_t>(lag_ms) * SampleHz;  // lag in samples, x 1000
+    const auto follow = samples_x1000 <= 1000
+                            ? kNoLag
+                            : N::template ratio<typename N::AngleGain>(
+                                  1000, static_cast<int32_t>(samples_x1000 < INT32_MAX ? samples_x1000 : INT32_MAX));
+    roll_.set_follow(follow);
+    pitch_.set_follow(follow);
+    cross_dt_ = product<typename N::Scale>(kDt, kNoLag - follow);
+  }
+
   // The next update starts over from the accelerometer's angles, with no bias and yaw 0.
   void restart() { started_ = false; }
 
@@ -165,8 +197,9 @@ class AttitudeEstimator {
   }
 
   // Every tick: calibrated, filtered body rates (rad/s); the specific force is used only to
-  // (re)start from the accelerometer's angles.
-  void update(const Rate (&rate)[3], const Accel (&accel)[3]) {
+  // (re)start from the accelerometer's angles. on_ground: the vehicle cannot move (the landed
+  // detector), so its accelerometer sees gravity at once: no lag, whatever set_lag() said.
+  void update(const Rate (&rate)[3], const Accel (&accel)[3], bool on_ground = false) {
     if (!started_) {
       take_accel_angles(accel);
       roll_.start(roll_from_accel_);
@@ -191,8 +224,15 @@ class AttitudeEstimator {
     // gyro within 9.5 rad/s, bias within 0.5): inside the Rate format, no saturation needed.
     const Rate pitch_coupling = N::template convert<Rate>(fx::mul_wide(q, k.cos_roll - kOne) -
                                                           fx::mul_wide(yaw_rate_, k.sin_roll));
-    roll_.update(rate[0], roll_coupling, roll_from_accel_);
-    pitch_.update(rate[1], pitch_coupling, pitch_from_accel_);
+    // The accelerometer's expected angles turn with the yaw rate: they are the body's horizontal
+    // velocity seen through the drag (f = -mu v), and the velocity of a yawing body turns in its
+    // own axes, v' = ... - r x v: roll' += r pitch, pitch' -= r roll (times dt (1 - follow), so
+    // that with no lag the expected angle is the predicted angle exactly).
+    const auto turn = on_ground ? typename N::AngleGain{} : product<typename N::AngleGain>(yaw_rate_, cross_dt_);
+    const auto roll_cross = fx::mul_wide(pitch_.expected(), turn);
+    const auto pitch_cross = -fx::mul_wide(roll_.expected(), turn);
+    roll_.update(rate[0], roll_coupling, roll_cross, roll_from_accel_, on_ground);
+    pitch_.update(rate[1], pitch_coupling, pitch_cross, pitch_from_accel_, on_ground);
     yaw_.add(fx::mul_wide(yaw_rate_, kDt));
   }
 
@@ -206,11 +246,22 @@ class AttitudeEstimator {
   Rate q_bias() const { return pitch_.bias(); }
   Angle roll_from_accel() const { return roll_from_accel_; }
   Angle pitch_from_accel() const { return pitch_from_accel_; }
+  // What the model expects the accelerometer's angles to be (equal to the angles with no lag).
+  Angle roll_expected() const { return roll_.expected(); }
+  Angle pitch_expected() const { return pitch_.expected(); }
+
+  // The body rates that hold roll and pitch where they are while the body yaws at r (Euler
+  // kinematics, Z-Y-X, the inverse of update()'s): p = -r tan(pitch) / cos(roll),
+  // q = r tan(roll). An angle loop that asks only for its angle error leaves that error standing
+  // at (these rates) / P1 while yawing; the controllers add them as a feed-forward.
+  Rate p_to_hold() const { return product_sat<Rate>(product_sat<Rate>(yaw_rate_, euler_.tan_pitch), -euler_.sec_roll); }
+  Rate q_to_hold() const { return product_sat<Rate>(yaw_rate_, euler_.tan_roll); }
 
  private:
   using Unit = typename N::Coefficient;  // sin, cos, tan: Q<30>, +-2
   static constexpr typename N::Scale kDt = typename N::Scale(1.0 / SampleHz);
   static constexpr Unit kOne = Unit(1.0);
+  static constexpr typename N::AngleGain kNoLag = typename N::AngleGain(1.0);
 
   void take_accel_angles(const Accel (&accel)[3]) {
     roll_from_accel_ = N::atan2(-accel[1], -accel[2]);
@@ -220,32 +271,40 @@ class AttitudeEstimator {
   }
 
   struct EulerTerms {
-    Unit sin_roll, cos_roll, tan_pitch;
+    Unit sin_roll, cos_roll, tan_pitch, tan_roll, sec_roll;
   };
-  // sin and cos of the roll and tan of the pitch by their series to the third order:
-  // sin x = x (1 - x^2/6), cos x = 1 - x^2/2, tan x = x (1 + x^2/3), five multiplies instead of a
-  // sin/cos evaluation and a division. At 0.35 rad (20 degrees) they are off by 4e-5, 6e-4 and
-  // 7e-4, so a 2 rad/s yaw turn at 20 degrees of bank leaves at most 2e-3 rad/s of rate error
-  // (the first-order terms alone, roll' = p + r pitch, pitch' = q - r roll, would leave 3e-2),
-  // which the accelerometer and the bias loop take out. The angles are clamped to +-1 rad first:
-  // beyond that (57 degrees, past the tilt limit's default of 45) the series part from the
-  // functions, and the vehicle is not flying but falling or flipping.
+  // sin, cos, tan and sec by their series to the fifth order (the fourth for cos, sec):
+  // sin x = x (1 - x^2/6 (1 - x^2/20)), cos x = 1 - x^2/2 (1 - x^2/12),
+  // tan x = x (1 + x^2/3 (1 + 2 x^2/5)), sec x = 1 + x^2/2 (1 + 5 x^2/12): a dozen multiplies at
+  // 250 Hz instead of a sin/cos evaluation and divisions. At 0.52 rad (30 degrees) they are off by
+  // 2e-6, 3e-5, 5e-4 and 2e-3 (relative 0.1 % and 0.15 % for tan and sec). The third-order series
+  // were 1 % off in tan at 30 degrees: at full sticks (30 degrees of roll and pitch, 2 rad/s of
+  // yaw) that is 0.01 rad/s of false roll rate in the kinematics, a standing degree of true error.
+  // The angles are clamped to +-1 rad first: beyond that (57 degrees, past the tilt limit's
+  // default of 45) the series part from the functions, and the vehicle is not flying but falling
+  // or flipping.
   static EulerTerms euler_terms(Angle roll, Angle pitch) {
     const Angle limit = Angle(1.0);
     const Unit r = N::template convert<Unit>(clamp(roll, -limit, limit));
     const Unit t = N::template convert<Unit>(clamp(pitch, -limit, limit));
     const Unit r2 = product<Unit>(r, r), t2 = product<Unit>(t, t);
-    return {product<Unit>(r, kOne - product<Unit>(r2, kSixth)), kOne - product<Unit>(r2, kHalf),
-            product<Unit>(t, kOne + product<Unit>(t2, kThird))};
+    return {product<Unit>(r, kOne - product<Unit>(product<Unit>(r2, kSixth), kOne - product<Unit>(r2, kTwentieth))),
+            kOne - product<Unit>(product<Unit>(r2, kHalf), kOne - product<Unit>(r2, kTwelfth)),
+            product<Unit>(t, kOne + product<Unit>(product<Unit>(t2, kThird), kOne + product<Unit>(t2, kTwoFifths))),
+            product<Unit>(r, kOne + product<Unit>(product<Unit>(r2, kThird), kOne + product<Unit>(r2, kTwoFifths))),
+            kOne + product<Unit>(product<Unit>(r2, kHalf), kOne + product<Unit>(r2, kFiveTwelfths))};
   }
-  static constexpr Unit kHalf = Unit(1.0 / 2), kThird = Unit(1.0 / 3), kSixth = Unit(1.0 / 6);
+  static constexpr Unit kHalf = Unit(1.0 / 2), kThird = Unit(1.0 / 3), kSixth = Unit(1.0 / 6),
+                        kTwelfth = Unit(1.0 / 12), kTwentieth = Unit(1.0 / 20), kTwoFifths = Unit(2.0 / 5),
+                        kFiveTwelfths = Unit(5.0 / 12);
 
   TiltEstimator<N, SampleHz> roll_, pitch_;
   AngleIntegral<N> yaw_;
   Rate yaw_rate_{};
   Angle roll_from_accel_{};
   Angle pitch_from_accel_{};
-  EulerTerms euler_{Unit{}, kOne, Unit{}};  // at level
+  EulerTerms euler_{Unit{}, kOne, Unit{}, Unit{}, kOne};  // at level
+  typename N::Scale cross_dt_{};                          // dt (1 - follow): the turn per rad/s of yaw
   bool started_ = false;
 };
 

@@ -154,10 +154,19 @@ class AttitudeController {
     primed_ = false;
   }
 
-  Thrust moment(typename N::Angle setpoint, typename N::Angle angle, Rate rate, bool integrate = false) {
+  // feed_forward: the body rate that holds the angle where it is while the vehicle yaws (Euler
+  // kinematics, AttitudeEstimator::p_to_hold / q_to_hold); without it the angle loop holds an
+  // error of that rate / P1 for as long as the yaw lasts (1.5 degrees at 10 degrees of bank and
+  // 1 rad/s of yaw). moment_feed_forward: a moment known to be needed (the rotors' drag moment,
+  // flight_chain.hpp), added to the output so the integral need not find it first.
+  Thrust moment(typename N::Angle setpoint, typename N::Angle angle, Rate rate, bool integrate = false,
+                Rate feed_forward = Rate{}, Thrust moment_feed_forward = Thrust{}) {
     // The angle error fits the Angle format (+-8 rad): the set-point is within +-0.7 rad (max_tilt_mrad) and
-    // the estimate within [-pi, pi).
-    rate_setpoint_ = clamp(product_sat<Rate>(p1_, setpoint - angle), -kMaxTiltRateSetpoint<N>, kMaxTiltRateSetpoint<N>);
+    // the estimate within [-pi, pi). Each part is clamped first (to twice the limit and to the
+    // limit), so their sum fits the Rate format (+-16 rad/s) before the sum is clamped.
+    const Rate p_part = clamp(product_sat<Rate>(p1_, setpoint - angle), -kTwice, kTwice);
+    const Rate ff_part = clamp(feed_forward, -kMaxTiltRateSetpoint<N>, kMaxTiltRateSetpoint<N>);
+    rate_setpoint_ = clamp(p_part + ff_part, -kMaxTiltRateSetpoint<N>, kMaxTiltRateSetpoint<N>);
     // Both differences fit the Rate format (+-16 rad/s): the set-point is within +-4 rad/s and a
     // filtered, calibrated gyro within about +-9.5 (full scale 8.7 rad/s, filter overshoot,
     // bias clamp), so the error is below 14 rad/s; one tick's change of that filtered rate is
@@ -169,7 +178,8 @@ class AttitudeController {
     // P2 error - D fs change in one wide accumulator (P2 in Q<8> holds the Q<4> parameter
     // exactly), rounded and clamped once.
     const Thrust pd = clamp(N::template convert_sat<Thrust>(fx::mul_wide(p2_, error) - fx::mul_wide(d_fs_, change)),
-                            -kMaxMoment<N>, kMaxMoment<N>);
+                            -kMaxMoment<N>, kMaxMoment<N>) +
+                      clamp(moment_feed_forward, -kMaxMoment<N>, kMaxMoment<N>);  // within +-2000: fits
     if (integrate && magnitude(pd + integral_) < kMaxMoment<N>) {
       integral_sum_ += fx::mul_wide(i_dt_, error);  // at most 2 x 14 per tick onto at most 200
       integral_ = N::template convert<Thrust>(integral_sum_);
@@ -188,6 +198,7 @@ class AttitudeController {
 
  private:
   static_assert(kRollPitchDFrac >= kP2Frac, "P2 moves into D's format without rounding");
+  static constexpr Rate kTwice = Rate(8.0);  // twice kMaxTiltRateSetpoint
   static constexpr typename N::Scale kDt = typename N::Scale(1.0 / SampleHz);
   static constexpr typename N::template Fixed<30> kOne = typename N::template Fixed<30>(1.0);
   static_assert(fx::detail::is_same<IntegralSum, decltype(fx::mul_wide(Thrust{}, kOne))>,

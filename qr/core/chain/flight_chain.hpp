@@ -27,6 +27,7 @@
 #include <qr/core/chain/engine_mixer.hpp>
 #include <qr/core/chain/fixed_numbers.hpp>
 #include <qr/core/chain/height_estimator.hpp>
+#include <qr/core/chain/landed_detector.hpp>
 #include <qr/core/chain/pilot_setpoints.hpp>
 #include <qr/core/chain/sensor_calibration.hpp>
 #include <qr/core/chain/sensor_filters.hpp>
@@ -65,11 +66,14 @@ class FlightChain {
     using wire::ParamId;
     filters_.set_cutoff(p.get(ParamId::filter_cutoff_hz));
     estimator_.set_divisors(p.get(ParamId::attitude_c1), p.get(ParamId::attitude_c2));
+    estimator_.set_lag(p.get(ParamId::accel_lag_ms));
+    landed_.set_takeoff(p.get(ParamId::takeoff_mg));
     yaw_.set_gains(p.get(ParamId::yaw_p), p.get(ParamId::yaw_i));
     for (auto& axis : tilt_) {
       axis.set_gains(p.get(ParamId::roll_pitch_p1), p.get(ParamId::roll_pitch_p2), p.get(ParamId::roll_pitch_i),
                      p.get(ParamId::roll_pitch_d));
     }
+    drag_moment_ = Num::template fixed<0>(p.get(ParamId::drag_moment));
     pilot_.set_max_yaw_rate(p.get(ParamId::max_yaw_rate_rad_s));
     pilot_.set_max_tilt(p.get(ParamId::max_tilt_mrad));
     mixer_.set_idle(p.get(ParamId::idle_level));
@@ -113,7 +117,9 @@ class FlightChain {
     estimator_.update_accel(accel);
   }
 
-  // Task "estimator": calibrated filtered sensors -> attitude, bias-corrected rates.
+  // Task "estimator": calibrated filtered sensors -> attitude, bias-corrected rates, and whether
+  // the vehicle is on the ground (landed_detector.hpp: lift 0 until the accelerometer shows it
+  // climbing).
   void estimate() {
     Rate rate[3];
     Accel accel[3];
@@ -121,7 +127,8 @@ class FlightChain {
       rate[i] = filters_.rate(i) - calibration_.gyro_offset(i);
       accel[i] = filters_.accel(i) - calibration_.accel_offset(i);
     }
-    estimator_.update(rate, accel);
+    estimator_.update(rate, accel, landed_.landed());  // on the ground (last tick's verdict): no drag lag
+    landed_.update(pilot_.lift(), accel[2]);
   }
 
   // Task "height": calibrated filtered accelerometer, the attitude estimate and the barometer ->
@@ -143,8 +150,8 @@ class FlightChain {
   // the lift stick is at 0 and holds while the mixer had to scale the last moments down, as the
   // attitude loops' do.
   void control_yaw() {
-    if (pilot_.lift() == 0) yaw_.reset();
-    const bool integrate = pilot_.lift() != 0 && (yaw_entered_ || !mixer_.limited());
+    if (landed_.landed()) yaw_.reset();
+    const bool integrate = !landed_.landed() && (yaw_entered_ || !mixer_.limited());
     yaw_entered_ = false;
     yaw_moment_ = yaw_.moment(pilot_.yaw_rate(), estimator_.r(), integrate);
     yaw_ran_ = true;
@@ -157,17 +164,31 @@ class FlightChain {
     attitude_entered_ = true;
   }
 
-  // Task "attitude control": the roll and pitch moments from the angle/rate cascades.
-  // The rate loops' integrals stay empty while the lift stick is at 0 (engines stopped: on the
-  // ground, or the pilot cut them), and hold while the mixer had to scale the last moments down.
+  // Task "attitude control": the roll and pitch moments from the angle/rate cascades, with two
+  // feed-forwards: the body rates that hold the angles while yawing, and the moment against the
+  // rotors' drag. That drag acts at the hubs, above the centre of mass, and tilts a moving
+  // vehicle back toward level; it grows with the speed, so in a held bank it ramps up for
+  // seconds, faster than the integral follows (a 30 degree bank sagged 1.3 degrees). The
+  // accelerometer reads the same drag (docs/signal-chain.md): the moment is mass x hub height x
+  // the drag's specific force, i.e. drag_moment (m g h in thrust units) x the accelerometer angle
+  // the estimator's drag model expects (smooth, where the reading itself carries vibration).
+  // The rate loops' integrals stay
+  // empty while the vehicle is on the ground (the landed detector: from lift 0 until it climbs
+  // off), and hold while the mixer had to scale the last moments down.
   void control_attitude() {
-    if (pilot_.lift() == 0) {
+    if (landed_.landed()) {
       for (auto& axis : tilt_) axis.reset();
     }
-    const bool integrate = pilot_.lift() != 0 && (attitude_entered_ || !mixer_.limited());
+    const bool integrate = !landed_.landed() && (attitude_entered_ || !mixer_.limited());
     attitude_entered_ = false;
-    roll_moment_ = tilt_[0].moment(pilot_.roll_angle(), estimator_.roll(), estimator_.p(), integrate);
-    pitch_moment_ = tilt_[1].moment(pilot_.pitch_angle(), estimator_.pitch(), estimator_.q(), integrate);
+    // On the ground nothing moves, so there is no drag (and the expected angle is the tilt).
+    const auto drag = landed_.landed() ? typename Num::template Fixed<0>{} : drag_moment_;
+    roll_moment_ = tilt_[0].moment(pilot_.roll_angle(), estimator_.roll(), estimator_.p(), integrate,
+                                   estimator_.p_to_hold(),
+                                   chain::product_sat<Thrust>(drag, estimator_.roll_expected()));
+    pitch_moment_ = tilt_[1].moment(pilot_.pitch_angle(), estimator_.pitch(), estimator_.q(), integrate,
+                                    estimator_.q_to_hold(),
+                                    chain::product_sat<Thrust>(drag, estimator_.pitch_expected()));
     attitude_ran_ = true;
   }
 
@@ -200,6 +221,8 @@ class FlightChain {
   int16_t pitch_setpoint_e4() const { return angle_e4(pilot_.pitch_angle()); }
   int16_t yaw_rate_setpoint_e3() const { return rate_e3(pilot_.yaw_rate()); }
   uint16_t lift() const { return pilot_.lift(); }
+  // On the ground (landed_detector.hpp): the controllers' integrals are held empty.
+  bool landed() const { return landed_.landed(); }
   int32_t tilt_mrad() const {
     const int32_t roll = Num::round_to_int(fx::mul_wide(chain::magnitude(estimator_.roll()), kThousand));
     const int32_t pitch = Num::round_to_int(fx::mul_wide(chain::magnitude(estimator_.pitch()), kThousand));
@@ -263,6 +286,8 @@ class FlightChain {
   chain::YawRateController<Num, SampleHz> yaw_;
   chain::AttitudeController<Num, SampleHz> tilt_[2];  // roll, pitch
   chain::EngineMixer<Num> mixer_;
+  chain::LandedDetector<Num, SampleHz> landed_;
+  typename Num::template Fixed<0> drag_moment_{};         // thrust units per rad of expected accelerometer angle
   Thrust roll_moment_{}, pitch_moment_{}, yaw_moment_{};  // the controllers' latest outputs
   bool attitude_ran_ = false, yaw_ran_ = false;           // ... computed in this tick
   chain::Moments<Thrust> moments_{};                      // what the last mix asked for
