@@ -26,10 +26,10 @@ namespace wire {
   ROW(yaw_p, 1, 4, 0, 16000, 4800, "thrust units per rad/s", "yaw rate controller gain") \
   ROW(roll_pitch_p1, 2, 8, 0, 5120, 1408, "1/s", "roll/pitch angle loop: rate set-point per rad of angle error") \
   ROW(roll_pitch_p2, 3, 4, 0, 16000, 3520, "thrust units per rad/s", "roll/pitch rate loop gain") \
-  ROW(attitude_c1, 4, 0, 1, 65535, 16000, "samples", \
+  ROW(attitude_c1, 4, 0, 1, 65535, 8000, "samples", \
       "attitude estimator (complementary filter): accelerometer angle correction divisor; the angle follows " \
       "the accelerometer with a time constant of C1 samples") \
-  ROW(attitude_c2, 5, 0, 1, 1073741824, 1024000000, "samples^2", \
+  ROW(attitude_c2, 5, 0, 1, 1073741824, 256000000, "samples^2", \
       "attitude estimator (complementary filter): gyro bias correction divisor; bias += angle error x fs / C2, " \
       "C2 = 4 C1^2 is critically damped") \
   ROW(filter_cutoff_hz, 6, 0, 1, 250, 20, "Hz", "sensor low-pass cut-off") \
@@ -57,7 +57,7 @@ namespace wire {
       "the battery's sag with all four engines at full command (internal resistance x that current); the " \
       "battery rules judge the voltage plus this x the engines' load, sum of (e/1000)^3 / 4: an estimate of the " \
       "resting voltage; 0: the voltage as measured") \
-  ROW(accel_lag_ms, 24, 0, 0, 30000, 3000, "ms", \
+  ROW(accel_lag_ms, 24, 0, 0, 30000, 2750, "ms", \
       "attitude estimator: time constant with which the accelerometer's angle follows a change of tilt in " \
       "free flight (the rotors' drag: mass / (drag coefficient x sum of rotor speeds)); 0: at once, the plain " \
       "complementary filter") \
