@@ -312,6 +312,19 @@ TEST(FlightChain, TheAngleLoopsFeedForwardTheRatesToHoldAndTheDragMoment) {
   EXPECT_NEAR(with.chain.moments_e3().roll - without.chain.moments_e3().roll, 15 * with.chain.roll_e4(), 20);
 }
 
+// takeoff_mg reaches the detector: at 1500 mg a 1.3 g climb is not a take-off, 1.6 g is.
+TEST(FlightChain, TakeoffThresholdIsTheParameter) {
+  Pilot<FixedChain> p;
+  wire::ParameterValues values;
+  ASSERT_EQ(values.set(static_cast<uint8_t>(wire::ParamId::takeoff_mg), 1500), wire::NackReason::none);
+  p.chain.set_parameters(values);
+  p.calibrate_level();
+  p.run(Mode::full, climbing(1.3), sticks(600), 500);
+  EXPECT_TRUE(p.chain.landed());
+  p.run(Mode::full, climbing(1.6), sticks(600), 100);
+  EXPECT_FALSE(p.chain.landed());
+}
+
 TEST(FlightChain, LiftZeroKeepsTheEnginesStopped) {
   Pilot<FixedChain> p;
   p.calibrate_level();
