@@ -329,7 +329,8 @@ TEST_F(FlightTest, ParameterSetIsRangeCheckedAppliedAndReported) {
   received.clear();
 
   send(wire::ParamGet{++seq, wire::kAllParameters});
-  run_ms(50);
+  // One report a control period: the whole table, plus a few periods for the request to arrive.
+  run_ms(static_cast<uint32_t>(wire::kParameterCount * kPeriodUs / 1000 + 10));
   const auto reports = got<wire::ParamReport>();
   ASSERT_EQ(reports.size(), wire::kParameterCount);
   for (const auto& r : reports) {
