@@ -25,8 +25,11 @@ std::array<RotorGeometry, kRotorCount> rotor_geometry(const VehicleParams& vehic
 // commands are proportional to rotor speed).
 double motor_target_speed(const VehicleParams& vehicle, double command, double volts);
 
-// First-order lag toward the target, faster up than down: the ESC drives the motor up, but only
-// the prop's drag slows it down.
+// First-order lag toward the target, with its own time constant each way (vehicle file). Down is
+// the ESC braking the motor as multirotor ESC firmware does by default (BLHeli's "damped light",
+// regenerative braking), not the prop coasting: drag alone decelerates at k_m w^2 / J_r, about
+// 880 rad/s^2 at this vehicle's hover speed, while a 50 ms lag takes 8000 rad/s^2 from hover to
+// stop.
 double motor_acceleration(const VehicleParams& vehicle, double speed, double target);
 
 // Everything one rotor does to the airframe at rotor speed `speed` (rad/s, >= 0), changing at
