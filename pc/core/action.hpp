@@ -42,6 +42,7 @@ enum class Action : uint8_t {
   log_download,
   params_read,
   tasks_print,
+  sim_push,  // the simulator pushes the QR (0.3 N m about roll for 0.1 s); not on a real QR
   help,
 };
 
@@ -84,6 +85,7 @@ inline constexpr ActionSpec kActions[] = {
     {Action::log_download, "QR logs download (CSV)"},
     {Action::params_read, "read parameters back"},
     {Action::tasks_print, "QR task cycles to the log"},
+    {Action::sim_push, "sim: push the QR (roll)"},
     {Action::help, "help on/off"},
 };
 

@@ -1,6 +1,7 @@
 #include <pc/core/console.hpp>
 
 #include <cstdio>
+#include <cstdlib>
 
 #include <common/task_names.hpp>
 #include <pc/core/gain_steps.hpp>
@@ -97,13 +98,40 @@ Console::Console(ConsoleLog& log, ConsoleFiles files, const Setup& setup, uint32
           LogDownloader::Hooks{[this](const wire::LogDownload& request) { link_.request(request, now_ms_); },
                                [this](Severity severity, const std::string& text) { note(severity, text); },
                                [this](const std::string& name) { return files_.open ? files_.open(name) : nullptr; }}),
-      joystick_(setup.joystick ? JoystickState::ok : JoystickState::none) {
+      joystick_(setup.joystick ? JoystickState::ok : JoystickState::none), simulator_(setup.simulator) {
   if (files_.telemetry_csv != nullptr) telemetry_csv_.emplace(*files_.telemetry_csv, telemetry_csv_header());
 }
 
 void Console::set_time(uint32_t now_ms) { now_ms_ = now_ms; }
 
 void Console::note(Severity severity, const std::string& text) { log_.add(now_ms_ - start_ms_, severity, text); }
+
+void Console::truth_line(const std::string& line) {
+  if (line.rfind("error", 0) == 0) {
+    note(Severity::warning, "sim: " + line);
+    return;
+  }
+  if (line.rfind("truth ", 0) != 0) return;  // "ok push" and anything newer
+  const auto field = [&](const char* name, double& out) {
+    const std::string key = std::string(" ") + name + "=";
+    const size_t at = line.find(key);
+    if (at == std::string::npos) return false;
+    char* end = nullptr;
+    out = std::strtod(line.c_str() + at + key.size(), &end);
+    return end != line.c_str() + at + key.size();
+  };
+  double roll = 0, pitch = 0, yaw = 0, height = 0;
+  if (!field("roll", roll) || !field("pitch", pitch) || !field("yaw", yaw) || !field("height", height)) return;
+  char text[96];
+  std::snprintf(text, sizeof text, "truth roll %+.1f pitch %+.1f yaw %+.1f height %.2f m", roll, pitch, yaw, height);
+  truth_ = text;
+}
+
+std::vector<std::string> Console::take_sim_commands() {
+  std::vector<std::string> commands;
+  commands.swap(sim_commands_);
+  return commands;
+}
 
 void Console::key(Key key, uint32_t now_ms) {
   set_time(now_ms);
@@ -149,6 +177,14 @@ void Console::act(Action action, uint32_t now_ms) {
       break;
     case Action::params_read: link_.request(wire::ParamGet{0, wire::kAllParameters}, now_ms_); break;
     case Action::tasks_print: print_tasks(); break;
+    case Action::sim_push:
+      if (!simulator_) {
+        note(Severity::warning, "no simulator: n pushes only a QR the console started in qrsim");
+      } else {
+        sim_commands_.emplace_back("push 0.3 0 0 0.1\n");
+        note(Severity::info, "sim: push 0.3 N m about roll for 0.1 s");
+      }
+      break;
     default: break;
   }
 }

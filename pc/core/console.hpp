@@ -52,6 +52,7 @@ class Console {
     wire::ParameterValues params;  // sent to the QR whenever the link comes up
     bool joystick = false;         // a joystick is part of the cockpit
     uint8_t first_seq = 0;         // of every request type (docs/protocol.md section 6)
+    bool simulator = false;        // the console started qrsim and has its truth channel
   };
 
   Console(ConsoleLog& log, ConsoleFiles files, const Setup& setup, uint32_t now_ms);
@@ -71,6 +72,11 @@ class Console {
   void tick(uint32_t now_ms);
   // A message from elsewhere in the program (the simulator's output, the main loop).
   void note(Severity severity, const std::string& text);
+  // A line from the simulator's truth channel (docs/simulator.md): a truth line is kept for the
+  // screen, an error line goes to the log.
+  void truth_line(const std::string& line);
+  // Command lines for the truth channel (a push), taken once; the main loop writes them.
+  std::vector<std::string> take_sim_commands();
 
   // --- what goes out
   std::vector<uint8_t>& output() { return link_.output(); }
@@ -90,6 +96,8 @@ class Console {
   JoystickState joystick_state() const { return joystick_; }
   bool joystick_position_known() const { return joystick_known_; }
   bool help_visible() const { return help_; }
+  // "truth roll +1.2 pitch -0.5 yaw +10.0 height 1.50 m", or empty: no simulator or no line yet.
+  const std::string& truth() const { return truth_; }
   bool exiting() const { return exit_ != ExitState::running; }
   std::string download_status() const { return downloader_.status(); }
   size_t parameters_to_send() const { return parameters_.to_send(); }
@@ -135,6 +143,9 @@ class Console {
   bool joystick_known_ = false;
   bool escape_armed_ = false;  // the last key was ESC: another one exits
   bool help_ = false;
+  bool simulator_ = false;
+  std::string truth_;
+  std::vector<std::string> sim_commands_;
   ExitState exit_ = ExitState::running;
   uint32_t exit_started_ms_ = 0;
   bool exit_confirmed_ = false;

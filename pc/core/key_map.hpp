@@ -1,5 +1,5 @@
 // The keyboard, as one table: key -> action. The IN4073 map (ESC, 0-5, a/z, arrows, q/w, u/j,
-// i/k, o/l) plus our keys for the filter constants, logs, parameters and help.
+// i/k, o/l) plus our keys for the filter constants, logs, parameters, the simulator's push and help.
 #pragma once
 
 #include <stddef.h>
@@ -48,6 +48,7 @@ inline constexpr KeyBinding kKeyMap[] = {
     {'g', Action::log_download},
     {'p', Action::params_read},
     {'b', Action::tasks_print},
+    {'n', Action::sim_push},
     {'h', Action::help},
     {'?', Action::help},
 };

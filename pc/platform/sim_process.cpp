@@ -5,6 +5,7 @@
 #include <poll.h>
 #include <signal.h>
 #include <spawn.h>
+#include <sys/socket.h>
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
@@ -55,11 +56,17 @@ SimProcess::SimProcess(const std::string& program, const std::vector<std::string
 
   const Pipe out = make_pipe();
   const Pipe err = make_pipe();
+  // The truth channel: one end for us, the other the child's descriptor kTruthFd. Made after the
+  // pipes, so neither end is descriptor 3 already (a dup2 onto itself would keep close-on-exec).
+  int pair[2];
+  if (::socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, pair) != 0)
+    throw SimError(std::string("cannot make a socket pair: ") + std::strerror(errno));
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
   posix_spawn_file_actions_adddup2(&actions, out.write, 1);
   posix_spawn_file_actions_adddup2(&actions, err.write, 2);
+  posix_spawn_file_actions_adddup2(&actions, pair[1], kTruthFd);
   posix_spawnattr_t attributes;
   posix_spawnattr_init(&attributes);
   // Its own process group: a ^C meant for the console must not kill the QR's world under it.
@@ -84,6 +91,9 @@ SimProcess::SimProcess(const std::string& program, const std::vector<std::string
   posix_spawnattr_destroy(&attributes);
   ::close(out.write);
   ::close(err.write);
+  ::close(pair[1]);
+  truth_ = LineReader(pair[0]);
+  ::fcntl(pair[0], F_SETFL, O_NONBLOCK);
   out_ = LineReader(out.read);
   err_ = LineReader(err.read);
   ::fcntl(out.read, F_SETFL, O_NONBLOCK);
@@ -92,6 +102,7 @@ SimProcess::SimProcess(const std::string& program, const std::vector<std::string
     pid_ = -1;
     ::close(out.read);
     ::close(err.read);
+    ::close(pair[0]);
     throw SimError("cannot start " + program + ": " + std::strerror(spawned));
   }
 
@@ -116,6 +127,7 @@ SimProcess::SimProcess(const std::string& program, const std::vector<std::string
       if (!how) stop(0);
       ::close(out.read);
       ::close(err.read);
+      ::close(pair[0]);
       throw SimError(message);
     }
     pollfd fds[2] = {{out.read, POLLIN, 0}, {err.read, POLLIN, 0}};
@@ -140,6 +152,14 @@ SimProcess::~SimProcess() {
   stop(0);
   if (out_.fd() >= 0) ::close(out_.fd());
   if (err_.fd() >= 0) ::close(err_.fd());
+  if (truth_.fd() >= 0) ::close(truth_.fd());
+}
+
+void SimProcess::send_truth_command(const std::string& line) {
+  if (truth_.fd() < 0) return;
+  // Short lines on a fresh socket: they fit; one that does not is dropped, never waited for.
+  const ssize_t n = ::send(truth_.fd(), line.data(), line.size(), MSG_DONTWAIT | MSG_NOSIGNAL);
+  (void)n;
 }
 
 std::optional<std::string> SimProcess::ended() {

@@ -38,6 +38,11 @@ class SimProcess {
 
   LineReader& out() { return out_; }
   LineReader& err() { return err_; }
+  // The simulator's truth channel (qrsim --truth-fd, docs/simulator.md): truth lines in, command
+  // lines out. The child has it as descriptor kTruthFd; pass "--truth-fd 3" to qrsim.
+  LineReader& truth() { return truth_; }
+  void send_truth_command(const std::string& line);
+  static constexpr int kTruthFd = 3;
 
   // Once the child has ended: how ("simulator exited with status 1"); empty while it runs.
   std::optional<std::string> ended();
@@ -56,6 +61,7 @@ class SimProcess {
   std::vector<std::string> early_output_;
   LineReader out_{-1};
   LineReader err_{-1};
+  LineReader truth_{-1};
 };
 
 // "exited with status 1", "killed by signal 9 (Killed)".

@@ -338,6 +338,8 @@ void Cockpit::compose(const Console& console) {
   draw_engines_and_attitude(console, width);
   draw_pilot(console, width);
   draw_log(console, 14, rows - 14, width);
+  // The simulator's truth, across the log's rule: beside the QR's estimate above it.
+  if (!console.truth().empty()) put(13, 10, " " + console.truth() + " ", kInfo);
   draw_link_alarm(console, width);
   if (console.help_visible()) draw_help(rows, width);
   wnoutrefresh(stdscr);

@@ -128,7 +128,7 @@ int run(int argc, char** argv) {
     source = serial_path + " " + std::to_string(options.baud);
   } else {
     const std::string program = options.sim.empty() ? folder_of_this_program() + "/../qr/qrsim" : options.sim;
-    std::vector<std::string> arguments{"--serve"};
+    std::vector<std::string> arguments{"--serve", "--truth-fd", std::to_string(SimProcess::kTruthFd)};
     arguments.insert(arguments.end(), options.sim_arguments.begin(), options.sim_arguments.end());
     try {
       sim = std::make_unique<SimProcess>(program, arguments, kSimStartTimeoutMs);
@@ -161,6 +161,7 @@ int run(int argc, char** argv) {
   setup.params = params.values;
   setup.joystick = joystick != nullptr;
   setup.first_seq = static_cast<uint8_t>(::time(nullptr));
+  setup.simulator = sim != nullptr;
   Console console(log, std::move(files), setup, monotonic_ms());
 
   console.note(Severity::info,

@@ -48,16 +48,18 @@ void run_link(Session& s, std::mutex& lock, const std::atomic<bool>& stop) {
 
 class Ui {
  public:
-  explicit Ui(Session& s) : s_(s), sim_out_open_(s.sim != nullptr), sim_err_open_(s.sim != nullptr) {}
+  explicit Ui(Session& s)
+      : s_(s), sim_out_open_(s.sim != nullptr), sim_err_open_(s.sim != nullptr), sim_truth_open_(s.sim != nullptr) {}
 
   // One pass; false once the console has finished.
   bool pass(std::mutex& lock) {
-    enum { kKeyboard, kJoystick, kSimOut, kSimErr, kCount };
+    enum { kKeyboard, kJoystick, kSimOut, kSimErr, kSimTruth, kCount };
     pollfd fds[kCount] = {};
     fds[kKeyboard] = {STDIN_FILENO, POLLIN, 0};
     fds[kJoystick] = {s_.joystick != nullptr ? s_.joystick->fd() : -1, POLLIN, 0};
     fds[kSimOut] = {sim_out_open_ ? s_.sim->out().fd() : -1, POLLIN, 0};
     fds[kSimErr] = {sim_err_open_ ? s_.sim->err().fd() : -1, POLLIN, 0};
+    fds[kSimTruth] = {sim_truth_open_ ? s_.sim->truth().fd() : -1, POLLIN, 0};
     ::poll(fds, kCount, kUiPollMs);
 
     // Reading happens outside the lock: telling ESC from an arrow key waits a few ms.
@@ -69,6 +71,8 @@ class Ui {
     lines_.clear();
     read_sim(fds[kSimOut].revents != 0, s_.sim != nullptr ? &s_.sim->out() : nullptr, sim_out_open_, Severity::info);
     read_sim(fds[kSimErr].revents != 0, s_.sim != nullptr ? &s_.sim->err() : nullptr, sim_err_open_, Severity::warning);
+    truth_.clear();
+    if (fds[kSimTruth].revents != 0 && sim_truth_open_) truth_ = s_.sim->truth().read(sim_truth_open_);
     const uint32_t now = monotonic_ms();
     std::optional<std::string> sim_ended;
     if (s_.sim != nullptr && !sim_ended_ && now - last_child_check_ >= kChildCheckMs) {
@@ -89,6 +93,8 @@ class Ui {
       for (const auto& [key, at] : keys_) console.key(key, at);
       if (joystick_read) joystick(joystick_alive, now);
       for (const auto& [severity, line] : lines_) console.note(severity, "sim: " + line);
+      for (const std::string& line : truth_) console.truth_line(line);
+      sim_commands_ = console.take_sim_commands();
       if (sim_ended) console.line_closed(*sim_ended, now);
       for (; signals_handled_ < exit_signals(); ++signals_handled_) {
         console.note(Severity::warning, "signal: exiting");
@@ -100,6 +106,9 @@ class Ui {
         redraw = true;
         s_.cockpit.compose(console);
       }
+    }
+    if (s_.sim != nullptr) {
+      for (const std::string& command : sim_commands_) s_.sim->send_truth_command(command);
     }
     if (redraw) s_.cockpit.show();  // may wait for the terminal; the link thread carries on
     return !finished;
@@ -131,6 +140,7 @@ class Ui {
   Session& s_;
   bool sim_out_open_;
   bool sim_err_open_;
+  bool sim_truth_open_;
   bool sim_ended_ = false;
   int signals_handled_ = 0;
   uint32_t last_draw_ = monotonic_ms() - kRedrawMs;
@@ -138,6 +148,8 @@ class Ui {
   uint32_t last_joystick_retry_ = monotonic_ms();
   std::vector<std::pair<Key, uint32_t>> keys_;
   std::vector<std::pair<Severity, std::string>> lines_;
+  std::vector<std::string> truth_;
+  std::vector<std::string> sim_commands_;
 };
 
 }  // namespace

@@ -619,6 +619,34 @@ TEST(Console, TaskTableIsPrintedOnRequest) {
   EXPECT_NE(line->text.find("212    530        3"), std::string::npos) << line->text;
 }
 
+// The push key: a command for the simulator's truth channel when the console started qrsim,
+// "no simulator" on a real serial port. Truth lines become the screen's truth text; error lines
+// go to the log.
+TEST(Console, PushKeyNeedsTheSimulator) {
+  Bench real;
+  real.key('n');
+  EXPECT_TRUE(real.logged("no simulator"));
+  EXPECT_TRUE(real.console.take_sim_commands().empty());
+  EXPECT_EQ(real.console.truth(), "");
+
+  qrterm::Console::Setup setup;
+  setup.simulator = true;
+  Bench sim(setup);
+  sim.key('N');
+  const std::vector<std::string> commands = sim.console.take_sim_commands();
+  ASSERT_EQ(commands.size(), 1u);
+  EXPECT_EQ(commands[0], "push 0.3 0 0 0.1\n");
+  EXPECT_TRUE(sim.console.take_sim_commands().empty());
+  sim.console.truth_line(
+      "truth t=12.340 roll=1.23 pitch=-0.50 yaw=10.00 height=1.500 north=0.100 east=-0.020 climb=0.000");
+  EXPECT_EQ(sim.console.truth(), "truth roll +1.2 pitch -0.5 yaw +10.0 height 1.50 m");
+  sim.console.truth_line("ok push");
+  sim.console.truth_line("truth t=garbled");
+  EXPECT_EQ(sim.console.truth(), "truth roll +1.2 pitch -0.5 yaw +10.0 height 1.50 m");
+  sim.console.truth_line("error bad number 'x'");
+  EXPECT_TRUE(sim.logged("sim: error bad number 'x'"));
+}
+
 // One of every message the QR may send, as the wire library lists them: the console must have a
 // use for each (a new message type added to the wire shows up here first).
 template <class... Msgs>

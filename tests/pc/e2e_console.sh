@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # qrterm driven in tmux as a pilot would, its screen captured and asserted:
-#   start -> the screen shows safe; 3 calibrates; 2 (lift at zero) enters manual; a pressed N times
-#   raises the engines; ESC -> panic -> safe; the simulator killed -> LINK LOST within 2 s;
-#   x exits and the terminal is given back as it was.
+#   start -> the screen shows safe (and, flying qrsim, its truth line; n pushes); 3 calibrates;
+#   2 (lift at zero) enters manual; a pressed N times raises the engines; ESC -> panic -> safe;
+#   the simulator killed -> LINK LOST within 2 s; x exits and the terminal is given back as it was.
 #
 # usage: e2e_console.sh QRTERM SIMULATOR
 #   SIMULATOR is anything that speaks like `qrsim --serve` (first line "... serial on /dev/pts/N"):
@@ -30,6 +30,12 @@ e2e_pane "$qrterm" --sim "$sim" --no-joystick --log-dir "$work/logs" --params "$
 wait_for 'MODE +safe ' 30 "start: the screen shows safe"
 wait_for 'LINK up' 5 "link up"
 find_sim_pid
+# The simulator's truth line (qrsim's truth channel; the fake QR has none), and n pushes.
+if [[ $(basename "$sim") == qrsim ]]; then
+  wait_for 'truth roll [-+][0-9.]+ pitch [-+][0-9.]+ yaw [-+][0-9.]+ height [0-9.]+ m' 5 "the simulator's truth line"
+  keys n
+  wait_for 'sim: push 0.3 N m about roll' 3 "n pushes the simulated QR"
+fi
 
 # 2. Calibration: 3, then the QR reports itself calibrated and back in safe.
 keys 3

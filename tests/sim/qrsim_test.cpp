@@ -3,13 +3,16 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
+#include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -112,6 +115,84 @@ TEST(Qrsim, ServesStdio) {
   waitpid(pid, &status, 0);
   EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
   expect_a_live_qr(heard, 2.0);
+}
+
+// The side channel (--truth-fd): truth lines every 20 ms of simulated time, a bad command answered
+// with an error line, and a push that tips the QR where it stands (roll moves by more than a degree).
+TEST(Qrsim, TruthChannelReportsAndPushes) {
+  int pair[2];
+  ASSERT_EQ(socketpair(AF_UNIX, SOCK_STREAM, 0, pair), 0);
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    close(pair[0]);  // first: it may be descriptor 3
+    dup2(pair[1], 3);
+    const int null = open("/dev/null", O_RDWR);
+    dup2(null, STDIN_FILENO);
+    dup2(null, STDOUT_FILENO);
+    execl(QRSIM_PATH, "qrsim", "--serve", "--stdio", "--seconds", "4", "--truth-fd", "3", static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  close(pair[1]);
+  const int fd = pair[0];
+  std::string pending;
+  std::vector<std::string> lines;
+  const auto listen = [&](double seconds) {
+    const auto end = Clock::now() + std::chrono::duration<double>(seconds);
+    while (Clock::now() < end) {
+      pollfd p{fd, POLLIN, 0};
+      if (poll(&p, 1, 10) <= 0) continue;
+      char buffer[1024];
+      const ssize_t n = read(fd, buffer, sizeof buffer);
+      if (n <= 0) break;
+      for (ssize_t i = 0; i < n; ++i) {
+        if (buffer[i] == '\n') {
+          lines.push_back(pending);
+          pending.clear();
+        } else {
+          pending += buffer[i];
+        }
+      }
+    }
+  };
+  const auto roll_of = [](const std::string& line) {
+    const size_t at = line.find(" roll=");
+    return at == std::string::npos ? std::nan("") : std::strtod(line.c_str() + at + 6, nullptr);
+  };
+  const auto last_truth = [&]() -> std::string {
+    for (auto it = lines.rbegin(); it != lines.rend(); ++it)
+      if (it->rfind("truth t=", 0) == 0) return *it;
+    return "";
+  };
+  listen(1.0);
+  size_t truths = 0;
+  for (const std::string& l : lines) truths += l.rfind("truth t=", 0) == 0 ? 1 : 0;
+  EXPECT_GT(truths, 25u);  // 50 a second of simulated time, which runs at wall-clock pace
+  const std::string before = last_truth();
+  ASSERT_FALSE(before.empty());
+  EXPECT_NE(before.find(" pitch="), std::string::npos) << before;
+  EXPECT_NE(before.find(" height="), std::string::npos) << before;
+  EXPECT_NE(before.find(" climb="), std::string::npos) << before;
+
+  const std::string bad = "shove 1 2\n";
+  ASSERT_EQ(write(fd, bad.data(), bad.size()), static_cast<ssize_t>(bad.size()));
+  const std::string push = "push 3 0 0 0.3\n";
+  ASSERT_EQ(write(fd, push.data(), push.size()), static_cast<ssize_t>(push.size()));
+  double most = 0;
+  const size_t from = lines.size();
+  listen(1.0);
+  bool error_seen = false;
+  for (size_t i = from; i < lines.size(); ++i) {
+    if (lines[i].rfind("error unknown command 'shove'", 0) == 0) error_seen = true;
+    const double r = roll_of(lines[i]);
+    if (std::isfinite(r)) most = std::max(most, std::fabs(r - roll_of(before)));
+  }
+  EXPECT_TRUE(error_seen);
+  EXPECT_GT(most, 1.0) << before << " / " << last_truth();
+  close(fd);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
 }
 
 }  // namespace

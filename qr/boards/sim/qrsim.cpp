@@ -4,6 +4,8 @@
 //   qrsim --sweep NAME --seeds N   the scenario over N seeds and drawn vehicles, band summaries
 //   qrsim --replay IN --out OUT    a recording through the flight chain (qr/host/replay.hpp)
 // Run `qrsim --help` for everything; docs/simulator.md describes the model and the scenarios.
+#include <fcntl.h>
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -23,7 +25,7 @@
 namespace {
 
 constexpr const char* kUsage = R"(usage:
-  qrsim --serve [--stdio] [--seed N] [--vehicle FILE] [--seconds S] [--status]
+  qrsim --serve [--stdio] [--seed N] [--vehicle FILE] [--seconds S] [--status] [--truth-fd N]
   qrsim --scenario NAME|FILE [--seconds S] [--seed N] [--vehicle FILE] [--param NAME=VALUE]...
         [--no-noise] [--trace FILE.csv] [--record FILE.csv] [--json]
   qrsim --sweep NAME|FILE [--seeds N] [--no-draw] [--seed N] [--seconds S] [--vehicle FILE]
@@ -40,6 +42,9 @@ rate) flying in a simulated IN4073-class quadrotor.
                    for the console to open as it would the real line
   --stdio          with --serve: the serial line is stdin/stdout instead (messages go to stderr)
   --status         with --serve: one status line a second on stderr
+  --truth-fd N     with --serve: N is an open, two-way descriptor (a socketpair end) for the
+                   simulator's side channel: a truth line per 20 ms of simulated time out, push
+                   commands in (docs/simulator.md); the firmware never sees it
   --scenario NAME  fly a scenario headless, in simulated time, and score it on the simulator's
                    truth; exit status 0 when every pass band holds, 1 when one does not. NAME is
                    a built-in (qrsim --list) or a scenario file (format in docs/simulator.md)
@@ -94,6 +99,7 @@ int main(int argc, char** argv) {
   bool json = false;
   bool stdio = false;
   bool status = false;
+  int truth_fd = -1;
   double seconds = 0;
   uint64_t seed = 1;
   std::optional<sim::VehicleParams> vehicle;
@@ -116,6 +122,15 @@ int main(int argc, char** argv) {
       stdio = true;
     } else if (arg == "--status") {
       status = true;
+    } else if (arg == "--truth-fd") {
+      const char* v = value("N");
+      double n = 0;
+      if (v == nullptr || !parse_number(v, n) || n < 0 || n != std::floor(n) || n > 65535) {
+        return usage_error("--truth-fd needs a descriptor number");
+      }
+      truth_fd = static_cast<int>(n);
+      if (fcntl(truth_fd, F_GETFD) < 0)
+        return usage_error("--truth-fd " + std::string(v) + " is not an open descriptor");
     } else if (arg == "--json") {
       json = true;
     } else if (arg == "--no-noise") {
@@ -203,6 +218,7 @@ int main(int argc, char** argv) {
     case Command::serve:
       serve.stdio = stdio;
       serve.status = status;
+      serve.truth_fd = truth_fd;
       serve.seconds = seconds;
       serve.seed = seed;
       serve.vehicle = vehicle ? *vehicle : sim::default_vehicle();

@@ -10,8 +10,10 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include <qr/boards/sim/sim_qr.hpp>
+#include <qr/boards/sim/truth_channel.hpp>
 
 namespace qrsim {
 namespace {
@@ -42,6 +44,56 @@ bool open_pty(int& master, int& slave_keep) {
 
 void set_nonblocking(int fd) { fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) | O_NONBLOCK); }
 
+// The side channel (--truth-fd): command lines in, truth lines and error lines out. Writes never
+// block the flight: a line the reader has no room for is dropped.
+class TruthChannel {
+ public:
+  explicit TruthChannel(int fd) : fd_(fd) {
+    if (fd_ >= 0) set_nonblocking(fd_);
+  }
+  bool open() const { return fd_ >= 0; }
+
+  void send(const std::string& line) {
+    if (fd_ < 0) return;
+    const ssize_t n = write(fd_, line.data(), line.size());
+    if (n < 0 && errno != EAGAIN && errno != EINTR) fd_ = -1;  // the reader has gone
+  }
+
+  // Reads what has arrived; a push found starts now (the latest push replaces the one acting).
+  void poll_commands(uint64_t now_us, sim::Vec3& torque, uint64_t& until_us) {
+    if (fd_ < 0) return;
+    char buffer[256];
+    for (;;) {
+      const ssize_t n = read(fd_, buffer, sizeof buffer);
+      if (n == 0) {
+        fd_ = -1;
+        return;
+      }
+      if (n < 0) return;  // EAGAIN: nothing more now
+      for (ssize_t i = 0; i < n; ++i) {
+        if (buffer[i] != '\n') {
+          if (pending_.size() < 200) pending_ += buffer[i];
+          continue;
+        }
+        TruthPush push;
+        std::string error;
+        if (parse_truth_command(pending_, push, error)) {
+          torque = push.torque;
+          until_us = now_us + static_cast<uint64_t>(std::llround(push.seconds * 1e6));
+          send("ok push\n");
+        } else {
+          send("error " + error + "\n");
+        }
+        pending_.clear();
+      }
+    }
+  }
+
+ private:
+  int fd_;
+  std::string pending_;
+};
+
 }  // namespace
 
 int serve(const ServeOptions& options) {
@@ -65,6 +117,11 @@ int serve(const ServeOptions& options) {
   uint64_t next_status_us = 1000000;
   uint8_t buffer[256];
   bool input_open = true;
+  TruthChannel truth(options.truth_fd);
+  uint64_t next_truth_us = 0;
+  sim::Vec3 push_torque;
+  uint64_t push_until_us = 0;
+  bool pushing = false;
 
   while (g_stop == 0) {
     // Bytes from the console go onto the line now; the line delivers them at 115200 baud.
@@ -92,9 +149,21 @@ int serve(const ServeOptions& options) {
       done += static_cast<size_t>(n);
     }
 
+    if (truth.open()) {
+      const uint64_t before = qr->world.now_us();
+      truth.poll_commands(before, push_torque, push_until_us);
+      const bool push_now = before < push_until_us;
+      if (push_now || pushing) qr->world.plant().set_disturbance(push_now ? push_torque : sim::Vec3{}, sim::Vec3{});
+      pushing = push_now;
+    }
+
     if (!qr->tick()) break;  // sleeps until the next kick, then runs the firmware
 
     const uint64_t now = qr->world.now_us();
+    if (truth.open() && now >= next_truth_us) {
+      next_truth_us = now - now % 20000 + 20000;
+      truth.send(truth_line(static_cast<double>(now) * 1e-6, qr->world.plant().state()));
+    }
     if (options.status && now >= next_status_us) {
       next_status_us += 1000000;
       const sim::PlantState& s = qr->world.plant().state();

@@ -16,6 +16,7 @@ struct ServeOptions {
   sim::VehicleParams vehicle = sim::default_vehicle();
   double seconds = 0;   // > 0: stop after this much time (for tests); 0: until exit or a signal
   bool status = false;  // a status line on stderr once a second
+  int truth_fd = -1;    // >= 0: the side channel (truth lines out, pushes in; truth_channel.hpp)
 };
 
 // Runs until the firmware stops (the console sent exit), a signal, or `seconds`. Returns the

@@ -1,0 +1,80 @@
+#include <qr/boards/sim/truth_channel.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <vector>
+
+#include <sim/quaternion.hpp>
+
+namespace qrsim {
+namespace {
+
+std::vector<std::string> words_of(std::string_view line) {
+  std::vector<std::string> words;
+  size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
+    const size_t start = i;
+    while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r') ++i;
+    if (i > start) words.emplace_back(line.substr(start, i - start));
+  }
+  return words;
+}
+
+bool number(const std::string& text, double& out) {
+  char* end = nullptr;
+  out = std::strtod(text.c_str(), &end);
+  return end != text.c_str() && *end == '\0' && std::isfinite(out);
+}
+
+}  // namespace
+
+bool parse_truth_command(std::string_view line, TruthPush& push, std::string& error) {
+  const std::vector<std::string> words = words_of(line);
+  if (words.empty()) {
+    error = "empty command";
+    return false;
+  }
+  if (words[0] != "push") {
+    error = "unknown command '" + words[0].substr(0, 40) + "' (push TX TY TZ SECONDS)";
+    return false;
+  }
+  if (words.size() != 5) {
+    error = "push needs TX TY TZ SECONDS";
+    return false;
+  }
+  double v[4] = {};
+  for (size_t i = 0; i < 4; ++i) {
+    if (!number(words[i + 1], v[i])) {
+      error = "bad number '" + words[i + 1].substr(0, 40) + "'";
+      return false;
+    }
+  }
+  for (size_t i = 0; i < 3; ++i) {
+    if (std::fabs(v[i]) > 10) {
+      error = "torque beyond 10 N m";
+      return false;
+    }
+  }
+  if (v[3] <= 0 || v[3] > 10) {
+    error = "seconds must be in (0, 10]";
+    return false;
+  }
+  push.torque = sim::Vec3{v[0], v[1], v[2]};
+  push.seconds = v[3];
+  return true;
+}
+
+std::string truth_line(double t_s, const sim::PlantState& state) {
+  const sim::Euler e = sim::to_euler(state.attitude);
+  constexpr double kDeg = 57.29577951308232;
+  char text[256];
+  std::snprintf(text, sizeof text,
+                "truth t=%.3f roll=%.2f pitch=%.2f yaw=%.2f height=%.3f north=%.3f east=%.3f climb=%.3f\n", t_s,
+                e.roll * kDeg, e.pitch * kDeg, e.yaw * kDeg, -state.position.z, state.position.x, state.position.y,
+                -state.velocity.z);
+  return text;
+}
+
+}  // namespace qrsim

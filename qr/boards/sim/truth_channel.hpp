@@ -1,0 +1,28 @@
+// Serve mode's side channel (qrsim --serve --truth-fd N): the simulator's true state out, one line
+// per 20 ms of simulated time, and pushes in. The firmware never sees it; docs/simulator.md gives
+// the line format.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include <sim/quadrotor.hpp>
+#include <sim/vec3.hpp>
+
+namespace qrsim {
+
+// "push TX TY TZ SECONDS": a torque in N·m, body axes, for that long.
+struct TruthPush {
+  sim::Vec3 torque;
+  double seconds = 0;
+};
+
+// One command line (without its newline). True with `push` filled in; false with `error` saying
+// why ("unknown command 'foo'", "push needs TX TY TZ SECONDS", ...).
+bool parse_truth_command(std::string_view line, TruthPush& push, std::string& error);
+
+// "truth t=12.340 roll=1.23 pitch=-0.50 yaw=10.00 height=1.500 north=0.100 east=-0.020 climb=0.000"
+// (degrees, metres, m/s upward), with a newline.
+std::string truth_line(double t_s, const sim::PlantState& state);
+
+}  // namespace qrsim
