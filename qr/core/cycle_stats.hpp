@@ -25,10 +25,7 @@ struct CycleStats {
 
   [[gnu::always_inline]] inline void add(uint32_t cycles, uint32_t budget = kNoBudget) {
     if (cycles - min < usual_span_) {
-      ++count;
-      const uint32_t low = sum_low + cycles;
-      if (low < cycles) ++sum_high;
-      sum_low = low;
+      count_and_sum(cycles);
       return;
     }
     add_unusual(cycles, budget);
@@ -42,14 +39,18 @@ struct CycleStats {
     if (cycles < min || count == 0) min = cycles;
     if (cycles > max) max = cycles;
     if (cycles > budget) ++overruns;
+    count_and_sum(cycles);
+    // The usual range: [min, min(max, budget)]; empty when the budget is below the minimum. Its
+    // width saturates, so [0, 2^32 - 1] leaves only 2^32 - 1 itself to the full path.
+    const uint32_t top = max < budget ? max : budget;
+    const uint32_t width = top - min;
+    usual_span_ = top < min ? 0u : width == 0xFFFFFFFFu ? width : width + 1u;
+  }
+  [[gnu::always_inline]] inline void count_and_sum(uint32_t cycles) {
     ++count;
     const uint32_t low = sum_low + cycles;
     if (low < cycles) ++sum_high;
     sum_low = low;
-    // The usual range: [min, min(max, budget)]; empty when the budget is below the minimum.
-    const uint32_t top = max < budget ? max : budget;
-    usual_span_ = top < min ? 0u : top - min + 1u;  // top - min + 1 == 0 only for [0, 2^32 - 1]
-    if (top >= min && usual_span_ == 0) usual_span_ = 0xFFFFFFFFu;
   }
 
   // Measurements m with m - min < usual_span_ are usual; 0 while nothing has been measured.

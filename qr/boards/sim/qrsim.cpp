@@ -19,6 +19,7 @@
 #include <qr/boards/sim/scenario.hpp>
 #include <qr/boards/sim/serve.hpp>
 #include <qr/boards/sim/sweep.hpp>
+#include <qr/boards/sim/text_fields.hpp>
 #include <qr/core/rate.hpp>
 #include <qr/host/replay.hpp>
 
@@ -79,11 +80,6 @@ int usage_error(const std::string& message) {
   return 2;
 }
 
-bool parse_number(const char* text, double& out) {
-  char* end = nullptr;
-  out = std::strtod(text, &end);
-  return end != text && *end == '\0' && std::isfinite(out);
-}
 
 }  // namespace
 
@@ -125,7 +121,7 @@ int main(int argc, char** argv) {
     } else if (arg == "--truth-fd") {
       const char* v = value("N");
       double n = 0;
-      if (v == nullptr || !parse_number(v, n) || n < 0 || n != std::floor(n) || n > 65535) {
+      if (v == nullptr || !qrsim::parse_real(v, n) || n < 0 || n != std::floor(n) || n > 65535) {
         return usage_error("--truth-fd needs a descriptor number");
       }
       truth_fd = static_cast<int>(n);
@@ -146,13 +142,14 @@ int main(int argc, char** argv) {
     } else if (arg == "--seeds") {
       const char* v = value("N");
       double n = 0;
-      if (v == nullptr || !parse_number(v, n) || n < 1 || n != std::floor(n) || n > 100000) {
+      if (v == nullptr || !qrsim::parse_real(v, n) || n < 1 || n != std::floor(n) || n > 100000) {
         return usage_error("--seeds needs a whole number >= 1");
       }
       seeds = static_cast<int>(n);
     } else if (arg == "--seconds") {
       const char* v = value("S");
-      if (v == nullptr || !parse_number(v, seconds) || seconds <= 0) return usage_error("--seconds needs a time > 0");
+      if (v == nullptr || !qrsim::parse_real(v, seconds) || seconds <= 0)
+        return usage_error("--seconds needs a time > 0");
     } else if (arg == "--seed") {
       const char* v = value("N");
       char* end = nullptr;

@@ -13,23 +13,10 @@
 #include <sstream>
 
 #include <qr/boards/sim/scenario_figures.hpp>
+#include <qr/boards/sim/text_fields.hpp>
 
 namespace qrsim {
 namespace {
-
-bool number(const std::string& text, double& out) {
-  if (text.empty()) return false;
-  char* end = nullptr;
-  out = std::strtod(text.c_str(), &end);
-  return end == text.c_str() + text.size() && std::isfinite(out);
-}
-
-std::vector<std::string> words_of(const std::string& text) {
-  std::vector<std::string> words;
-  std::istringstream in(text);
-  for (std::string w; in >> w;) words.push_back(w);
-  return words;
-}
 
 std::string joined(const std::vector<std::string>& words, size_t from) {
   std::string out;
@@ -98,7 +85,7 @@ class Reader {
   }
 
   bool get_number(const std::string& text, double& out, const char* what) {
-    if (number(text, out)) return true;
+    if (parse_real(text, out)) return true;
     return fail(std::string("bad number '") + text + "' for " + what);
   }
 
@@ -333,7 +320,7 @@ std::string parameter_from_text(const std::string& name, const std::string& valu
   }
   if (spec == nullptr) return "unknown parameter '" + name + "' (docs/parameters.md names them)";
   double real = 0;
-  if (!number(value, real)) return "bad number '" + value + "' for parameter " + name;
+  if (!parse_real(value, real)) return "bad number '" + value + "' for parameter " + name;
   const double scaled = std::round(std::ldexp(real, spec->frac_bits));
   if (scaled < spec->min || scaled > spec->max) return "parameter " + name + ": " + value + " is out of range";
   id = spec->id;

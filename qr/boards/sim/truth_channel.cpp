@@ -5,30 +5,10 @@
 #include <cstdlib>
 #include <vector>
 
+#include <qr/boards/sim/text_fields.hpp>
 #include <sim/quaternion.hpp>
 
 namespace qrsim {
-namespace {
-
-std::vector<std::string> words_of(std::string_view line) {
-  std::vector<std::string> words;
-  size_t i = 0;
-  while (i < line.size()) {
-    while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
-    const size_t start = i;
-    while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r') ++i;
-    if (i > start) words.emplace_back(line.substr(start, i - start));
-  }
-  return words;
-}
-
-bool number(const std::string& text, double& out) {
-  char* end = nullptr;
-  out = std::strtod(text.c_str(), &end);
-  return end != text.c_str() && *end == '\0' && std::isfinite(out);
-}
-
-}  // namespace
 
 bool parse_truth_command(std::string_view line, TruthPush& push, std::string& error) {
   const std::vector<std::string> words = words_of(line);
@@ -46,7 +26,7 @@ bool parse_truth_command(std::string_view line, TruthPush& push, std::string& er
   }
   double v[4] = {};
   for (size_t i = 0; i < 4; ++i) {
-    if (!number(words[i + 1], v[i])) {
+    if (!parse_real(words[i + 1], v[i])) {
       error = "bad number '" + words[i + 1].substr(0, 40) + "'";
       return false;
     }
