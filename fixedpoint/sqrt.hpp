@@ -14,23 +14,6 @@ struct RootAndRemainder {
   U root, remainder;  // root = floor(sqrt(n)), remainder = n - root^2
 };
 
-// One result bit per step, the schoolbook method in base 2: no multiply, no divide.
-constexpr RootAndRemainder<uint32_t> isqrt(uint32_t n) {
-  uint32_t root = 0;
-  uint32_t bit = 1u << 30;
-  while (bit > n) bit >>= 2;
-  while (bit != 0) {
-    if (n >= root + bit) {
-      n -= root + bit;
-      root = (root >> 1) + bit;
-    } else {
-      root >>= 1;
-    }
-    bit >>= 2;
-  }
-  return {root, n};
-}
-
 constexpr int bit_length(uint32_t v) {
   int n = 0;
   for (int step = 16; step > 0; step >>= 1) {
@@ -40,6 +23,47 @@ constexpr int bit_length(uint32_t v) {
     }
   }
   return n + static_cast<int>(v);
+}
+
+// ceil(16 sqrt(m + 1)) for m = 0..63: a root at or above sqrt(m + 1), in 1/16 units.
+struct RootSeeds {
+  uint8_t of[64];
+};
+constexpr RootSeeds make_root_seeds() {
+  RootSeeds t{};
+  for (uint32_t m = 0; m < 64; ++m) {
+    uint32_t r = 0;
+    while (r * r < (m + 1) * 256u) ++r;
+    t.of[m] = static_cast<uint8_t>(r);
+  }
+  return t;
+}
+inline constexpr RootSeeds kRootSeeds = make_root_seeds();
+
+// floor(sqrt(n)) for n > 0 from a seed x at or above it and at most about 25 % high: two Newton
+// (Heron) steps with one 32-bit division each, and a check that takes back the last units. From
+// above, integer Newton never passes the root:
+// floor((x + floor(n / x)) / 2) = floor((x + n / x) / 2) >= floor(sqrt(n)) (AM-GM). x > n / x
+// is x^2 > n without x^2 overflowing at the top of the range.
+constexpr uint32_t root_from_above(uint32_t n, uint32_t x) {
+  x = (x + n / x) >> 1;
+  x = (x + n / x) >> 1;
+  while (x > n / x) --x;
+  return x;
+}
+
+// floor(sqrt(n)) and what remains, for every 32-bit n (the schoolbook method, one result bit
+// per step, costs RV32IM about 110 instructions): a seed from n's top 5-6 bits, at most 25 % high
+// below n = 64 and 3 % high above, finished from above. Exact for every n (checked once by hand
+// over all 2^32; tests/fixedpoint/sqrt_test.cpp checks every root's edges).
+constexpr RootAndRemainder<uint32_t> isqrt(uint32_t n) {
+  if (n == 0) return {0, 0};
+  // n = m 4^h + rest with m in [16, 64), or m = n below 64.
+  const int length = bit_length(n);
+  const int h = length > 6 ? (length - 5) >> 1 : 0;
+  const uint32_t m = n >> (2 * h);
+  const uint32_t x = root_from_above(n, ((static_cast<uint32_t>(kRootSeeds.of[m]) << h) >> 4) + 1);
+  return {x, n - x * x};
 }
 
 // For n < 2^62 (what Q<F, int32_t> needs). The schoolbook method on 64 bits would cost ~600

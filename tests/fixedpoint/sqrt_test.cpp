@@ -6,6 +6,7 @@
 #include <fixedpoint/sqrt.hpp>
 
 #include <cmath>
+#include <cstdio>
 
 #include "max_error.hpp"
 #include "reference.hpp"
@@ -86,6 +87,28 @@ TEST(Sqrt, KnownValuesAndLimits) {
   EXPECT_EQ(fx::sqrt(fx::Q<16>::min()), fx::Q<16>());
   EXPECT_EQ(fx::sqrt(fx::Q<31>::max()), fx::Q<31>::max());  // sqrt of just below 1 stays below 1
   EXPECT_EQ(fx::sqrt(fx::Q<0>::max()), fx::Q<0>::from_raw(46341));
+}
+
+// The integer root under every Q root: exact at both edges of every root's run of inputs, r^2
+// and (r + 1)^2 - 1, for every r of the 32-bit range, and on every input below 2^20. (The whole
+// 2^32 range was checked once by hand: 25 s of an optimised build.)
+TEST(Sqrt, IntegerRootExactAtEveryEdge) {
+  uint64_t checked = 0;
+  const auto expect_root = [&checked](uint32_t n, uint32_t root) {
+    const auto r = fx::detail::isqrt(n);
+    ASSERT_EQ(r.root, root) << "n = " << n;
+    ASSERT_EQ(r.remainder, n - root * root) << "n = " << n;
+    ++checked;
+  };
+  for (uint32_t r = 0; r < 65536; ++r) {
+    expect_root(r * r, r);
+    expect_root(r == 65535 ? 0xFFFFFFFFu : (r + 1) * (r + 1) - 1, r);
+  }
+  for (uint32_t n = 0, r = 0; n < (1u << 20); ++n) {
+    if ((r + 1) * (r + 1) == n) ++r;
+    expect_root(n, r);
+  }
+  std::printf("  integer root exact on %llu inputs\n", static_cast<unsigned long long>(checked));
 }
 
 }  // namespace

@@ -27,10 +27,26 @@
 #include <stdint.h>
 
 #include <common/units.hpp>
+#include <fixedpoint/sqrt.hpp>
 #include <qr/core/board.hpp>
 #include <qr/core/chain/numeric.hpp>
 
 namespace qr::chain {
+
+// ceil(sqrt((k + 1) 2^16)) for k = 0..63: the engine root's seeds (EngineMixer below).
+struct ThrustRootSeeds {
+  uint16_t of[64];
+};
+constexpr ThrustRootSeeds make_thrust_root_seeds() {
+  ThrustRootSeeds t{};
+  for (uint32_t k = 0; k < 64; ++k) {
+    uint32_t r = 0;
+    while (r * r < (k + 1) << 16) ++r;
+    t.of[k] = static_cast<uint16_t>(r);
+  }
+  return t;
+}
+inline constexpr ThrustRootSeeds kThrustRootSeeds = make_thrust_root_seeds();
 
 template <class Thrust>
 struct Moments {
@@ -113,8 +129,8 @@ class EngineMixer {
 
   // round(sqrt(1000 w)): the engine value for a per-engine thrust w in [0, 1000]. Exact (the
   // rounding of the true root) for the Q formats, in 32-bit integer arithmetic: the value needs
-  // 10 bits, so a 64-bit square root of the Q<16> thrust (about 190 RV32 instructions) would
-  // compute 22 bits only to throw 12 away. With x = 1000 w and k = floor(2 sqrt(x)),
+  // 10 bits, so a 64-bit square root of the Q<16> thrust would compute 22 bits only to throw 12
+  // away. With x = 1000 w and k = floor(2 sqrt(x)),
   // round(sqrt(x)) = (k + 1) / 2 (the root's first fractional bit decides), and
   // k = isqrt(floor(4 x)) because isqrt(floor(y)) = floor(sqrt(y)) for every real y >= 0.
   static int32_t engine_of_thrust(Thrust w) {
@@ -144,21 +160,15 @@ class EngineMixer {
   static constexpr typename N::Scale kPerMille = typename N::Scale(0.001);
   static constexpr Thrust kRootOf1000 = Thrust(31.62277660168379332);
 
-  // floor(sqrt(n)) for n < 4^11 = 4194304 (4000 w <= 4e6: the clamp to [low, 1000] before the
-  // call keeps n there): the schoolbook method, one result bit per step, 11 steps.
+  // floor(sqrt(n)) for n < 4^11 (4000 w <= 4e6: the clamp to [low, 1000] before the call keeps n
+  // there). In flight n is at least 2^16 (a thrust of 16.4 units, an engine at 128) and its top
+  // six bits k = n / 2^16 seed the root from above, at most 41 % high (k = 1), so two Newton steps
+  // and a check finish it: about a third of the general root's work, which must first find n's
+  // bit length.
   static constexpr uint32_t isqrt_below_4_pow_11(uint32_t n) {
-    uint32_t root = 0;
-    for (uint32_t bit = 1u << 20; bit != 0; bit >>= 2) {
-      if (n >= root + bit) {
-        n -= root + bit;
-        root = (root >> 1) + bit;
-      } else {
-        root >>= 1;
-      }
-    }
-    return root;
+    if (n < (1u << 16)) return fx::detail::isqrt(n).root;
+    return fx::detail::root_from_above(n, kThrustRootSeeds.of[n >> 16]);
   }
-
   // num / den for 0 <= num < den: the saturation's scale factor, in Q<30> (a Thrust quotient
   // would be quantised to 1.5e-5, and the realised moments with it: up to 0.008 thrust units
   // off the ratio asked for). A 64-bit division, taken only when saturating.
