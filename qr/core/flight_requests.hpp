@@ -8,6 +8,13 @@
 
 namespace qr {
 
+// The parameters the attitude estimator's state depends on.
+constexpr bool feeds_estimator(uint8_t id) {
+  using wire::ParamId;
+  return id == static_cast<uint8_t>(ParamId::attitude_c1) || id == static_cast<uint8_t>(ParamId::attitude_c2) ||
+         id == static_cast<uint8_t>(ParamId::accel_lag_ms);
+}
+
 template <class Flight>
 struct FlightRequests {
   Flight& f;
@@ -26,6 +33,11 @@ struct FlightRequests {
     answer = f.params_.set(p.id, p.value);
     if (answer != NackReason::none) return;
     f.apply_parameters();
+    // The estimator's state is what its divisors made of it: a value it cannot track with (C2 at
+    // 1 ruins the bias estimate in a few ticks) would outlive its own undoing. On the ground
+    // (safe) the accelerometer reads the tilt, so the estimator starts over from it; in flight it
+    // could not, and the change applies as it comes (docs/safety.md, rule 13).
+    if (feeds_estimator(p.id) && f.safety_.mode() == Mode::safe) f.chain_.restart_estimator();
     report = wire::ParamReport{p.id, p.value};  // after the ack: the value now in force
   }
   void operator()(const wire::ParamGet& g) {

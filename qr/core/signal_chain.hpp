@@ -34,6 +34,7 @@ concept SignalChain = requires(C& c, const C& cc, const wire::ParameterValues& p
   c.control_yaw();
   { c.mix() } -> ConvertibleToEngines;
   { c.mix_manual() } -> ConvertibleToEngines;
+  c.restart_estimator();  // at rest on the ground: start over from the accelerometer
   // entry actions
   c.enter_calibration();
   c.enter_attitude_control();

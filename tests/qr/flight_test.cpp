@@ -311,6 +311,29 @@ TEST_F(FlightTest, DividedTasksRunAtTheirRowsRates) {
       << "the new rate after the next run";
 }
 
+// Rule 13: a change of the estimator's divisors or lag in safe (on the ground) restarts it from the
+// accelerometer; in flight it applies as it comes; other parameters never restart it.
+TEST_F(FlightTest, AnEstimatorParameterSetInSafeRestartsTheEstimator) {
+  calibrate();
+  const uint32_t after_calibration = flight.chain().estimator_restarts;
+  for (const wire::ParamId id : {wire::ParamId::attitude_c1, wire::ParamId::attitude_c2, wire::ParamId::accel_lag_ms}) {
+    const uint32_t before = flight.chain().estimator_restarts;
+    send(wire::ParamSet{++seq, static_cast<uint8_t>(id), 1000});
+    run_ms(5);
+    EXPECT_EQ(flight.chain().estimator_restarts, before + 1) << "parameter " << static_cast<int>(id);
+  }
+  send(wire::ParamSet{++seq, static_cast<uint8_t>(wire::ParamId::yaw_p), 100});
+  run_ms(5);
+  EXPECT_EQ(flight.chain().estimator_restarts, after_calibration + 3) << "yaw_p does not feed the estimator";
+
+  request_mode(Mode::full_control);
+  run_ms(10);
+  ASSERT_EQ(flight.mode(), Mode::full_control);
+  send(wire::ParamSet{++seq, static_cast<uint8_t>(wire::ParamId::attitude_c2), 2000000});
+  run_ms(5);
+  EXPECT_EQ(flight.chain().estimator_restarts, after_calibration + 3) << "not in flight";
+}
+
 TEST_F(FlightTest, ParameterSetIsRangeCheckedAppliedAndReported) {
   send(wire::ParamSet{++seq, static_cast<uint8_t>(wire::ParamId::link_timeout_ms), 500});
   send(wire::ParamSet{++seq, static_cast<uint8_t>(wire::ParamId::link_timeout_ms), 5});  // below range

@@ -29,6 +29,7 @@ struct ScriptedChain {
   uint32_t yaw_controlled = 0;
   uint32_t attitude_controlled = 0;
   uint32_t parameter_updates = 0;
+  uint32_t estimator_restarts = 0;
   int32_t yaw_p = 0;
   ControlInput pilot;
 
@@ -53,6 +54,7 @@ struct ScriptedChain {
   void estimate_height() { ++height_estimated; }
   int32_t height_mm() const { return 0; }
   int32_t climb_mm_s() const { return 0; }
+  void restart_estimator() { ++estimator_restarts; }
   void enter_attitude_control() { ++attitude_entered; }
   void enter_yaw_control() { ++yaw_entered; }
   void control_yaw() { ++yaw_controlled; }

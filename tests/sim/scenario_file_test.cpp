@@ -157,7 +157,7 @@ const Mistake kMistakes[] = {
     {"seconds: 3\nat 0 lift up\n", "mine.txt:2: ", "bad number 'up'"},
     {"seconds: 3\nat 0 lift height\n", "mine.txt:2: ", "bad number 'height'"},
     {"seconds: 3\nat 0 lift 5\n", "mine.txt:2: ", "lift share must be"},
-    {"seconds: 3\nstart: sky\n", "mine.txt:2: ", "start: is 'hover' or 'ground'"},
+    {"seconds: 3\nstart: sky\n", "mine.txt:2: ", "start: is 'hover', 'ground' or 'safe'"},
     {"seconds: 3\nseconds: 4\n", "mine.txt:2: ", "given twice"},
     {"seconds: 3\nmass: 0\n", "mine.txt:2: ", "outside"},
     {"seconds: 3\nknown_failure:\n", "mine.txt:2: ", "needs its reason"},

@@ -288,8 +288,13 @@ ScenarioResult run_scenario(const ScenarioScript& script, const RunOptions& opti
         }
         if (view.heard && (view.flags & wire::kFlagCalibrated) != 0 && view.mode == wire::Mode::safe &&
             !pilot.request_pending(wire::MessageType::param_set)) {
-          pilot.request_mode(wire::Mode::full_control);
-          enter(Phase::arm);
+          if (script.start == Start::safe) {
+            hands.hold_height = false;  // on the ground, lift stick down, not armed
+            begin_manoeuvre();
+          } else {
+            pilot.request_mode(wire::Mode::full_control);
+            enter(Phase::arm);
+          }
         }
         break;
       case Phase::arm:

@@ -120,8 +120,10 @@ class Reader {
         out_.start = Start::hover;
       } else if (value == "ground") {
         out_.start = Start::ground;
+      } else if (value == "safe") {
+        out_.start = Start::safe;
       } else {
-        return fail("start: is 'hover' or 'ground', not '" + value + "'");
+        return fail("start: is 'hover', 'ground' or 'safe', not '" + value + "'");
       }
       return true;
     }

@@ -22,6 +22,7 @@ namespace qrsim {
 enum class Start : uint8_t {
   hover,   // calibrate, full control, take off to 1.5 m, settle 1.5 s: then t0
   ground,  // calibrate, full control with the lift at 0, still on the ground: then t0
+  safe,    // calibrate: then t0, in safe on the ground; the script arms (`mode full`) itself
 };
 
 enum class Compare : uint8_t { below, at_most, equal };

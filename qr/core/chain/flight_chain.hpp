@@ -102,6 +102,9 @@ class FlightChain {
     }
     return done;
   }
+  // The attitude estimator starts over from the accelerometer's angles, with no bias, at its next
+  // run (for a vehicle at rest: its divisors changed on the ground).
+  void restart_estimator() { estimator_.restart(); }
   void enter_calibration() {
     calibration_.restart();
     height_.restart_calibration();
