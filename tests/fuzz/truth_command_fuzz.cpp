@@ -1,0 +1,32 @@
+// Fuzz target: arbitrary lines into the simulator's truth channel (qrsim --truth-fd,
+// qr/boards/sim/truth_channel.cpp). Beyond what ASan and UBSan catch: a refused line says why; an
+// accepted push is finite and within the channel's bounds (10 N m, 10 s).
+#include <stddef.h>
+#include <stdint.h>
+
+#include <cmath>
+#include <string>
+#include <string_view>
+
+#include <qr/boards/sim/truth_channel.hpp>
+
+namespace {
+
+void require(bool condition) {
+  if (!condition) __builtin_trap();
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  const std::string_view line(reinterpret_cast<const char*>(data), size);
+  qrsim::TruthPush push;
+  std::string error;
+  if (!qrsim::parse_truth_command(line, push, error)) {
+    require(!error.empty());
+    return 0;
+  }
+  for (const double t : {push.torque.x, push.torque.y, push.torque.z}) require(std::isfinite(t) && std::fabs(t) <= 10);
+  require(std::isfinite(push.seconds) && push.seconds > 0 && push.seconds <= 10);
+  return 0;
+}
