@@ -1,6 +1,9 @@
-// The frame: 'M' (0x4D) · type · payload (fixed length for the type) · check.
-// The check is CRC-8/DVB-S2 over type and payload; the start byte is not covered (a damaged start
-// byte loses the frame, it cannot make a wrong one).
+// The frame: 'M' (0x4D) · type · payload (fixed length for the type) · [guard] · check.
+// The check is CRC-8/DVB-S2 over everything between the start byte and itself; the start byte is
+// not covered (a damaged start byte loses the frame, it cannot make a wrong one). The guard, on
+// the commanding requests only (MessageSpec::guarded), is CRC-24/OPENPGP over type and payload,
+// three bytes, least significant first: random bytes pass the check 1 time in 256, and a guarded
+// frame's check and guard together 1 time in 2^32 (docs/protocol.md, sections 2 and 10).
 #pragma once
 
 #include <stddef.h>
@@ -12,13 +15,30 @@ namespace wire {
 
 inline constexpr uint8_t kStartByte = 0x4D;   // 'M'
 inline constexpr uint8_t kFrameOverhead = 3;  // start, type, check
+inline constexpr uint8_t kGuardBytes = 3;     // the commanding requests' CRC-24
 
 // The longest payload for which the check still catches every 2-bit error: type + payload +
 // check must stay within 93 bits, the period of the polynomial's non-(x+1) factor (crc8.hpp).
 inline constexpr uint8_t kMaxPayloadBytes = 9;
 inline constexpr uint8_t kMaxFrameBytes = kMaxPayloadBytes + kFrameOverhead;
 
-// A received frame: its check has been verified and its type is in the table.
+// Bytes on the line for a message of this spec, start byte to check byte.
+constexpr uint8_t frame_length(const MessageSpec& spec) {
+  return static_cast<uint8_t>(spec.payload_length + kFrameOverhead + (spec.guarded ? kGuardBytes : 0));
+}
+
+// Every frame fits the longest, and the check still sees every 2-bit error in it (at most 88 bits
+// from the type byte to the check, crc8.hpp).
+constexpr bool frames_fit() {
+  for (const MessageSpec& spec : kMessageTable) {
+    if (spec.payload_length > kMaxPayloadBytes || frame_length(spec) > kMaxFrameBytes) return false;
+  }
+  return true;
+}
+static_assert(frames_fit(), "a frame longer than kMaxFrameBytes");
+
+// A received frame: its check (and guard) have been verified and its type is in the table. The
+// payload is the message's alone, without the guard.
 struct Frame {
   MessageType type = MessageType::control;
   uint8_t length = 0;

@@ -1,3 +1,4 @@
+#include <common/crc24.hpp>
 #include <common/crc8.hpp>
 #include <common/frame_parser.hpp>
 
@@ -22,11 +23,11 @@ bool FrameParser::advance() {
       continue;
     }
 
-    const uint8_t frame_length = static_cast<uint8_t>(spec->payload_length + kFrameOverhead);
-    if (length_ < frame_length) return false;
+    const uint8_t length = frame_length(*spec);
+    if (length_ < length) return false;
 
-    const uint8_t check_at = static_cast<uint8_t>(frame_length - 1);
-    if (crc8(&buffer_[1], check_at - 1u) != buffer_[check_at]) {
+    const uint8_t check_at = static_cast<uint8_t>(length - 1);
+    if (crc8(&buffer_[1], check_at - 1u) != buffer_[check_at] || !guard_holds(*spec)) {
       ++counters_.check_failures;
       discard(1, true);  // a real frame may start anywhere after this false 'M'
       continue;
@@ -36,10 +37,18 @@ bool FrameParser::advance() {
     frame_.length = spec->payload_length;
     for (uint8_t i = 0; i < kMaxPayloadBytes; ++i) frame_.payload[i] = i < spec->payload_length ? buffer_[2 + i] : 0;
     ++counters_.frames_ok;
-    discard(frame_length, false);
+    discard(length, false);
     return true;
   }
   return false;
+}
+
+// The kept frame's guard, when its type has one, is the CRC-24 of its type and payload.
+bool FrameParser::guard_holds(const MessageSpec& spec) const {
+  if (!spec.guarded) return true;
+  const uint8_t* guard = &buffer_[2 + spec.payload_length];
+  const uint32_t sent = guard[0] | static_cast<uint32_t>(guard[1]) << 8 | static_cast<uint32_t>(guard[2]) << 16;
+  return crc24(&buffer_[1], 1u + spec.payload_length) == sent;
 }
 
 void FrameParser::discard(uint8_t count, bool skipped) {

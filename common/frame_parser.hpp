@@ -51,6 +51,7 @@ class FrameParser {
 
  private:
   bool advance();
+  bool guard_holds(const MessageSpec& spec) const;
   void discard(uint8_t count, bool skipped);
 
   Listen listen_;

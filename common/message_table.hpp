@@ -62,31 +62,34 @@ struct MessageSpec {
   bool acked;              // re-sent until acknowledged; payload byte 0 is its sequence number
   Direction direction;
   const char* name;
+  // Commands what the vehicle does (its mode, its parameters, its logs, the firmware's end): the
+  // frame carries a 24-bit guard after the payload (frame.hpp), so noise cannot make one.
+  bool guarded;
 };
 
 inline constexpr MessageSpec kMessageTable[] = {
-    {MessageType::control, 8, false, Direction::pc_to_qr, "control"},
-    {MessageType::mode_change, 2, true, Direction::pc_to_qr, "mode_change"},
-    {MessageType::param_set, 6, true, Direction::pc_to_qr, "param_set"},
-    {MessageType::param_get, 2, true, Direction::pc_to_qr, "param_get"},
-    {MessageType::log_start, 2, true, Direction::pc_to_qr, "log_start"},
-    {MessageType::log_stop, 1, true, Direction::pc_to_qr, "log_stop"},
-    {MessageType::log_download, 6, true, Direction::pc_to_qr, "log_download"},
-    {MessageType::exit, 1, true, Direction::pc_to_qr, "exit"},
-    {MessageType::ack, 2, false, Direction::qr_to_pc, "ack"},
-    {MessageType::nack, 3, false, Direction::qr_to_pc, "nack"},
-    {MessageType::param_report, 5, false, Direction::qr_to_pc, "param_report"},
-    {MessageType::debug_text, 9, false, Direction::qr_to_pc, "debug_text"},
-    {MessageType::telemetry_attitude, 9, false, Direction::qr_to_pc, "telemetry_attitude"},
-    {MessageType::telemetry_rates, 6, false, Direction::qr_to_pc, "telemetry_rates"},
-    {MessageType::telemetry_engines, 8, false, Direction::qr_to_pc, "telemetry_engines"},
-    {MessageType::telemetry_setpoints, 8, false, Direction::qr_to_pc, "telemetry_setpoints"},
-    {MessageType::telemetry_system, 8, false, Direction::qr_to_pc, "telemetry_system"},
-    {MessageType::telemetry_link, 8, false, Direction::qr_to_pc, "telemetry_link"},
-    {MessageType::sensor_log_part, 9, false, Direction::qr_to_pc, "sensor_log_part"},
-    {MessageType::telemetry_log_part, 9, false, Direction::qr_to_pc, "telemetry_log_part"},
-    {MessageType::telemetry_task, 7, false, Direction::qr_to_pc, "telemetry_task"},
-    {MessageType::log_status, 7, false, Direction::qr_to_pc, "log_status"},
+    {MessageType::control, 8, false, Direction::pc_to_qr, "control", false},
+    {MessageType::mode_change, 2, true, Direction::pc_to_qr, "mode_change", true},
+    {MessageType::param_set, 6, true, Direction::pc_to_qr, "param_set", true},
+    {MessageType::param_get, 2, true, Direction::pc_to_qr, "param_get", false},
+    {MessageType::log_start, 2, true, Direction::pc_to_qr, "log_start", true},
+    {MessageType::log_stop, 1, true, Direction::pc_to_qr, "log_stop", true},
+    {MessageType::log_download, 6, true, Direction::pc_to_qr, "log_download", false},
+    {MessageType::exit, 1, true, Direction::pc_to_qr, "exit", true},
+    {MessageType::ack, 2, false, Direction::qr_to_pc, "ack", false},
+    {MessageType::nack, 3, false, Direction::qr_to_pc, "nack", false},
+    {MessageType::param_report, 5, false, Direction::qr_to_pc, "param_report", false},
+    {MessageType::debug_text, 9, false, Direction::qr_to_pc, "debug_text", false},
+    {MessageType::telemetry_attitude, 9, false, Direction::qr_to_pc, "telemetry_attitude", false},
+    {MessageType::telemetry_rates, 6, false, Direction::qr_to_pc, "telemetry_rates", false},
+    {MessageType::telemetry_engines, 8, false, Direction::qr_to_pc, "telemetry_engines", false},
+    {MessageType::telemetry_setpoints, 8, false, Direction::qr_to_pc, "telemetry_setpoints", false},
+    {MessageType::telemetry_system, 8, false, Direction::qr_to_pc, "telemetry_system", false},
+    {MessageType::telemetry_link, 8, false, Direction::qr_to_pc, "telemetry_link", false},
+    {MessageType::sensor_log_part, 9, false, Direction::qr_to_pc, "sensor_log_part", false},
+    {MessageType::telemetry_log_part, 9, false, Direction::qr_to_pc, "telemetry_log_part", false},
+    {MessageType::telemetry_task, 7, false, Direction::qr_to_pc, "telemetry_task", false},
+    {MessageType::log_status, 7, false, Direction::qr_to_pc, "log_status", false},
 };
 
 inline constexpr size_t kMessageCount = sizeof(kMessageTable) / sizeof(kMessageTable[0]);

@@ -90,7 +90,7 @@ class GroundStation {
     if (queue_.pending(Request::kType)) return;  // one at a time per type: each must arrive
     const FrameBytes frame = queue_.submit(request, now);
     submitted_[Request::kType].push_back(
-        RequestRecord{Request::kType, body_of(&frame.bytes[2], static_cast<uint8_t>(frame.size - 3))});
+        RequestRecord{Request::kType, body_of(&frame.bytes[2], message_spec(Request::kType)->payload_length)});
     uplink_.send(frame);
   }
 

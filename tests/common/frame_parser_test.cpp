@@ -79,21 +79,27 @@ TEST(FrameParser, FindsAFrameThatStartsInsideACutOffOne) {
 }
 
 TEST(FrameParser, OneByteCanCompleteSeveralFramesFoundByTheRescan) {
-  const auto stop = frame(LogStop{1});
-  const auto exit = frame(Exit{2});
-  // 'M' + control type, then two short frames, then one byte: 11 bytes, the length of a control
-  // frame. Pick the last byte so the would-be control frame fails its check.
-  std::vector<uint8_t> stream = concat({{kStartByte, type_byte(MessageType::control)}, stop, exit});
-  uint8_t last = 0;
-  while (crc8(&stream[1], stream.size() - 1) == last) ++last;
+  // 'M' + debug_text type, then two acks: 12 bytes, the length of a debug_text frame, complete
+  // with the second ack's last byte. Pick the second ack's seq so the would-be debug_text frame
+  // fails its check: that one byte then delivers both acks.
+  const auto first = frame(Ack{MessageType::exit, 1});
+  uint8_t seq = 0;
+  std::vector<uint8_t> stream;
+  for (;; ++seq) {
+    stream = concat({{kStartByte, type_byte(MessageType::debug_text)}, first, frame(Ack{MessageType::exit, seq})});
+    if (crc8(&stream[1], stream.size() - 2) != stream.back()) break;
+  }
+  ASSERT_EQ(stream.size(), kMaxFrameBytes);
 
   FrameParser parser(Listen::both);
-  for (uint8_t b : stream) parser.push(b, [](const Frame&) { ADD_FAILURE() << "too early"; });
+  for (size_t i = 0; i + 1 < stream.size(); ++i)
+    parser.push(stream[i], [](const Frame&) { ADD_FAILURE() << "too early"; });
   std::vector<Frame> frames;
-  parser.push(last, [&](const Frame& f) { frames.push_back(f); });
+  parser.push(stream.back(), [&](const Frame& f) { frames.push_back(f); });
   ASSERT_EQ(frames.size(), 2u);
-  EXPECT_EQ(frames[0].type, MessageType::log_stop);
-  EXPECT_EQ(frames[1].type, MessageType::exit);
+  EXPECT_EQ(frames[0].type, MessageType::ack);
+  EXPECT_EQ(frames[1].type, MessageType::ack);
+  EXPECT_EQ(frames[1].payload[1], seq);
 }
 
 TEST(FrameParser, NeverKeepsMoreThanOneFrameAndAccountsForEveryByte) {
@@ -108,7 +114,7 @@ TEST(FrameParser, NeverKeepsMoreThanOneFrameAndAccountsForEveryByte) {
                           ? type_byte(
                                 kMessageTable[std::uniform_int_distribution<size_t>(0, kMessageCount - 1)(rng)].type)
                           : static_cast<uint8_t>(rng());
-    parser.push(b, [&](const Frame& f) { bytes_in_frames += f.length + kFrameOverhead; });
+    parser.push(b, [&](const Frame& f) { bytes_in_frames += frame_length(*find_message(type_byte(f.type))); });
     ASSERT_LT(parser.buffered(), kMaxFrameBytes);
   }
   const LinkCounters& c = parser.counters();
@@ -158,4 +164,30 @@ TEST(FrameParser, AnIdleLineDropsTheRestOfAFrameWhoseSenderStopped) {
   EXPECT_EQ(parse_all(parser, frame(Exit{1})).size(), 1u);
   EXPECT_EQ(parser.counters().bytes_skipped, 6u);
   EXPECT_EQ(parser.counters().check_failures, 0u) << "nothing was mistaken for part of the cut-off frame";
+}
+
+// A commanding request whose check is right but whose guard is not is damage, not a request: noise
+// that passes the 8-bit check (1 time in 256) must pass the 24-bit guard too before the QR acts on
+// it. Every guarded type, every guard byte: dropped, counted as a check failure, and the next
+// frame still arrives.
+TEST(FrameParser, AGuardedRequestWithAWrongGuardIsDroppedAsDamaged) {
+  const std::vector<std::vector<uint8_t>> requests = {frame(ModeChange{3, Mode::manual}), frame(ParamSet{4, 1, 300}),
+                                                      frame(LogStart{5, kLogSensor}), frame(LogStop{6}),
+                                                      frame(Exit{7})};
+  for (const std::vector<uint8_t>& good : requests) {
+    const MessageSpec& spec = *find_message(good[1]);
+    ASSERT_TRUE(spec.guarded) << spec.name;
+    ASSERT_EQ(good.size(), frame_length(spec));
+    for (size_t k = 0; k < kGuardBytes; ++k) {
+      std::vector<uint8_t> bad = good;
+      bad[2 + spec.payload_length + k] ^= 0x5A;
+      bad.back() = crc8(&bad[1], bad.size() - 2);  // the check agrees with the damaged guard
+      FrameParser parser(Listen::pc_to_qr);
+      std::vector<Frame> frames;
+      for (uint8_t b : concat({bad, good})) parser.push(b, [&](const Frame& f) { frames.push_back(f); });
+      ASSERT_EQ(frames.size(), 1u) << spec.name << " guard byte " << k;
+      EXPECT_EQ(frames[0].type, spec.type);
+      EXPECT_GE(parser.counters().check_failures, 1u);
+    }
+  }
 }

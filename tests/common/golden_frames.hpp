@@ -61,13 +61,14 @@ inline std::vector<GoldenFrame> golden_frames() {
   text.fill("mode 2\n", 7);
   return {
       golden("G1", Control{500, -250, 100, 0}, "4D 11 F4 01 06 FF 64 00 00 00 98"),
-      golden("G2", ModeChange{7, Mode::manual}, "4D 12 07 02 84"),
-      golden("G3", ParamSet{3, static_cast<uint8_t>(ParamId::battery_panic_mv), 10500}, "4D 14 03 0A 04 29 00 00 5A"),
+      golden("G2", ModeChange{7, Mode::manual}, "4D 12 07 02 30 99 09 24"),
+      golden("G3", ParamSet{3, static_cast<uint8_t>(ParamId::battery_panic_mv), 10500},
+             "4D 14 03 0A 04 29 00 00 1C 01 F0 4B"),
       golden("G4", ParamGet{4, kAllParameters}, "4D 17 04 FF EF"),
-      golden("G5", LogStart{1, kLogSensor | kLogTelemetry}, "4D 18 01 03 5E"),
-      golden("G6", LogStop{2}, "4D 1B 02 8A"),
+      golden("G5", LogStart{1, kLogSensor | kLogTelemetry}, "4D 18 01 03 8C 4D 55 42"),
+      golden("G6", LogStop{2}, "4D 1B 02 CF 8D 92 82"),
       golden("G7", LogDownload{5, LogKind::telemetry, 120, 40}, "4D 1D 05 01 78 00 28 00 32"),
-      golden("G8", Exit{9}, "4D 1E 09 2E"),
+      golden("G8", Exit{9}, "4D 1E 09 93 6B 45 0C"),
       golden("G9", Ack{MessageType::mode_change, 7}, "4D 81 12 07 B9"),
       golden("G10", Nack{MessageType::mode_change, 8, NackReason::controls_not_neutral}, "4D 82 12 08 02 3C"),
       golden("G11", ParamReport{static_cast<uint8_t>(ParamId::battery_panic_mv), 10500}, "4D 84 0A 04 29 00 00 E1"),
@@ -86,8 +87,8 @@ inline std::vector<GoldenFrame> golden_frames() {
       golden("G23", TelemetryTask{7, 212, 530, 3}, "4D 99 07 D4 00 12 02 03 00 BB"),
       golden("G24", LogStatus{0x03, 1200, 1190, 2340}, "4D 9C 03 B0 04 A6 04 24 09 0E"),
       // The dedup's content rule (section 6): one seq, two requests.
-      golden("G25", ModeChange{17, Mode::manual}, "4D 12 11 02 0E"),
-      golden("G26", ModeChange{17, Mode::panic}, "4D 12 11 01 A4"),
+      golden("G25", ModeChange{17, Mode::manual}, "4D 12 11 02 17 31 A9 C5"),
+      golden("G26", ModeChange{17, Mode::panic}, "4D 12 11 01 E1 A8 A5 B2"),
       golden("G27", Ack{MessageType::mode_change, 17}, "4D 81 12 11 6A"),
   };
 }

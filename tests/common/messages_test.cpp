@@ -68,7 +68,7 @@ RoundTripCount round_trip_edges(uint32_t seed) {
     Msg message{};
     Msg::fields(message, filler);
     const FrameBytes bytes = encode(message);
-    EXPECT_EQ(bytes.size, message_spec(Msg::kType)->payload_length + kFrameOverhead);
+    EXPECT_EQ(bytes.size, frame_length(*message_spec(Msg::kType)));
     const std::vector<Frame> frames = wire_test::parse_all(wire_test::bytes_of(bytes));
     EXPECT_EQ(frames.size(), 1u);
     if (frames.size() != 1) return count;
@@ -138,7 +138,8 @@ TEST(Messages, FramingRefusesAPayloadOfTheWrongLength) {
   const uint8_t payload[3] = {1, 2, 3};
   EXPECT_EQ(make_frame(MessageType::mode_change, payload, 3).size, 0);
   EXPECT_EQ(make_frame(static_cast<MessageType>(0x00), payload, 0).size, 0);
-  EXPECT_EQ(make_frame(MessageType::mode_change, payload, 2).size, 5);
+  EXPECT_EQ(make_frame(MessageType::mode_change, payload, 2).size, 8) << "start, type, 2 bytes, guard, check";
+  EXPECT_EQ(make_frame(MessageType::param_get, payload, 2).size, 5) << "start, type, 2 bytes, check";
 }
 
 TEST(Messages, DebugTextCarriesALongLineAsNineCharacterPieces) {

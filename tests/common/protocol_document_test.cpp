@@ -49,7 +49,8 @@ std::string hex_byte(unsigned v) {
 TEST(ProtocolDocument, MessageTableMatchesTheCode) {
   std::vector<std::string> lines;
   const auto rows = rows_matching(
-      std::regex(R"(^\| (0x[0-9A-F]{2}) \| (\w+) \| (PC→QR|QR→PC) \| (\d+) \| (yes|no) \| (\d+) \|$)"), lines);
+      std::regex(R"(^\| (0x[0-9A-F]{2}) \| (\w+) \| (PC→QR|QR→PC) \| (\d+) \| (yes|no) \| (yes|no) \| (\d+) \|$)"),
+      lines);
   ASSERT_EQ(rows.size(), wire::kMessageCount);
   for (size_t i = 0; i < rows.size(); ++i) {
     const wire::MessageSpec& spec = wire::kMessageTable[i];
@@ -59,7 +60,8 @@ TEST(ProtocolDocument, MessageTableMatchesTheCode) {
     EXPECT_EQ(r[3].str(), spec.direction == wire::Direction::pc_to_qr ? "PC→QR" : "QR→PC") << spec.name;
     EXPECT_EQ(std::stoi(r[4].str()), spec.payload_length) << spec.name;
     EXPECT_EQ(r[5].str(), spec.acked ? "yes" : "no") << spec.name;
-    EXPECT_EQ(std::stoi(r[6].str()), spec.payload_length + 3) << spec.name;
+    EXPECT_EQ(r[6].str(), spec.guarded ? "yes" : "no") << spec.name;
+    EXPECT_EQ(std::stoi(r[7].str()), wire::frame_length(spec)) << spec.name;
   }
 }
 
@@ -130,7 +132,7 @@ long number_in(const std::string& text) {
   return std::stol(digits);
 }
 
-long frame_bytes(wire::MessageType type) { return wire::message_spec(type)->payload_length + wire::kFrameOverhead; }
+long frame_bytes(wire::MessageType type) { return wire::frame_length(*wire::message_spec(type)); }
 
 }  // namespace
 

@@ -1,5 +1,6 @@
-"""The wire as a devboard test script needs it (docs/protocol.md): frames, CRC-8/DVB-S2, a
-byte-stream reader, and the devboard process with a reader thread."""
+"""The wire as a devboard test script needs it (docs/protocol.md): frames, CRC-8/DVB-S2, the
+commanding requests' CRC-24 guard, a byte-stream reader, and the devboard process with a reader
+thread."""
 import os
 import signal
 import subprocess
@@ -13,6 +14,9 @@ ACK, NACK, TELEMETRY_ATTITUDE, TELEMETRY_SYSTEM = 0x81, 0x82, 0x88, 0x90
 PAYLOAD = {0x81: 2, 0x82: 3, 0x84: 5, 0x87: 9, 0x88: 9, 0x8B: 6, 0x8D: 8, 0x8E: 8, 0x90: 8,
            0x93: 8, 0x95: 9, 0x96: 9, 0x99: 7, 0x9C: 7}
 TELEMETRY_RATE_HZ = 7  # parameter id
+# The requests that carry a guard (docs/protocol.md, sections 2 and 3): mode_change, param_set,
+# log_start, log_stop, exit.
+GUARDED = {0x12, 0x14, 0x18, 0x1B, 0x1E}
 
 
 def crc8_dvb_s2(data):
@@ -24,8 +28,19 @@ def crc8_dvb_s2(data):
     return crc
 
 
+def crc24_openpgp(data):
+    crc = 0xB704CE
+    for byte in data:
+        crc ^= byte << 16
+        for _ in range(8):
+            crc = ((crc << 1) ^ 0x864CFB) & 0xFFFFFF if crc & 0x800000 else (crc << 1) & 0xFFFFFF
+    return crc
+
+
 def frame(msg_type, payload):
     body = bytes([msg_type]) + bytes(payload)
+    if msg_type in GUARDED:
+        body += crc24_openpgp(body).to_bytes(3, "little")
     return b"M" + body + bytes([crc8_dvb_s2(body)])
 
 

@@ -5,6 +5,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include <common/crc24.hpp>
 #include <common/crc8.hpp>
 #include <common/frame_parser.hpp>
 #include <common/messages.hpp>
@@ -24,7 +25,7 @@ struct ReEncode {
   template <wire::Message Msg>
   void operator()(const Msg& message) {
     const wire::FrameBytes bytes = wire::encode(message);
-    require(bytes.size == frame.length + wire::kFrameOverhead);
+    require(bytes.size == wire::frame_length(*wire::find_message(wire::type_byte(frame.type))));
     require(bytes.bytes[1] == wire::type_byte(frame.type));
     for (uint8_t i = 0; i < frame.length; ++i) require(bytes.bytes[2 + i] == frame.payload[i]);
   }
@@ -57,9 +58,15 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       uint8_t checked[1 + wire::kMaxPayloadBytes];
       checked[0] = wire::type_byte(frame.type);
       for (uint8_t k = 0; k < frame.length; ++k) checked[1 + k] = frame.payload[k];
-      const uint8_t check = wire::crc8(checked, 1u + frame.length);
-      require(wire::make_frame(frame.type, frame.payload, frame.length).bytes[2 + frame.length] == check);
-      bytes_in_frames += frame.length + wire::kFrameOverhead;
+      const wire::FrameBytes again = wire::make_frame(frame.type, frame.payload, frame.length);
+      require(again.size == wire::frame_length(*spec) &&
+              again.bytes[again.size - 1] == wire::crc8(&again.bytes[1], again.size - 2u));
+      if (spec->guarded) {  // the guard the parser accepted is the type's and payload's CRC-24
+        const uint32_t guard = wire::crc24(checked, 1u + frame.length);
+        for (uint8_t k = 0; k < wire::kGuardBytes; ++k)
+          require(again.bytes[2 + frame.length + k] == ((guard >> (8 * k)) & 0xFF));
+      }
+      bytes_in_frames += wire::frame_length(*wire::find_message(wire::type_byte(frame.type)));
 
       wire::dispatch(frame, ReEncode{frame, sensor, telemetry});
       const wire::Admission a = dedup.admit(frame, now_ms);

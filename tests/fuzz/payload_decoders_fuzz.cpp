@@ -28,7 +28,7 @@ int decoders_accepting(const wire::Frame& frame, wire::MessageList<Msgs...>) {
         ++accepting;
         require(Msgs::kType == frame.type);
         const wire::FrameBytes bytes = wire::encode(message);
-        require(bytes.size == frame.length + wire::kFrameOverhead);
+        require(bytes.size == wire::frame_length(*wire::find_message(wire::type_byte(frame.type))));
         for (uint8_t i = 0; i < frame.length; ++i) require(bytes.bytes[2 + i] == frame.payload[i]);
         Msgs again{};
         uint8_t payload[wire::kMaxPayloadBytes] = {};

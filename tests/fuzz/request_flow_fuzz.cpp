@@ -81,7 +81,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         if (last_sent[slot].size == 0) break;
         wire::Frame frame;
         frame.type = type;
-        frame.length = static_cast<uint8_t>(last_sent[slot].size - wire::kFrameOverhead);
+        frame.length = wire::find_message(wire::type_byte(type))->payload_length;
         for (uint8_t k = 0; k < frame.length; ++k) frame.payload[k] = last_sent[slot].bytes[2 + k];
         const wire::Admission adm = dedup.admit(frame, now);
         require(adm.request && adm.seq == frame.payload[0]);

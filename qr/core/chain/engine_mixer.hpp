@@ -33,21 +33,6 @@
 
 namespace qr::chain {
 
-// ceil(sqrt((k + 1) 2^16)) for k = 0..63: the engine root's seeds (EngineMixer below).
-struct ThrustRootSeeds {
-  uint16_t of[64];
-};
-constexpr ThrustRootSeeds make_thrust_root_seeds() {
-  ThrustRootSeeds t{};
-  for (uint32_t k = 0; k < 64; ++k) {
-    uint32_t r = 0;
-    while (r * r < (k + 1) << 16) ++r;
-    t.of[k] = static_cast<uint16_t>(r);
-  }
-  return t;
-}
-inline constexpr ThrustRootSeeds kThrustRootSeeds = make_thrust_root_seeds();
-
 template <class Thrust>
 struct Moments {
   Thrust roll{}, pitch{}, yaw{};
@@ -161,13 +146,14 @@ class EngineMixer {
   static constexpr Thrust kRootOf1000 = Thrust(31.62277660168379332);
 
   // floor(sqrt(n)) for n < 4^11 (4000 w <= 4e6: the clamp to [low, 1000] before the call keeps n
-  // there). In flight n is at least 2^16 (a thrust of 16.4 units, an engine at 128) and its top
-  // six bits k = n / 2^16 seed the root from above, at most 41 % high (k = 1), so two Newton steps
-  // and a check finish it: about a third of the general root's work, which must first find n's
-  // bit length.
+  // there). In flight n is at least 2^16 (a thrust of 16.4 units, an engine at 128), and its top
+  // six bits k = n / 2^16 seed the root from above: sqrt(n) < 256 sqrt(k + 1) <= 16 x the general
+  // root's seed for k (fixedpoint/sqrt.hpp), at most 41 % high (k = 1). Two Newton steps and a
+  // check finish it: about a third of the general root's work, which must first find n's bit
+  // length.
   static constexpr uint32_t isqrt_below_4_pow_11(uint32_t n) {
     if (n < (1u << 16)) return fx::detail::isqrt(n).root;
-    return fx::detail::root_from_above(n, kThrustRootSeeds.of[n >> 16]);
+    return fx::detail::root_from_above(n, static_cast<uint32_t>(fx::detail::kRootSeeds.of[n >> 16]) << 4);
   }
   // num / den for 0 <= num < den: the saturation's scale factor, in Q<30> (a Thrust quotient
   // would be quantised to 1.5e-5, and the realised moments with it: up to 0.008 thrust units

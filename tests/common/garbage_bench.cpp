@@ -1,0 +1,105 @@
+// Garbage that reaches the QR's receiver: how many frames random bytes make that it accepts, by
+// type, against what the arithmetic expects (docs/protocol.md section 10). Commanding requests
+// (mode changes, parameter sets, log start/stop, exit) must not come out of noise at any
+// practical rate: they carry a 24-bit guard besides the 8-bit check.
+//
+// usage: wire-garbage-bench [--bytes N] [--seed S] [--require-no-guarded]
+// Prints one JSON line: {"garbage_bytes": N, "accepted": {type: count, ...}, "accepted_guarded": G,
+// "expected_per_1e12_bytes": {"unguarded_type": E, "guarded_total": G}, "seconds": T}.
+// --require-no-guarded: exit 1 when any guarded frame was accepted.
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <map>
+#include <string>
+
+#include <common/frame_parser.hpp>
+
+namespace {
+
+// xorshift64*: fast, and the same bytes for the same seed everywhere.
+struct Noise {
+  uint64_t state;
+  uint64_t next() {
+    state ^= state >> 12;
+    state ^= state << 25;
+    state ^= state >> 27;
+    return state * 0x2545F4914F6CDD1DULL;
+  }
+};
+
+int usage(const char* why) {
+  if (why != nullptr) std::fprintf(stderr, "wire-garbage-bench: %s\n", why);
+  std::fprintf(why != nullptr ? stderr : stdout,
+               "usage: wire-garbage-bench [--bytes N] [--seed S] [--require-no-guarded]\n"
+               "  feeds N random bytes (default 1e8) to the QR's frame receiver and prints, as one JSON\n"
+               "  line, the frames it accepted by type and the rates the arithmetic expects\n");
+  return why != nullptr ? 2 : 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  double bytes_wanted = 1e8;
+  uint64_t seed = 1;
+  bool require_no_guarded = false;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--help" || a == "-h") return usage(nullptr);
+    if (a == "--require-no-guarded") {
+      require_no_guarded = true;
+    } else if ((a == "--bytes" || a == "--seed") && i + 1 < argc) {
+      char* end = nullptr;
+      const double v = std::strtod(argv[++i], &end);
+      if (*end != '\0' || !(v >= 1) || v > 1e13) return usage(("bad number for " + a).c_str());
+      if (a == "--bytes") bytes_wanted = v;
+      else seed = static_cast<uint64_t>(v);
+    } else {
+      return usage(("unknown argument '" + a + "'").c_str());
+    }
+  }
+  const uint64_t total = static_cast<uint64_t>(bytes_wanted);
+
+  wire::FrameParser parser(wire::Listen::pc_to_qr);
+  std::map<wire::MessageType, uint64_t> accepted;
+  Noise noise{seed * 0x9E3779B97F4A7C15ULL + 1};
+  const auto start = std::chrono::steady_clock::now();
+  for (uint64_t done = 0; done < total;) {
+    uint64_t word = noise.next();
+    for (int k = 0; k < 8 && done < total; ++k, ++done, word >>= 8) {
+      parser.push(static_cast<uint8_t>(word), [&](const wire::Frame& f) { ++accepted[f.type]; });
+    }
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  // A random position starts an accepted frame of one given type when its byte is 'M', the next
+  // is the type and the check matches: 2^-24 (a guarded type: 2^-48). Frames found by the re-scan
+  // after a false start are positions too, so this holds per byte received.
+  const double per_byte_unguarded = std::ldexp(1.0, -24);
+  const double per_byte_guarded = std::ldexp(1.0, -48);
+  uint64_t guarded_accepted = 0;
+  size_t guarded_types = 0;
+  std::printf("{\"garbage_bytes\": %llu, \"seed\": %llu, \"accepted\": {", static_cast<unsigned long long>(total),
+              static_cast<unsigned long long>(seed));
+  bool first = true;
+  for (const wire::MessageSpec& spec : wire::kMessageTable) {
+    if (spec.direction != wire::Direction::pc_to_qr) continue;
+    const uint64_t n = accepted.count(spec.type) != 0 ? accepted[spec.type] : 0;
+    if (spec.guarded) {
+      guarded_accepted += n;
+      ++guarded_types;
+    }
+    std::printf("%s\"%s\": %llu", first ? "" : ", ", spec.name, static_cast<unsigned long long>(n));
+    first = false;
+  }
+  std::printf(
+      "}, \"accepted_guarded\": %llu, \"expected_per_1e9_bytes\": {\"unguarded_type\": %.1f, "
+      "\"guarded_total\": %.3g}, \"expected_per_1e12_bytes\": {\"guarded_total\": %.3g}, \"seconds\": %.1f}\n",
+      static_cast<unsigned long long>(guarded_accepted), per_byte_unguarded * 1e9,
+      per_byte_guarded * 1e9 * static_cast<double>(guarded_types),
+      per_byte_guarded * 1e12 * static_cast<double>(guarded_types), seconds);
+  return require_no_guarded && guarded_accepted != 0 ? 1 : 0;
+}
