@@ -12,16 +12,8 @@ namespace wire {
 inline constexpr uint32_t kCrc24Polynomial = 0x864CFB;
 inline constexpr uint32_t kCrc24Init = 0xB704CE;
 
-// Bitwise: it runs only for the few frames that carry a guard, never per received byte.
-constexpr uint32_t crc24(const uint8_t* data, size_t length) {
-  uint32_t crc = kCrc24Init;
-  for (size_t i = 0; i < length; ++i) {
-    crc ^= static_cast<uint32_t>(data[i]) << 16;
-    for (int bit = 0; bit < 8; ++bit) {
-      crc = (crc & 0x800000u) != 0 ? (crc << 1) ^ kCrc24Polynomial : crc << 1;
-    }
-  }
-  return crc & 0xFFFFFFu;
-}
+// Bitwise (crc24.cpp): it runs only for the few frames that carry a guard, never per received
+// byte, and a table would cost the QR's image 1 KiB.
+uint32_t crc24(const uint8_t* data, size_t length);
 
 }  // namespace wire

@@ -6,7 +6,6 @@
 
 TEST(Crc24, CatalogueCheckValue) {
   static constexpr uint8_t text[] = {'1', '2', '3', '4', '5', '6', '7', '8', '9'};
-  static_assert(wire::crc24(text, sizeof text) == 0x21CF02);
   EXPECT_EQ(wire::crc24(text, sizeof text), 0x21CF02u);
   EXPECT_EQ(wire::crc24(text, 0), wire::kCrc24Init) << "nothing covered: the initial value";
 }
