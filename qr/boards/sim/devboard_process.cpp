@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <poll.h>
+#include <sys/prctl.h>
 #include <signal.h>
 #include <sys/socket.h>
 #include <sys/un.h>
@@ -81,6 +82,8 @@ bool DevboardProcess::start(const std::string& elf, std::string& error) {
   const std::string log_path = dir_ + "/qemu.log";
   pid_ = fork();
   if (pid_ == 0) {
+    // QEMU goes when we go, however we go: an orphaned board would spin on its link for ever.
+    prctl(PR_SET_PDEATHSIG, SIGKILL);
     const int null = open("/dev/null", O_RDONLY);
     const int log = open(log_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
     if (null >= 0) dup2(null, 0);

@@ -27,6 +27,7 @@ namespace {
 
 constexpr const char* kUsage = R"(usage:
   qrsim --serve [--stdio] [--seed N] [--vehicle FILE] [--seconds S] [--status] [--truth-fd N]
+        [--devboard [ELF]]
   qrsim --scenario NAME|FILE [--seconds S] [--seed N] [--vehicle FILE] [--param NAME=VALUE]...
         [--no-noise] [--trace FILE.csv] [--record FILE.csv] [--json] [--devboard [ELF]]
   qrsim --sweep NAME|FILE [--seeds N] [--no-draw] [--seed N] [--seconds S] [--vehicle FILE]
@@ -68,10 +69,10 @@ rate) flying in a simulated IN4073-class quadrotor.
   --record FILE    scenario: write the QR's sensor samples and sticks, from its first
                    calibration tick on, in the replay's input format (docs/replay.md)
   --json           scenario: print the figures as one JSON object on one line
-  --devboard [ELF] scenario: fly the cross-compiled firmware (default %s) on the
-                   emulated devboard (QEMU virt, riscv32) instead of the host build, in lock-step
-                   over the sensor link (docs/devboard.md); the figures add "firmware": "rv32" and
-                   the binary's instructions per tick and per task (instr_*)
+  --devboard [ELF] scenario, serve: fly the cross-compiled firmware (default %s)
+                   on the emulated devboard (QEMU virt, riscv32) instead of the host build, in
+                   lock-step over the sensor link (docs/devboard.md); a scenario's figures add
+                   "firmware": "rv32" and the binary's instructions per tick and task (instr_*)
   --replay IN      run a recording through the flight chain tick by tick (test mode) and write
                    every tick's estimates, controller outputs and engines to --out OUT
                    (docs/replay.md); --double runs the double-precision reference chain
@@ -226,6 +227,7 @@ int main(int argc, char** argv) {
       serve.truth_fd = truth_fd;
       serve.seconds = seconds;
       serve.seed = seed;
+      serve.devboard_elf = scenario.devboard_elf;
       serve.vehicle = vehicle ? *vehicle : sim::default_vehicle();
       return qrsim::serve(serve);
     case Command::sweep: {
