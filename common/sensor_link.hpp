@@ -64,7 +64,7 @@ struct EngineFrame {
   uint8_t mode = 0;
   uint32_t ground_bytes = 0;  // bytes the QR has written to its ground line so far (wraps)
   uint32_t deadline_misses = 0;
-  int16_t angles_e4[kAngles] = {};  // 1e-4 rad, in Angle order
+  int16_t angles_e4[kAngles] = {};   // 1e-4 rad, in Angle order
   int16_t yaw_rate_setpoint_e3 = 0;  // 1e-3 rad/s
   // One row of the scheduler's statistics (qr/core/cycle_stats.hpp, instructions; Stat order), a
   // different row each tick: rows 0 .. task count - 1 are the task table's, row `task count` the

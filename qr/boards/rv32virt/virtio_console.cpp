@@ -10,11 +10,11 @@ namespace {
 using map::reg;
 
 // virtio-mmio registers (offsets in the slot).
-constexpr uintptr_t kMagic = 0x000, kVersion = 0x004, kDeviceId = 0x008, kDriverFeatures = 0x020, kDriverFeaturesSel = 0x024,
-                    kQueueSel = 0x030, kQueueNum = 0x038, kQueueReady = 0x044,
-                    kQueueNotify = 0x050, kStatus = 0x070,
-                    kQueueDescLow = 0x080, kQueueDescHigh = 0x084, kQueueDriverLow = 0x090,
-                    kQueueDriverHigh = 0x094, kQueueDeviceLow = 0x0a0, kQueueDeviceHigh = 0x0a4;
+constexpr uintptr_t kMagic = 0x000, kVersion = 0x004, kDeviceId = 0x008, kDriverFeatures = 0x020,
+                    kDriverFeaturesSel = 0x024, kQueueSel = 0x030, kQueueNum = 0x038, kQueueReady = 0x044,
+                    kQueueNotify = 0x050, kStatus = 0x070, kQueueDescLow = 0x080, kQueueDescHigh = 0x084,
+                    kQueueDriverLow = 0x090, kQueueDriverHigh = 0x094, kQueueDeviceLow = 0x0a0,
+                    kQueueDeviceHigh = 0x0a4;
 constexpr uint32_t kMagicValue = 0x74726976;  // "virt"
 constexpr uint32_t kConsoleDevice = 3;
 constexpr uint32_t kStatusAcknowledge = 1, kStatusDriver = 2, kStatusDriverOk = 4, kStatusFeaturesOk = 8;

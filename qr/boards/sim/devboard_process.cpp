@@ -2,8 +2,8 @@
 
 #include <fcntl.h>
 #include <poll.h>
-#include <sys/prctl.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/socket.h>
 #include <sys/un.h>
 #include <sys/wait.h>
@@ -75,10 +75,9 @@ bool DevboardProcess::start(const std::string& elf, std::string& error) {
       // Instructions counted exactly; no virtual clock to keep: the simulator stamps the time.
       "-icount", "shift=0,sleep=off",
       // The modern virtio-mmio interface (version 2), the one the board's driver speaks.
-      "-global", "virtio-mmio.force-legacy=false",
-      "-chardev", "socket,id=ground,path=" + ground_path, "-serial", "chardev:ground",
-      "-chardev", "socket,id=link,path=" + link_path, "-device", "virtio-serial-device",
-      "-device", "virtconsole,chardev=link", "-kernel", elf};
+      "-global", "virtio-mmio.force-legacy=false", "-chardev", "socket,id=ground,path=" + ground_path, "-serial",
+      "chardev:ground", "-chardev", "socket,id=link,path=" + link_path, "-device", "virtio-serial-device", "-device",
+      "virtconsole,chardev=link", "-kernel", elf};
   const std::string log_path = dir_ + "/qemu.log";
   pid_ = fork();
   if (pid_ == 0) {

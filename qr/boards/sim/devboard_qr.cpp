@@ -60,7 +60,8 @@ void DevboardQr::follow_pilot(uint8_t byte) {
     wire::ParamSet set;
     wire::Control control;
     if (wire::decode(frame, set)) parameters_.set(set.id, set.value);
-    if (wire::decode(frame, control)) view_.controls = qr::ControlInput{control.lift, control.roll, control.pitch, control.yaw};
+    if (wire::decode(frame, control))
+      view_.controls = qr::ControlInput{control.lift, control.roll, control.pitch, control.yaw};
   });
 }
 

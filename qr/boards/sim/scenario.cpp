@@ -10,12 +10,12 @@
 #include <ctime>
 #include <numbers>
 
+#include <common/task_names.hpp>
+#include <qr/boards/sim/devboard_qr.hpp>
 #include <qr/boards/sim/flight_record.hpp>
+#include <qr/boards/sim/flying_qr.hpp>
 #include <qr/boards/sim/pilot.hpp>
 #include <qr/boards/sim/scenario_score.hpp>
-#include <qr/boards/sim/devboard_qr.hpp>
-#include <qr/boards/sim/flying_qr.hpp>
-#include <common/task_names.hpp>
 #include <qr/host/replay.hpp>
 
 namespace qrsim {
@@ -167,10 +167,9 @@ void write_trace_line(FILE* trace, double t, uint8_t mode, FlyingQr& qr) {
                "%.3f,%u,%.4f,%.4f,%.4f,%.4f,%.4f,%s,%.4f,%.4f,%.4f,%.4f,%.4f,%s,%s,%s,%u,%u,%u,%u,%.3f,%."
                "3f,%.3f,%.3f,%d,%d,%s\n",
                t, mode, e.roll * kDeg, e.pitch * kDeg, e.yaw * kDeg, ch.roll_e4 * 1e-4 * kDeg,
-               ch.pitch_e4 * 1e-4 * kDeg, yaw, ch.roll_setpoint_e4 * 1e-4 * kDeg,
-               ch.pitch_setpoint_e4 * 1e-4 * kDeg, ps.rate.x, ps.rate.y, ps.rate.z, p, q, r, eng.value[0],
-               eng.value[1], eng.value[2], eng.value[3], -ps.position.z, ps.position.x, ps.position.y,
-               plant.battery_volts(), ch.roll_e4, ch.pitch_e4, yaw_e4);
+               ch.pitch_e4 * 1e-4 * kDeg, yaw, ch.roll_setpoint_e4 * 1e-4 * kDeg, ch.pitch_setpoint_e4 * 1e-4 * kDeg,
+               ps.rate.x, ps.rate.y, ps.rate.z, p, q, r, eng.value[0], eng.value[1], eng.value[2], eng.value[3],
+               -ps.position.z, ps.position.x, ps.position.y, plant.battery_volts(), ch.roll_e4, ch.pitch_e4, yaw_e4);
 }
 
 // One control period of the record, from t0 on.
