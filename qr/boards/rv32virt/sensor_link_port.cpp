@@ -1,6 +1,5 @@
 #include <qr/boards/rv32virt/sensor_link_port.hpp>
 
-#include <common/link_timing.hpp>
 
 namespace rv32virt {
 
@@ -21,14 +20,6 @@ const simlink::SensorFrame* SensorLinkPort::take_kick(uint32_t ground_received) 
 void SensorLinkPort::send_engines(const simlink::EngineFrame& frame) {
   const simlink::LinkFrameBytes bytes = simlink::encode(frame);
   console_.send(bytes.bytes, bytes.size);
-}
-
-bool PacedTransmitter::accept(uint64_t now_ns) {
-  // ceil((line_free - now) / byte time) bytes are in flight: full at kCapacity of them.
-  if (line_free_ns_ > now_ns && line_free_ns_ - now_ns > (kCapacity - 1) * uint64_t{wire::kLineByteTimeNs})
-    return false;
-  line_free_ns_ = (line_free_ns_ > now_ns ? line_free_ns_ : now_ns) + wire::kLineByteTimeNs;
-  return true;
 }
 
 }  // namespace rv32virt

@@ -1,6 +1,7 @@
 #include <qr/boards/rv32virt/virt_board.hpp>
 
 #include <common/byte_ring.hpp>
+#include <qr/boards/rv32virt/paced_transmitter.hpp>
 #include <qr/boards/rv32virt/sensor_link_port.hpp>
 #include <qr/boards/rv32virt/virt_map.hpp>
 
