@@ -16,6 +16,12 @@ inline constexpr uint32_t kGiveUpAfterMs = kResendIntervalMs * kMaxSends;  // 1 
 // same sequence numbers is not mistaken for a resend for long.
 inline constexpr uint32_t kDedupWindowMs = 2 * kGiveUpAfterMs;
 
+// The serial line: 115200 baud, 8N1, ten bit times a byte; a byte is through when its stop bit
+// is, 86 806 ns after its start bit (rounded to the ns; 0.0005 % off, nothing over any flight).
+// The simulator's line and the devboard's paced transmitter both count in this.
+inline constexpr uint32_t kLineBaud = 115200;
+inline constexpr uint32_t kLineByteTimeNs = static_cast<uint32_t>((10ull * 1000000000ull + kLineBaud / 2) / kLineBaud);
+
 // `now` is at or after `then`, for wrapping millisecond counters less than 2^31 ms apart.
 constexpr bool reached(uint32_t now, uint32_t then) { return now - then < 0x80000000u; }
 

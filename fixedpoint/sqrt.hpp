@@ -56,7 +56,7 @@ constexpr uint32_t root_from_above(uint32_t n, uint32_t x) {
 // per step, costs RV32IM about 110 instructions): a seed from n's top 5-6 bits, at most 25 % high
 // below n = 64 and 3 % high above, finished from above. Exact for every n (checked once by hand
 // over all 2^32; tests/fixedpoint/sqrt_test.cpp checks every root's edges).
-constexpr RootAndRemainder<uint32_t> isqrt(uint32_t n) {
+[[gnu::noinline]] constexpr RootAndRemainder<uint32_t> isqrt(uint32_t n) {
   if (n == 0) return {0, 0};
   // n = m 4^h + rest with m in [16, 64), or m = n below 64.
   const int length = bit_length(n);
@@ -72,7 +72,9 @@ constexpr RootAndRemainder<uint32_t> isqrt(uint32_t n) {
 // 2^(s+1)) adds the rest with a single 32-bit divide, and a check of r^2 against n corrects
 // the last unit. (The Newton step from below overshoots by less than 2^s / (2 m0) <= 1/2 and
 // the truncations undershoot by less than one, so one correction step each way suffices.)
-constexpr RootAndRemainder<uint64_t> isqrt(uint64_t n) {
+// Both roots are out of line: inlined (and unrolled) into each caller they cost the 64 KiB
+// image kilobytes, for the few instructions of a call.
+[[gnu::noinline]] constexpr RootAndRemainder<uint64_t> isqrt(uint64_t n) {
   const uint32_t high = static_cast<uint32_t>(n >> 32);
   if (high == 0) {
     const auto r = isqrt(static_cast<uint32_t>(n));

@@ -40,7 +40,7 @@ TEST(QrFilter, PrintsTheFlightTableEntry) {
   EXPECT_TRUE(r.err.empty());
   const auto& c = chain::ButterworthTable<chain::FixedNumbers::Coefficient, 2, 1000>::for_cutoff(20);
   const std::string expected_b = "[" + std::to_string(c.b0.raw()) + ", " + std::to_string(c.b1.raw()) + ", " +
-                                 std::to_string(c.b2.raw()) + "]";
+                                 std::to_string(c.b2().raw()) + "]";
   const std::string expected_a = "[1073741824, " + std::to_string(c.a1.raw()) + ", " + std::to_string(c.a2.raw()) + "]";
   EXPECT_NE(r.out.find("\"quantised\": {\"frac_bits\": 30, \"b\": " + expected_b + ", \"a\": " + expected_a + "}"),
             std::string::npos)

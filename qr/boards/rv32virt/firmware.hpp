@@ -15,7 +15,9 @@ int run_firmware() {
   static VirtBoard board(qr::kControlHz);
   static qr::Flight<Chain> flight(board.log_area());
   static qr::Scheduler<VirtBoard, qr::Flight<Chain>> scheduler(board, flight);
-  scheduler.run_until_stopped();
+  board.attach_statistics(scheduler.stats().task, qr::Flight<Chain>::kTaskCount, &scheduler.stats().tick);
+  // On the sensor link every tick is answered with its engines (lock-step with the simulator).
+  while (scheduler.tick()) board.answer(flight, scheduler.stats().deadline_misses);
   return 0;
 }
 

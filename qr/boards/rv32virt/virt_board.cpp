@@ -1,6 +1,8 @@
 #include <qr/boards/rv32virt/virt_board.hpp>
 
 #include <common/byte_ring.hpp>
+#include <qr/boards/rv32virt/paced_transmitter.hpp>
+#include <qr/boards/rv32virt/sensor_link_port.hpp>
 #include <qr/boards/rv32virt/virt_map.hpp>
 
 namespace rv32virt {
@@ -16,12 +18,16 @@ constexpr uint32_t kMieTimer = 1u << 7, kMieExternal = 1u << 11, kMstatusMie = 1
 // single-consumer (the main loop); its counters are word-sized, so neither sees a torn update.
 wire::ByteRing<256> g_rx;
 volatile uint32_t g_rx_overruns = 0;
+volatile uint32_t g_rx_bytes = 0;  // every byte the UART received, ring or overrun: the link counts them
 volatile uint32_t g_kicks = 0;
 volatile uint32_t g_kick_time_us = 0;   // time of the last kick, µs, wraps like now_us
 volatile uint32_t g_kick_mtime_lo = 0;  // mtime (low word) of the last kick
 uint64_t g_next_kick_mtime = 0;
 uint32_t g_period_ticks = 0;
 uint32_t g_period_us = 0;
+
+SensorLinkPort g_link;  // the sensor link, when QEMU has it
+PacedTransmitter g_ground_tx;
 
 // 256 KiB: 3640 lines in each log, 36 s of flight at the default 100 lines a second.
 uint8_t g_log_memory[256 * 1024];
@@ -46,7 +52,6 @@ void write_mtimecmp(uint64_t t) {
 void set_csr_mie(uint32_t bits) { asm volatile("csrs mie, %0" ::"r"(bits)); }
 void enable_interrupts() { asm volatile("csrs mstatus, %0" ::"r"(kMstatusMie)); }
 void disable_interrupts() { asm volatile("csrc mstatus, %0" ::"r"(kMstatusMie)); }
-
 }  // namespace
 }  // namespace rv32virt
 
@@ -66,6 +71,7 @@ extern "C" void rv32virt_external_interrupt() {
     volatile uint8_t* uart = &reg<uint8_t>(map::kUart);
     while ((uart[kUartLsr] & kLsrDataReady) != 0) {
       if (!g_rx.push(uart[kUartRbr])) g_rx_overruns = g_rx_overruns + 1;
+      g_rx_bytes = g_rx_bytes + 1;
     }
   }
   reg<uint32_t>(map::kPlicClaim) = source;  // complete
@@ -85,6 +91,19 @@ VirtBoard::VirtBoard(uint32_t control_hz) : recording_(reinterpret_cast<const ui
   reg<uint32_t>(map::kPlicEnable) = 1u << map::kUartIrq;
   reg<uint32_t>(map::kPlicThreshold) = 0;
 
+  linked_ = g_link.start();
+  if (linked_) {
+    // The simulator's frames are the kick: no timer (and no timer deadline for QEMU's -icount
+    // to jump to while the board waits).
+    write_mtimecmp(0xFFFFFFFFFFFFFFFFull);
+    set_csr_mie(kMieExternal);
+    enable_interrupts();
+    // Ready: an engines frame for kick 0 tells the simulator that the UART is set up, so the
+    // ground bytes it sends from now on are all counted.
+    g_link.send_engines(simlink::EngineFrame{});
+    return;
+  }
+
   const uint64_t now = read_mtime();
   g_kick_mtime_lo = static_cast<uint32_t>(now);
   g_next_kick_mtime = now + g_period_ticks;
@@ -94,7 +113,33 @@ VirtBoard::VirtBoard(uint32_t control_hz) : recording_(reinterpret_cast<const ui
   first_kick_ = g_kicks;
 }
 
-uint32_t VirtBoard::wait_kick(uint32_t seen) {
+uint32_t VirtBoard::wait_kick([[maybe_unused]] uint32_t seen) {
+  if (linked_) {
+    // Lock-step: wait for the simulator's next sensors frame and the ground bytes it counts. The
+    // link is polled, not interrupt-driven: with its virtio interrupt and wfi, a frame QEMU had
+    // delivered now and then left the board asleep (a lost wake-up, about once in a few hundred
+    // ticks). Polling costs the host CPU while the board waits, and the firmware nothing: the
+    // wait is before the tick's count starts.
+    for (;;) {
+      disable_interrupts();
+      // In lock-step every frame is the next kick: no check against `seen` is needed.
+      if (const simlink::SensorFrame* frame = g_link.take_kick(g_rx_bytes)) {
+        enable_interrupts();
+        kick_ = frame->kick;
+        time_ns_ += static_cast<uint64_t>(frame->time_us - time_us_) * 1000u;
+        time_us_ = frame->time_us;
+        for (int axis = 0; axis < 3; ++axis) {
+          sample_.gyro[axis] = frame->gyro[axis];
+          sample_.accel[axis] = frame->accel[axis];
+        }
+        sample_.battery_mv = frame->battery_mv;
+        sample_.pressure_pa = frame->pressure_pa;
+        return kick_;
+      }
+      g_link.poll();
+      enable_interrupts();  // the ground UART's bytes come in meanwhile
+    }
+  }
   // Spin rather than wfi: under QEMU -icount an idle CPU's time is taken from the host clock, so
   // a host that wakes QEMU late hands the firmware a late kick (the 60 s run saw ~1.5 deadline
   // misses a second that way, with no tick longer than half a period). Spinning keeps the board's
@@ -107,9 +152,12 @@ uint32_t VirtBoard::wait_kick(uint32_t seen) {
   }
 }
 
-uint32_t VirtBoard::kicks() const { return g_kicks; }
+// On the link, the kick flown now: in lock-step no frame comes while a tick runs, and one that
+// came before the scheduler started must not count as seen.
+uint32_t VirtBoard::kicks() const { return linked_ ? kick_ : g_kicks; }
 
 uint32_t VirtBoard::now_us() const {
+  if (linked_) return time_us_;  // stands still while a tick runs, as in the host simulator
   disable_interrupts();
   const uint32_t base_us = g_kick_time_us;
   const uint32_t base_mtime = g_kick_mtime_lo;
@@ -120,6 +168,7 @@ uint32_t VirtBoard::now_us() const {
 
 
 qr::SensorSample VirtBoard::read_sensors() const {
+  if (linked_) return sample_;
   if (!recording_.valid()) {
     qr::SensorSample level;  // at rest, level: the accelerometer feels 1 g upwards
     level.accel[2] = -8192;
@@ -148,6 +197,10 @@ bool VirtBoard::serial_read(uint8_t& byte) {
 bool VirtBoard::serial_write(uint8_t byte) {
   volatile uint8_t* uart = &reg<uint8_t>(map::kUart);
   if ((uart[kUartLsr] & kLsrThrEmpty) == 0) return false;
+  if (linked_) {
+    if (!g_ground_tx.accept(time_ns_)) return false;
+    ++ground_sent_;
+  }
   uart[kUartThr] = byte;
   return true;
 }
@@ -155,6 +208,17 @@ bool VirtBoard::serial_write(uint8_t byte) {
 qr::LogArea VirtBoard::log_area() { return {g_log_memory, sizeof g_log_memory}; }
 
 uint32_t VirtBoard::rx_overruns() const { return g_rx_overruns; }
+
+void VirtBoard::send_engines(simlink::EngineFrame& frame) {
+  if (task_stats_ != nullptr) {
+    const uint8_t row = static_cast<uint8_t>(kick_ % (task_count_ + 1u));
+    const qr::CycleStats& s = row == task_count_ ? *tick_stats_ : task_stats_[row];
+    frame.stats_row = row;
+    frame.stats[frame.count] = s.count, frame.stats[frame.max] = s.max, frame.stats[frame.overruns] = s.overruns;
+    frame.stats[frame.sum_low] = s.sum_low, frame.stats[frame.sum_high] = s.sum_high;
+  }
+  g_link.send_engines(frame);
+}
 
 static_assert(qr::Board<VirtBoard>);
 

@@ -1,19 +1,27 @@
-// The flight computer's board on QEMU `virt`: the CLINT timer interrupt is the kick, the UART
-// receives by interrupt into a ring and transmits a bounded number of bytes per tick, sensor
-// samples come from a recording in memory (or a vehicle resting level when there is none).
+// The flight computer's board on QEMU `virt`. Two ways to run, chosen at start by what QEMU has
+// plugged in:
+//   on its own: the CLINT timer interrupt is the kick, sensor samples come from a recording in
+//     memory (or a vehicle resting level when there is none);
+//   on the sensor link (a virtio console, docs/devboard.md): the simulator's sensors frame is
+//     the kick, its time stamp the clock and its samples the sensors, and the board answers each
+//     tick with its engines (answer()): lock-step with the simulated plant.
+// Either way the ground link is the 16550 UART: received by interrupt into a ring, transmitted a
+// bounded number of bytes per tick (on the link, at the line's pace, PacedTransmitter).
 #pragma once
 
 #include <stdint.h>
 
+#include <common/sensor_link.hpp>
 #include <qr/boards/rv32virt/devboard.hpp>
 #include <qr/boards/rv32virt/recording.hpp>
 #include <qr/core/board.hpp>
+#include <qr/core/cycle_stats.hpp>
 
 namespace rv32virt {
 
 class VirtBoard {
  public:
-  // Starts the kick at `control_hz` and the UART receive interrupt.
+  // Starts the kick at `control_hz` (or the sensor link) and the UART receive interrupt.
   explicit VirtBoard(uint32_t control_hz);
 
   uint32_t wait_kick(uint32_t seen);
@@ -33,11 +41,54 @@ class VirtBoard {
   const Recording& recording() const { return recording_; }
   uint32_t rx_overruns() const;
 
+  // ---- the sensor link ----
+  bool on_sensor_link() const { return linked_; }
+  // Where the scheduler keeps its statistics, reported to the simulator a row a tick.
+  void attach_statistics(const qr::CycleStats* tasks, uint8_t task_count, const qr::CycleStats* tick) {
+    task_stats_ = tasks;
+    task_count_ = task_count;
+    tick_stats_ = tick;
+  }
+  // After each tick: on the link, the engines frame for the tick's kick, with what the
+  // simulator scores the flight on (the mode, estimate and set-points); else nothing.
+  // Out of line and small: it runs after the tick, outside what the scheduler measures, and the
+  // image has little room.
+  template <class Flight>
+  [[gnu::noinline, gnu::optimize("Os")]] void answer(const Flight& flight, uint32_t deadline_misses) {
+    if (!linked_) return;
+    simlink::EngineFrame f;
+    f.kick = kick_;
+    for (int i = 0; i < 4; ++i) f.engines[i] = engines_.value[i];
+    f.mode = static_cast<uint8_t>(flight.mode());
+    f.ground_bytes = ground_sent_;
+    f.deadline_misses = deadline_misses;
+    const auto& chain = flight.chain();
+    f.angles_e4[f.roll_estimate] = chain.roll_e4();
+    f.angles_e4[f.pitch_estimate] = chain.pitch_e4();
+    f.angles_e4[f.roll_setpoint] = chain.roll_setpoint_e4();
+    f.angles_e4[f.pitch_setpoint] = chain.pitch_setpoint_e4();
+    f.yaw_rate_setpoint_e3 = chain.yaw_rate_setpoint_e3();
+    send_engines(f);
+  }
+
  private:
+  // Adds this tick's row of the statistics and sends the frame.
+  void send_engines(simlink::EngineFrame& frame);
+
   Recording recording_;
   uint32_t first_kick_ = 0;
   qr::EngineCommand engines_;
   uint8_t leds_ = 0;
+
+  bool linked_ = false;
+  uint32_t kick_ = 0;         // on the link: the kick of the sensors frame flown now
+  uint32_t time_us_ = 0;      // its time stamp
+  uint64_t time_ns_ = 0;      // the same, not wrapping, for the paced transmitter
+  qr::SensorSample sample_;   // its samples
+  uint32_t ground_sent_ = 0;  // bytes written to the UART
+  const qr::CycleStats* task_stats_ = nullptr;
+  const qr::CycleStats* tick_stats_ = nullptr;
+  uint8_t task_count_ = 0;
 };
 
 }  // namespace rv32virt

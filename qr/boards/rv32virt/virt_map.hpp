@@ -21,6 +21,11 @@ inline constexpr uintptr_t kPlicClaim = kPlic + 0x200004u;
 inline constexpr uintptr_t kUart = 0x10000000u;
 inline constexpr uint32_t kUartIrq = 10;
 
+// virtio-mmio: eight slots of 4 KiB (the sensor link's console is on whichever slot QEMU put it).
+inline constexpr uintptr_t kVirtio = 0x10001000u;
+inline constexpr uintptr_t kVirtioSlotBytes = 0x1000u;
+inline constexpr uint32_t kVirtioSlots = 8;
+
 // Where scripts/devboard has QEMU's generic loader put a sensor recording (RAM starts at
 // 0x8000'0000; the program and its stack stay below 1 MiB).
 inline constexpr uintptr_t kRecording = 0x80400000u;

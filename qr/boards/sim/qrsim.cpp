@@ -27,8 +27,9 @@ namespace {
 
 constexpr const char* kUsage = R"(usage:
   qrsim --serve [--stdio] [--seed N] [--vehicle FILE] [--seconds S] [--status] [--truth-fd N]
+        [--devboard [ELF]]
   qrsim --scenario NAME|FILE [--seconds S] [--seed N] [--vehicle FILE] [--param NAME=VALUE]...
-        [--no-noise] [--trace FILE.csv] [--record FILE.csv] [--json]
+        [--no-noise] [--trace FILE.csv] [--record FILE.csv] [--json] [--devboard [ELF]]
   qrsim --sweep NAME|FILE [--seeds N] [--no-draw] [--seed N] [--seconds S] [--vehicle FILE]
         [--param NAME=VALUE]...
   qrsim --replay IN.csv --out OUT.csv [--double]
@@ -68,6 +69,10 @@ rate) flying in a simulated IN4073-class quadrotor.
   --record FILE    scenario: write the QR's sensor samples and sticks, from its first
                    calibration tick on, in the replay's input format (docs/replay.md)
   --json           scenario: print the figures as one JSON object on one line
+  --devboard [ELF] scenario, serve: fly the cross-compiled firmware (default %s)
+                   on the emulated devboard (QEMU virt, riscv32) instead of the host build, in
+                   lock-step over the sensor link (docs/devboard.md); a scenario's figures add
+                   "firmware": "rv32" and the binary's instructions per tick and task (instr_*)
   --replay IN      run a recording through the flight chain tick by tick (test mode) and write
                    every tick's estimates, controller outputs and engines to --out OUT
                    (docs/replay.md); --double runs the double-precision reference chain
@@ -129,6 +134,10 @@ int main(int argc, char** argv) {
         return usage_error("--truth-fd " + std::string(v) + " is not an open descriptor");
     } else if (arg == "--json") {
       json = true;
+    } else if (arg == "--devboard") {
+      // The ELF is optional: the next argument is it unless it is another option.
+      scenario.devboard_elf = QR_DEVBOARD_ELF;
+      if (i + 1 < argc && argv[i + 1][0] != '-') scenario.devboard_elf = argv[++i];
     } else if (arg == "--no-noise") {
       scenario.sensor_noise = false;
     } else if (arg == "--scenario" || arg == "--sweep") {
@@ -196,7 +205,7 @@ int main(int argc, char** argv) {
   switch (command) {
     case Command::none:
     case Command::help:
-      std::printf(kUsage, static_cast<unsigned>(qr::kControlHz));
+      std::printf(kUsage, static_cast<unsigned>(qr::kControlHz), QR_DEVBOARD_ELF);
       return command == Command::help ? 0 : 2;
     case Command::replay:
       if (replay_out.empty()) return usage_error("--replay needs --out OUT.csv");
@@ -218,9 +227,11 @@ int main(int argc, char** argv) {
       serve.truth_fd = truth_fd;
       serve.seconds = seconds;
       serve.seed = seed;
+      serve.devboard_elf = scenario.devboard_elf;
       serve.vehicle = vehicle ? *vehicle : sim::default_vehicle();
       return qrsim::serve(serve);
     case Command::sweep: {
+      if (!scenario.devboard_elf.empty()) return usage_error("--devboard goes with --scenario");
       scenario.seconds = seconds;
       scenario.seed = seed;
       scenario.vehicle = vehicle;

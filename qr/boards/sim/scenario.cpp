@@ -10,10 +10,12 @@
 #include <ctime>
 #include <numbers>
 
+#include <common/task_names.hpp>
+#include <qr/boards/sim/devboard_qr.hpp>
 #include <qr/boards/sim/flight_record.hpp>
+#include <qr/boards/sim/flying_qr.hpp>
 #include <qr/boards/sim/pilot.hpp>
 #include <qr/boards/sim/scenario_score.hpp>
-#include <qr/boards/sim/sim_qr.hpp>
 #include <qr/host/replay.hpp>
 
 namespace qrsim {
@@ -145,33 +147,41 @@ void write_trace_header(FILE* trace) {
                "height_m,north_m,east_m,battery_v,roll_est_e4,pitch_est_e4,yaw_est_e4\n");
 }
 
-void write_trace_line(FILE* trace, double t, uint8_t mode, SimQr& qr) {
-  const sim::Quadrotor& plant = qr.world.plant();
+// The devboard's frames carry no yaw estimate or estimated rates (FirmwareView::has_rates): its
+// trace leaves those columns empty.
+void write_trace_line(FILE* trace, double t, uint8_t mode, FlyingQr& qr) {
+  const sim::Quadrotor& plant = qr.world().plant();
   const sim::PlantState& ps = plant.state();
   const sim::Euler e = sim::to_euler(ps.attitude);
-  const auto& ch = qr.firmware.chain();
-  const qr::EngineCommand& eng = qr.board.engines();
+  const FirmwareView ch = qr.view();
+  const qr::EngineCommand& eng = qr.board().engines();
+  char yaw[16] = "", p[16] = "", q[16] = "", r[16] = "", yaw_e4[16] = "";
+  if (ch.has_rates) {
+    std::snprintf(yaw, sizeof yaw, "%.4f", ch.yaw_e4 * 1e-4 * kDeg);
+    std::snprintf(p, sizeof p, "%.4f", ch.p_e3 * 1e-3);
+    std::snprintf(q, sizeof q, "%.4f", ch.q_e3 * 1e-3);
+    std::snprintf(r, sizeof r, "%.4f", ch.r_e3 * 1e-3);
+    std::snprintf(yaw_e4, sizeof yaw_e4, "%d", ch.yaw_e4);
+  }
   std::fprintf(trace,
-               "%.3f,%u,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%u,%u,%u,%u,%.3f,%."
-               "3f,%.3f,%.3f,%d,%d,%d\n",
-               t, mode, e.roll * kDeg, e.pitch * kDeg, e.yaw * kDeg, ch.roll_e4() * 1e-4 * kDeg,
-               ch.pitch_e4() * 1e-4 * kDeg, ch.yaw_e4() * 1e-4 * kDeg, ch.roll_setpoint_e4() * 1e-4 * kDeg,
-               ch.pitch_setpoint_e4() * 1e-4 * kDeg, ps.rate.x, ps.rate.y, ps.rate.z, ch.p_e3() * 1e-3,
-               ch.q_e3() * 1e-3, ch.r_e3() * 1e-3, eng.value[0], eng.value[1], eng.value[2], eng.value[3],
-               -ps.position.z, ps.position.x, ps.position.y, plant.battery_volts(), ch.roll_e4(), ch.pitch_e4(),
-               ch.yaw_e4());
+               "%.3f,%u,%.4f,%.4f,%.4f,%.4f,%.4f,%s,%.4f,%.4f,%.4f,%.4f,%.4f,%s,%s,%s,%u,%u,%u,%u,%.3f,%."
+               "3f,%.3f,%.3f,%d,%d,%s\n",
+               t, mode, e.roll * kDeg, e.pitch * kDeg, e.yaw * kDeg, ch.roll_e4 * 1e-4 * kDeg,
+               ch.pitch_e4 * 1e-4 * kDeg, yaw, ch.roll_setpoint_e4 * 1e-4 * kDeg, ch.pitch_setpoint_e4 * 1e-4 * kDeg,
+               ps.rate.x, ps.rate.y, ps.rate.z, p, q, r, eng.value[0], eng.value[1], eng.value[2], eng.value[3],
+               -ps.position.z, ps.position.x, ps.position.y, plant.battery_volts(), ch.roll_e4, ch.pitch_e4, yaw_e4);
 }
 
 // One control period of the record, from t0 on.
-void record_tick(FlightRecord& rec, double t, uint8_t mode, SimQr& qr, uint16_t idle, bool& airborne,
+void record_tick(FlightRecord& rec, double t, uint8_t mode, FlyingQr& qr, uint16_t idle, bool& airborne,
                  double& last_down_speed) {
-  const sim::Quadrotor& plant = qr.world.plant();
+  const sim::Quadrotor& plant = qr.world().plant();
   const sim::PlantState& s = plant.state();
   const sim::Euler e = sim::to_euler(s.attitude);
-  const auto& chain = qr.firmware.chain();
-  const double roll_est = chain.roll_e4() * 1e-4 * kDeg, pitch_est = chain.pitch_e4() * 1e-4 * kDeg;
-  const double roll_sp = chain.roll_setpoint_e4() * 1e-4 * kDeg;
-  const double pitch_sp = chain.pitch_setpoint_e4() * 1e-4 * kDeg;
+  const FirmwareView chain = qr.view();
+  const double roll_est = chain.roll_e4 * 1e-4 * kDeg, pitch_est = chain.pitch_e4 * 1e-4 * kDeg;
+  const double roll_sp = chain.roll_setpoint_e4 * 1e-4 * kDeg;
+  const double pitch_sp = chain.pitch_setpoint_e4 * 1e-4 * kDeg;
   const double roll = e.roll * kDeg, pitch = e.pitch * kDeg;
   rec.roll_est.push_back({t, roll_est});
   rec.pitch_est.push_back({t, pitch_est});
@@ -191,7 +201,7 @@ void record_tick(FlightRecord& rec, double t, uint8_t mode, SimQr& qr, uint16_t 
     rec.est_err.push_back({t, std::sqrt((xr * xr + xp * xp) / 2)});
     rec.est_err_axis.push_back({t, std::max(std::abs(xr), std::abs(xp))});
     bool at_limit = false;
-    for (uint16_t v : qr.board.engines().value) at_limit = at_limit || v >= 1000 || v <= idle;
+    for (uint16_t v : qr.board().engines().value) at_limit = at_limit || v >= 1000 || v <= idle;
     rec.saturated.push_back({t, at_limit ? 100.0 : 0.0});
   }
   const double rested = plant.battery().open_circuit_volts();
@@ -211,6 +221,21 @@ void record_tick(FlightRecord& rec, double t, uint8_t mode, SimQr& qr, uint16_t 
   if (airborne && !in_air && std::isnan(rec.touchdown_speed)) rec.touchdown_speed = last_down_speed;
   airborne = in_air;
   last_down_speed = std::abs(s.velocity.z);
+}
+
+// The binary's own cost in this flight, from the scheduler's statistics the board reported (RV32
+// instructions, exact under QEMU's -icount): the tick, then each task that ran.
+void add_instruction_figures(const DevboardQr& devboard, std::vector<Figure>& f) {
+  const std::vector<InstructionStats>& rows = devboard.instructions();
+  const auto add = [&](const std::string& name, const InstructionStats& s) {
+    f.push_back({"instr_" + name + "_mean", s.reported ? s.mean() : kNotMeasured});
+    f.push_back({"instr_" + name + "_max", s.reported ? static_cast<double>(s.max) : kNotMeasured});
+  };
+  add("tick", rows.back());
+  for (uint8_t task = 0; task + 1u < rows.size(); ++task) {
+    if (rows[task].runs > 0) add(wire::task_name(task), rows[task]);
+  }
+  f.push_back({"ground_bytes_refused", static_cast<double>(devboard.ground_bytes_refused())});
 }
 
 }  // namespace
@@ -237,9 +262,15 @@ ScenarioResult run_scenario(const ScenarioScript& script, const RunOptions& opti
 
   VehicleDraw flown;
   const sim::VehicleParams vehicle = vehicle_for(script, options, flown);
-  std::unique_ptr<SimQr> qr = make_qr(vehicle, {.seed = options.seed});
-  sim::Quadrotor& plant = qr->world.plant();
-  Pilot pilot(qr->board);
+  std::unique_ptr<FlyingQr> qr;
+  if (options.devboard_elf.empty()) {
+    qr = std::make_unique<HostQr>(vehicle, sim::WorldConfig{.seed = options.seed});
+  } else {
+    qr = std::make_unique<DevboardQr>(vehicle, sim::WorldConfig{.seed = options.seed}, options.devboard_elf);
+  }
+  result.firmware = qr->firmware();
+  sim::Quadrotor& plant = qr->world().plant();
+  Pilot pilot(qr->board());
 
   Phase phase = Phase::power_up;
   double phase_start = 0;
@@ -255,11 +286,11 @@ ScenarioResult run_scenario(const ScenarioScript& script, const RunOptions& opti
   bool recording = false;
   FILE* trace = options.trace_path.empty() ? nullptr : std::fopen(options.trace_path.c_str(), "w");
   if (trace != nullptr) write_trace_header(trace);
-  const auto idle = static_cast<uint16_t>(qr->firmware.parameters().get(wire::ParamId::idle_level));
+  const auto idle = static_cast<uint16_t>(qr->parameters().get(wire::ParamId::idle_level));
 
   for (;;) {
-    const double t = static_cast<double>(qr->world.now_us()) * 1e-6;
-    const uint8_t mode = static_cast<uint8_t>(qr->firmware.mode());
+    const double t = static_cast<double>(qr->world().now_us()) * 1e-6;
+    const uint8_t mode = qr->view().mode;
     const ConsoleView& view = pilot.view();
     const auto enter = [&](Phase next) {
       phase = next;
@@ -324,7 +355,7 @@ ScenarioResult run_scenario(const ScenarioScript& script, const RunOptions& opti
         apply(script.events[next_event++], hands, pilot, plant);
       }
       apply_pushes(script, since, plant);
-      pilot.set_sticks(hands.sticks(plant, qr->firmware.parameters()));
+      pilot.set_sticks(hands.sticks(plant, qr->parameters()));
     }
     if (phase != Phase::manoeuvre && t > kPreflightLimit) {
       static const char* const kPhaseNames[] = {"power up", "calibration", "arming", "take-off", "settling"};
@@ -340,26 +371,27 @@ ScenarioResult run_scenario(const ScenarioScript& script, const RunOptions& opti
     recording = recording || mode == static_cast<uint8_t>(wire::Mode::calibration);
     if (!qr->tick()) break;  // the firmware stopped
     if (record != nullptr && recording) {
-      const qr::SensorSample& in = qr->board.read_sensors();  // what this tick ran on
-      const qr::ControlInput& c = qr->firmware.controls();
-      std::fprintf(record, "%u,%d,%d,%d,%d,%d,%d,%u,%u,%d,%d,%d,%d\n", qr->board.now_us(), in.gyro[0], in.gyro[1],
+      const qr::SensorSample& in = qr->board().read_sensors();  // what this tick ran on
+      const qr::ControlInput c = qr->view().controls;
+      std::fprintf(record, "%u,%d,%d,%d,%d,%d,%d,%u,%u,%d,%d,%d,%d\n", qr->board().now_us(), in.gyro[0], in.gyro[1],
                    in.gyro[2], in.accel[0], in.accel[1], in.accel[2], in.battery_mv, c.lift, c.roll, c.pitch, c.yaw,
                    in.pressure_pa);
     }
   }
   if (trace != nullptr) std::fclose(trace);
   if (record != nullptr) std::fclose(record);
+  if (!qr->error().empty() && result.error.empty()) result.error = "devboard: " + qr->error();
 
   // ---- what only the end knows ----
   EndState end;
-  end.battery_panic_volts = qr->firmware.parameters().get(wire::ParamId::battery_panic_mv) * 1e-3;
-  end.yaw_rate_setpoint = qr->firmware.chain().yaw_rate_setpoint_e3() * 1e-3;
+  end.battery_panic_volts = qr->parameters().get(wire::ParamId::battery_panic_mv) * 1e-3;
+  end.yaw_rate_setpoint = qr->view().yaw_rate_setpoint_e3 * 1e-3;
   {
     // Where the yaw loop's P term alone would settle, its moment balancing the rotor drag's yaw
     // damping:  yaw_p (r_sp - r) k_m w_max^2 / 1000 = c_rd l^2 (sum of rotor speeds) r
     // (thrust units: w_i = e_i^2 / 1000, so a thrust unit is k_m w_max^2 / 1000 of yaw torque,
     // engine_mixer.hpp; w_max = speed per volt x battery volts).
-    const double yaw_p = qr->firmware.parameters().get(wire::ParamId::yaw_p) / 16.0;
+    const double yaw_p = qr->parameters().get(wire::ParamId::yaw_p) / 16.0;
     const sim::VehicleParams& v = plant.vehicle();
     const double w_max = v.speed_per_volt() * plant.battery_volts();
     double speeds = 0;
@@ -369,12 +401,12 @@ ScenarioResult run_scenario(const ScenarioScript& script, const RunOptions& opti
     end.yaw_rate_p_only = end.yaw_rate_setpoint * gain / (gain + damping);
   }
 
-  const double sim_seconds = static_cast<double>(qr->world.now_us()) * 1e-6;
+  const double sim_seconds = static_cast<double>(qr->world().now_us()) * 1e-6;
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
-  const uint8_t final_mode = static_cast<uint8_t>(qr->firmware.mode());
+  const uint8_t final_mode = qr->view().mode;
   result.final_mode = mode_name(final_mode);
   uint16_t engines_max = 0;
-  for (uint16_t v : qr->board.engines().value) engines_max = std::max(engines_max, v);
+  for (uint16_t v : qr->board().engines().value) engines_max = std::max(engines_max, v);
 
   auto& f = result.figures;
   f.push_back({"sim_seconds", sim_seconds});
@@ -396,7 +428,7 @@ ScenarioResult run_scenario(const ScenarioScript& script, const RunOptions& opti
   f.push_back({"final_upright", body_down.z >= std::cos(30 * kRad) ? 1.0 : 0.0});
   f.push_back({"engine_saturation_pct", mean(rec.saturated, rec.t0, rec.t_end)});
   f.push_back({"engines_at_end_max", static_cast<double>(engines_max)});
-  f.push_back({"deadline_misses", static_cast<double>(qr->scheduler.stats().deadline_misses)});
+  f.push_back({"deadline_misses", static_cast<double>(qr->view().deadline_misses)});
   f.push_back({"final_mode", static_cast<double>(final_mode)});
   f.push_back({"battery_v_end", plant.battery_volts()});
   f.push_back({"height_m_end", -plant.state().position.z});
@@ -404,6 +436,7 @@ ScenarioResult run_scenario(const ScenarioScript& script, const RunOptions& opti
   f.push_back({"speed_m_s_end", sim::norm(plant.state().velocity)});
   f.push_back({"requests_given_up", static_cast<double>(pilot.view().requests_given_up)});
   f.push_back({"nacks", static_cast<double>(pilot.view().nacks)});
+  if (const auto* devboard = dynamic_cast<const DevboardQr*>(qr.get())) add_instruction_figures(*devboard, f);
 
   judge(script, result);
   return result;

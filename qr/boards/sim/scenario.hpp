@@ -36,6 +36,9 @@ struct RunOptions {
   // Non-empty: the QR's sensor samples and sticks from its first calibration tick on, in the
   // replay's input format (docs/replay.md), so `qrsim --replay` can run the flight again.
   std::string record_path;
+  // Non-empty: fly this RV32 ELF on the emulated devboard, in lock-step over the sensor link
+  // (devboard_qr.hpp), instead of the host build.
+  std::string devboard_elf;
 };
 
 struct Figure {
@@ -51,7 +54,8 @@ struct CheckResult {
 struct ScenarioResult {
   std::string scenario;
   std::string vehicle;
-  std::string error;  // non-empty: the flight never got to its manoeuvre
+  std::string firmware = "host";  // "rv32": the devboard's binary flew
+  std::string error;              // non-empty: the flight never got to its manoeuvre
   std::string final_mode;
   std::string known_failure;    // the scenario's, copied
   std::vector<Figure> figures;  // in print order

@@ -20,6 +20,8 @@ std::string quoted(const std::string& text) {
 
 std::string to_json(const ScenarioResult& r) {
   std::string out = "{\"scenario\": " + quoted(r.scenario) + ", \"vehicle\": " + quoted(r.vehicle);
+  // The host build is the default and says nothing; the devboard's binary says so.
+  if (r.firmware != "host") out += ", \"firmware\": " + quoted(r.firmware);
   char buffer[64];
   for (const Figure& f : r.figures) {
     if (f.name == "final_mode") {

@@ -10,10 +10,12 @@
 
 #include <deque>
 
+#include <common/link_timing.hpp>
+
 namespace qrsim {
 
-inline constexpr uint32_t kBaud = 115200;
-inline constexpr uint64_t kByteTimeNs = (10ull * 1000000000ull + kBaud / 2) / kBaud;  // 86 806 ns
+inline constexpr uint32_t kBaud = wire::kLineBaud;
+inline constexpr uint64_t kByteTimeNs = wire::kLineByteTimeNs;  // 86 806 ns
 
 class SerialLine {
  public:

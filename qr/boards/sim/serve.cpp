@@ -12,7 +12,8 @@
 #include <cstdio>
 #include <string>
 
-#include <qr/boards/sim/sim_qr.hpp>
+#include <qr/boards/sim/devboard_qr.hpp>
+#include <qr/boards/sim/flying_qr.hpp>
 #include <qr/boards/sim/truth_channel.hpp>
 
 namespace qrsim {
@@ -111,8 +112,17 @@ int serve(const ServeOptions& options) {
   signal(SIGTERM, on_signal);
   signal(SIGPIPE, SIG_IGN);
 
-  std::unique_ptr<SimQr> qr = make_qr(options.vehicle, {.seed = options.seed});
-  qr->board.follow_wall_clock();
+  std::unique_ptr<FlyingQr> qr;
+  if (options.devboard_elf.empty()) {
+    qr = std::make_unique<HostQr>(options.vehicle, sim::WorldConfig{.seed = options.seed});
+  } else {
+    qr = std::make_unique<DevboardQr>(options.vehicle, sim::WorldConfig{.seed = options.seed}, options.devboard_elf);
+    if (!qr->error().empty()) {
+      std::fprintf(stderr, "qrsim: devboard: %s\n", qr->error().c_str());
+      return 1;
+    }
+  }
+  qr->board().follow_wall_clock();
   const uint64_t stop_us = options.seconds > 0 ? static_cast<uint64_t>(std::llround(options.seconds * 1e6)) : 0;
   uint64_t next_status_us = 1000000;
   uint8_t buffer[256];
@@ -128,7 +138,7 @@ int serve(const ServeOptions& options) {
     while (input_open) {
       const ssize_t n = read(in_fd, buffer, sizeof buffer);
       if (n > 0) {
-        for (ssize_t i = 0; i < n; ++i) qr->board.pc_send(buffer[i]);
+        for (ssize_t i = 0; i < n; ++i) qr->board().pc_send(buffer[i]);
       } else {
         if (n == 0 && options.stdio) input_open = false;  // stdin closed: keep flying, silent
         break;                                            // EAGAIN, or EIO: no console attached
@@ -137,7 +147,7 @@ int serve(const ServeOptions& options) {
     // Bytes the QR has sent that have arrived at the console's end.
     size_t count = 0;
     uint8_t byte = 0;
-    while (count < sizeof buffer && qr->board.pc_receive(byte)) buffer[count++] = byte;
+    while (count < sizeof buffer && qr->board().pc_receive(byte)) buffer[count++] = byte;
     for (size_t done = 0; done < count;) {
       const ssize_t n = write(out_fd, buffer + done, count - done);
       if (n < 0 && errno != EAGAIN && errno != EINTR) break;  // nobody listening: the bytes are lost, as on a wire
@@ -150,29 +160,32 @@ int serve(const ServeOptions& options) {
     }
 
     if (truth.open()) {
-      const uint64_t before = qr->world.now_us();
+      const uint64_t before = qr->world().now_us();
       truth.poll_commands(before, push_torque, push_until_us);
       const bool push_now = before < push_until_us;
-      if (push_now || pushing) qr->world.plant().set_disturbance(push_now ? push_torque : sim::Vec3{}, sim::Vec3{});
+      if (push_now || pushing) qr->world().plant().set_disturbance(push_now ? push_torque : sim::Vec3{}, sim::Vec3{});
       pushing = push_now;
     }
 
-    if (!qr->tick()) break;  // sleeps until the next kick, then runs the firmware
+    if (!qr->tick()) {  // sleeps until the next kick, then runs the firmware
+      if (!qr->error().empty()) std::fprintf(stderr, "qrsim: devboard: %s\n", qr->error().c_str());
+      break;
+    }
 
-    const uint64_t now = qr->world.now_us();
+    const uint64_t now = qr->world().now_us();
     if (truth.open() && now >= next_truth_us) {
       next_truth_us = now - now % 20000 + 20000;
-      truth.send(truth_line(static_cast<double>(now) * 1e-6, qr->world.plant().state()));
+      truth.send(truth_line(static_cast<double>(now) * 1e-6, qr->world().plant().state()));
     }
     if (options.status && now >= next_status_us) {
       next_status_us += 1000000;
-      const sim::PlantState& s = qr->world.plant().state();
+      const sim::PlantState& s = qr->world().plant().state();
       const sim::Euler e = sim::to_euler(s.attitude);
       std::fprintf(stderr,
                    "qrsim: t=%.0fs mode=%u height=%.2fm roll=%.1f pitch=%.1f yaw=%.1f deg battery=%.2fV misses=%u\n",
-                   static_cast<double>(now) * 1e-6, static_cast<unsigned>(qr->firmware.mode()), -s.position.z,
-                   e.roll * 57.29578, e.pitch * 57.29578, e.yaw * 57.29578, qr->world.plant().battery_volts(),
-                   static_cast<unsigned>(qr->scheduler.stats().deadline_misses));
+                   static_cast<double>(now) * 1e-6, static_cast<unsigned>(qr->view().mode), -s.position.z,
+                   e.roll * 57.29578, e.pitch * 57.29578, e.yaw * 57.29578, qr->world().plant().battery_volts(),
+                   static_cast<unsigned>(qr->view().deadline_misses));
     }
     if (stop_us != 0 && now >= stop_us) break;
   }

@@ -17,6 +17,9 @@ struct ServeOptions {
   double seconds = 0;   // > 0: stop after this much time (for tests); 0: until exit or a signal
   bool status = false;  // a status line on stderr once a second
   int truth_fd = -1;    // >= 0: the side channel (truth lines out, pushes in; truth_channel.hpp)
+  // Non-empty: this RV32 ELF flies on the emulated devboard (devboard_qr.hpp) instead of the host
+  // build; the console's bytes reach its UART through the simulated line, as the host build's do.
+  std::string devboard_elf;
 };
 
 // Runs until the firmware stops (the console sent exit), a signal, or `seconds`. Returns the

@@ -3,8 +3,8 @@
 // selects an entry; nothing is designed at run time, so the flight build needs no trigonometry
 // and no division for it, and the design is the one qrfilter prints.
 //
-// Cost: one entry per Hz. At 1 kHz, 250 entries of 5 int32 coefficients (order 2) are 5000 bytes
-// of read-only data. Cut-offs must stay below fs/2: at 500 Hz the table ends at 249 Hz and larger
+// Cost: one entry per Hz. At 1 kHz, 250 entries of 4 int32 coefficients (order 2, b2 = b0) are
+// 4000 bytes of read-only data. Cut-offs must stay below fs/2: at 500 Hz the table ends at 249 Hz and larger
 // requests take the last entry.
 #pragma once
 
@@ -49,14 +49,16 @@ constexpr ButterworthEntries<C, Order, SampleHz> build_butterworth_entries() {
   return e;
 }
 
-// Every quantised design fits its format (a Q coefficient that did not would wrap).
+// Every quantised design fits its format (a Q coefficient that did not would wrap), and its
+// numerator is symmetric (b2 = b0: the table keeps b0 for both, butterworth_lowpass.hpp).
 template <class C, int Order, uint32_t SampleHz>
 constexpr bool butterworth_entries_fit() {
   using Range = CutoffRange<SampleHz>;
   if constexpr (fx::is_q<C>) {
     for (size_t i = 0; i < Range::kSize; ++i) {
       const auto d = design_butterworth(Order, Range::hz_at(i), static_cast<double>(SampleHz));
-      if (!quantise(d, C::frac_bits).fits_int32()) return false;
+      const QuantisedDesign q = quantise(d, C::frac_bits);
+      if (!q.fits_int32() || (Order == 2 && q.b[2] != q.b[0])) return false;
     }
   }
   return true;
@@ -67,7 +69,7 @@ struct ButterworthTable {
   using Range = CutoffRange<SampleHz>;
   using Coefficients = typename IirOfOrder<Order>::template Coefficients<C>;
   static_assert(butterworth_entries_fit<C, Order, SampleHz>(),
-                "a designed coefficient does not fit the coefficient format");
+                "a designed coefficient does not fit the coefficient format, or b2 != b0");
 
   static constexpr ButterworthEntries<C, Order, SampleHz> kEntries = build_butterworth_entries<C, Order, SampleHz>();
 

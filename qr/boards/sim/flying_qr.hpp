@@ -1,0 +1,76 @@
+// What a scenario flies: the simulated world and its board, and a firmware that takes one control
+// period at a time. Either the host build of the firmware in this process (HostQr, over SimQr) or
+// the cross-compiled qr.elf on the emulated devboard in lock-step over the sensor link
+// (DevboardQr, devboard_qr.hpp). The scorer sees the same things of both.
+#pragma once
+
+#include <stdint.h>
+
+#include <memory>
+#include <string>
+
+#include <common/parameter_table.hpp>
+#include <qr/boards/sim/sim_board.hpp>
+#include <qr/boards/sim/sim_qr.hpp>
+#include <qr/core/flight_types.hpp>
+#include <sim/world.hpp>
+
+namespace qrsim {
+
+// What the figures read of the firmware after each tick, in the wire's integer units.
+struct FirmwareView {
+  uint8_t mode = 0;
+  int16_t roll_e4 = 0, pitch_e4 = 0;  // estimate
+  int16_t roll_setpoint_e4 = 0, pitch_setpoint_e4 = 0, yaw_rate_setpoint_e3 = 0;
+  // Only the host build shows these (the devboard's frames leave them out, common/sensor_link.hpp).
+  bool has_rates = false;
+  int16_t yaw_e4 = 0, p_e3 = 0, q_e3 = 0, r_e3 = 0;
+  qr::ControlInput controls;  // the sticks the tick flew with
+  uint32_t deadline_misses = 0;
+};
+
+class FlyingQr {
+ public:
+  virtual ~FlyingQr() = default;
+
+  virtual sim::World& world() = 0;
+  virtual SimBoard& board() = 0;
+  // One control period: the physics runs to the kick, then the firmware's tick. False once the
+  // firmware has stopped (or the devboard failed: error()).
+  virtual bool tick() = 0;
+  virtual FirmwareView view() const = 0;
+  // The firmware's parameter table as it is now.
+  virtual const wire::ParameterValues& parameters() const = 0;
+  virtual const char* firmware() const = 0;  // "host" or "rv32"
+  virtual std::string error() const { return {}; }
+};
+
+// The host build of the firmware, in this process.
+class HostQr final : public FlyingQr {
+ public:
+  HostQr(const sim::VehicleParams& vehicle, const sim::WorldConfig& config) : qr_(make_qr(vehicle, config)) {}
+
+  sim::World& world() override { return qr_->world; }
+  SimBoard& board() override { return qr_->board; }
+  bool tick() override { return qr_->tick(); }
+  FirmwareView view() const override {
+    const auto& chain = qr_->firmware.chain();
+    FirmwareView v;
+    v.mode = static_cast<uint8_t>(qr_->firmware.mode());
+    v.roll_e4 = chain.roll_e4(), v.pitch_e4 = chain.pitch_e4();
+    v.roll_setpoint_e4 = chain.roll_setpoint_e4(), v.pitch_setpoint_e4 = chain.pitch_setpoint_e4();
+    v.yaw_rate_setpoint_e3 = chain.yaw_rate_setpoint_e3();
+    v.has_rates = true;
+    v.yaw_e4 = chain.yaw_e4(), v.p_e3 = chain.p_e3(), v.q_e3 = chain.q_e3(), v.r_e3 = chain.r_e3();
+    v.controls = qr_->firmware.controls();
+    v.deadline_misses = qr_->scheduler.stats().deadline_misses;
+    return v;
+  }
+  const wire::ParameterValues& parameters() const override { return qr_->firmware.parameters(); }
+  const char* firmware() const override { return "host"; }
+
+ private:
+  std::unique_ptr<SimQr> qr_;
+};
+
+}  // namespace qrsim
