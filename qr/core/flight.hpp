@@ -84,6 +84,15 @@ class Flight {
   void run_mixer() { wanted_ = chain_.mix(); }
   void run_manual_mixer() { wanted_ = chain_.mix_manual(); }
   void run_safety();
+  // The panic's entry action: a landing starts the chain's descent; the cut leaves the engines to
+  // the safety machine.
+  void enter_panic() {
+    if (safety_.landing()) {
+      chain_.start_descent(safety_.flying_lift());
+    } else {
+      chain_.release_lift();
+    }
+  }
   void run_telemetry() {
     telemetry_.period(*this, [this](const wire::FrameBytes& f) { send(f); });
   }
@@ -150,6 +159,9 @@ class Flight {
     s.battery_mv = sample_.battery_mv;
     s.last_frame_us = last_frame_us_;
     s.tilt_mrad = chain_.tilt_mrad();
+    s.height_valid = chain_.height_valid();
+    s.height_mm = chain_.height_mm();
+    s.landed = chain_.landed();
     return s;
   }
 

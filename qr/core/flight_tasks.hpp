@@ -31,6 +31,7 @@ enum FlightTask : uint8_t {
   kSafetyTask,
   kTelemetryTask,
   kLoggerTask,
+  kVerticalTask,  // numbered last (the wire's task numbers stay), runs after the height estimate
   kFlightTaskCount,
 };
 static_assert(kFlightTaskCount == wire::kTaskCount, "one wire task number per row");
@@ -63,6 +64,9 @@ inline constexpr Task<Flight> kFlightTaskTable[kFlightTaskCount] = {
      [](const Flight& f) { return f.telemetry_divider(); }},
     {wire::kTaskNames[kLoggerTask], [](Flight& f) { f.run_logger(); }, 1, 3, 900,
      [](const Flight& f) { return f.log_divider(); }},
+    // On the height estimate's ticks, after it: each run sees a fresh height and vertical speed.
+    {wire::kTaskNames[kVerticalTask], [](Flight& f) { f.chain().control_vertical(); },
+     Flight::ChainType::kHeightDivider, Flight::ChainType::kHeightDivider / 2, 400},
 };
 
 // The table as a pointer (for readers, cppcheck among them, that stumble on a variable template
@@ -87,8 +91,11 @@ namespace task_sets {
 // covers the whole flight, panic included.
 inline constexpr uint8_t kSafe[] = {kLinkTask,   kFilterTask, kAccelAnglesTask, kEstimatorTask,
                                     kHeightTask, kSafetyTask, kTelemetryTask,   kLoggerTask};
-inline constexpr uint8_t kPanic[] = {kLinkTask,   kFilterTask, kAccelAnglesTask, kEstimatorTask,
-                                     kHeightTask, kSafetyTask, kTelemetryTask,   kLoggerTask};
+// A panic runs the control tasks: a landing flies on them (the safety machine passes their
+// engines); the cut (hold, ramp) overrides them.
+inline constexpr uint8_t kPanic[] = {kLinkTask,   kFilterTask,   kAccelAnglesTask,     kEstimatorTask,
+                                     kHeightTask, kVerticalTask, kAttitudeControlTask, kYawControlTask,
+                                     kMixerTask,  kSafetyTask,   kTelemetryTask,       kLoggerTask};
 inline constexpr uint8_t kManual[] = {kLinkTask,        kFilterTask, kAccelAnglesTask, kEstimatorTask, kHeightTask,
                                       kManualMixerTask, kSafetyTask, kTelemetryTask,   kLoggerTask};
 inline constexpr uint8_t kCalibration[] = {kLinkTask,   kFilterTask,    kCalibrationTask,
@@ -98,6 +105,10 @@ inline constexpr uint8_t kYawControl[] = {kLinkTask,       kFilterTask, kAccelAn
 inline constexpr uint8_t kFullControl[] = {kLinkTask,   kFilterTask,          kAccelAnglesTask, kEstimatorTask,
                                            kHeightTask, kAttitudeControlTask, kYawControlTask,  kMixerTask,
                                            kSafetyTask, kTelemetryTask,       kLoggerTask};
+
+inline constexpr uint8_t kHeightHold[] = {kLinkTask,   kFilterTask,   kAccelAnglesTask,     kEstimatorTask,
+                                          kHeightTask, kVerticalTask, kAttitudeControlTask, kYawControlTask,
+                                          kMixerTask,  kSafetyTask,   kTelemetryTask,       kLoggerTask};
 
 template <size_t N>
 constexpr TaskSet set(const uint8_t (&ids)[N]) {
@@ -116,19 +127,32 @@ struct FlightMode {
 
 template <class Flight>
 inline constexpr FlightMode<Flight> kFlightModes[kModeCount] = {
-    {Mode::safe, task_sets::set(task_sets::kSafe), nullptr},
-    {Mode::panic, task_sets::set(task_sets::kPanic), nullptr},
-    {Mode::manual, task_sets::set(task_sets::kManual), nullptr},
+    // The lift is the pilot's stick again.
+    {Mode::safe, task_sets::set(task_sets::kSafe), [](Flight& f) { f.chain().release_lift(); }},
+    // A panic that lands starts its descent from the lift that was flying (the safety machine
+    // says which panic it is).
+    {Mode::panic, task_sets::set(task_sets::kPanic), [](Flight& f) { f.enter_panic(); }},
+    {Mode::manual, task_sets::set(task_sets::kManual), [](Flight& f) { f.chain().release_lift(); }},
     // A calibration run starts over whenever the mode is entered.
     {Mode::calibration, task_sets::set(task_sets::kCalibration), [](Flight& f) { f.chain().enter_calibration(); }},
     // The yaw loop's integral starts empty.
-    {Mode::yaw_control, task_sets::set(task_sets::kYawControl), [](Flight& f) { f.chain().enter_yaw_control(); }},
-    // The attitude and yaw loops' integrals start empty.
+    {Mode::yaw_control, task_sets::set(task_sets::kYawControl),
+     [](Flight& f) {
+       f.chain().release_lift();
+       f.chain().enter_yaw_control();
+     }},
+    // The attitude and yaw loops' integrals start empty, unless the vehicle comes back from height
+    // hold: it flew on, and the integrals hold its trim.
     {Mode::full_control, task_sets::set(task_sets::kFullControl),
      [](Flight& f) {
+       const bool from_height_hold = f.chain().holding_height();
+       f.chain().release_lift();
+       if (from_height_hold) return;
        f.chain().enter_attitude_control();
        f.chain().enter_yaw_control();
      }},
+    // The height at entry is held from the thrust the pilot's lift gave.
+    {Mode::height_hold, task_sets::set(task_sets::kHeightHold), [](Flight& f) { f.chain().enter_height_hold(); }},
 };
 
 // The mode table as a pointer, as flight_tasks() above.
