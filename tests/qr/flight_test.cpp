@@ -83,8 +83,9 @@ TEST_F(FlightTest, StartsInSafeAndStreamsTelemetryAtTheParameterRate) {
   EXPECT_EQ(attitude.back().mode, Mode::safe);
   // The rates frame follows the attitude frame; the last one may still be on its way.
   EXPECT_NEAR(static_cast<double>(got<wire::TelemetryRates>().size()), static_cast<double>(attitude.size()), 1.0);
-  EXPECT_NEAR(static_cast<double>(got<wire::TelemetrySystem>().size()), rate / 5.0, 1.0);  // a fifth: 5 slow groups
-  EXPECT_NEAR(static_cast<double>(got<wire::LogStatus>().size()), rate / 5.0, 1.0);
+  EXPECT_NEAR(static_cast<double>(got<wire::TelemetrySystem>().size()), rate / 6.0, 1.0);  // a sixth: 6 slow groups
+  EXPECT_NEAR(static_cast<double>(got<wire::LogStatus>().size()), rate / 6.0, 1.0);
+  EXPECT_NEAR(static_cast<double>(got<wire::TelemetryHeight>().size()), rate / 6.0, 1.0);
   EXPECT_EQ(got<wire::TelemetrySystem>().back().battery_mv, 12000);
   EXPECT_EQ(flight.tx_dropped_frames(), 0u);
 

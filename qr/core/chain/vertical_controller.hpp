@@ -104,11 +104,12 @@ class TouchdownDetector {
   static constexpr uint32_t kEstablishRuns = 2 * RunHz;  // 2 s
   static constexpr uint32_t kStillRuns = RunHz / 5;      // 0.2 s
 
-  // panic_descent_mm_s (parameter changes only: divisions).
+  // panic_descent_mm_s (parameter changes only; a product, not a 64-bit division: it runs in
+  // the link task's tick).
   void set_descent(int32_t mm_s) {
-    descent_ = N::template ratio<Climb>(mm_s, 1000);
-    half_ = N::template ratio<Climb>(-mm_s, 2000);
-    quarter_ = N::template ratio<Climb>(-mm_s, 4000);
+    descent_ = product<Climb>(N::template fixed<0>(mm_s), kPerMille);
+    half_ = -product<Climb>(descent_, kHalf);
+    quarter_ = -product<Climb>(descent_, kQuarter);
   }
   Climb descent() const { return descent_; }
 
@@ -134,6 +135,8 @@ class TouchdownDetector {
   }
 
  private:
+  static constexpr typename N::Scale kHalf = typename N::Scale(0.5), kQuarter = typename N::Scale(0.25),
+                                     kPerMille = typename N::Scale(0.001);
   Climb descent_ = Climb(0.5), half_ = Climb(-0.25), quarter_ = Climb(-0.125);
   uint32_t runs_ = 0;
   uint32_t still_ = 0;
