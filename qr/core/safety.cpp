@@ -212,7 +212,9 @@ void SafetyMachine::supervise(const Situation& s) {
 
   if (mode_ == Mode::panic) {
     const uint32_t elapsed = s.now_us - panic_start_us_;
-    if (landing_ && s.landed) {
+    // A panic entered in this very call sees the chain's verdict from before its descent began
+    // (a lift stick let go reads "landed"): only a later tick's touchdown counts.
+    if (landing_ && s.landed && elapsed > 0) {
       enter(Mode::safe);  // touched down: the engines stop this tick
     } else if (landing_ && elapsed >= descent_limit_us_) {
       // No touchdown in twice the time the descent needs: the landing is not working; the cut.

@@ -311,6 +311,23 @@ TEST_F(Safety, LinkLossAndBatteryPanicsLandToo) {
   EXPECT_TRUE(machine.landing()) << "battery";
 }
 
+// The pilot lets go of the lift and the link goes: the chain's detector says "landed" (lift 0)
+// until the landing's descent starts, which the watchdog's panic must not take for a touchdown.
+TEST_F(Safety, AStickLetGoIsNoTouchdownForAWatchdogsPanic) {
+  fly_trusted();
+  s.controls.lift = 0;
+  s.landed = true;
+  for (uint32_t t = 0; t < 2 * limits.link_timeout_us && machine.mode() != Mode::panic; t += kPeriodUs) {
+    run_for(kPeriodUs, false);
+  }
+  ASSERT_EQ(machine.panic_cause(), PanicCause::link_lost);
+  EXPECT_EQ(machine.mode(), Mode::panic) << "the landing has not begun, let alone touched down";
+  EXPECT_TRUE(machine.landing());
+  s.landed = false;  // the chain's descent has begun
+  run_for(100000, false);
+  EXPECT_EQ(machine.mode(), Mode::panic);
+}
+
 TEST_F(Safety, ALandingThatDoesNotTouchDownBecomesTheCut) {
   fly_trusted();
   ASSERT_EQ(machine.request(m(Mode::panic), s), NackReason::none);
