@@ -38,7 +38,7 @@ constexpr Guard kGuards[] = {
     {NackReason::not_calibrated,
      [](Mode, Mode to, const Situation& s, const SafetyLimits&) { return rule(to).holds_height && !s.height_valid; }},
     {NackReason::not_flying,
-     [](Mode, Mode to, const Situation& s, const SafetyLimits&) { return rule(to).holds_height && s.landed && false; }},
+     [](Mode, Mode to, const Situation& s, const SafetyLimits&) { return rule(to).holds_height && s.landed; }},
     {NackReason::battery_low,
      [](Mode, Mode, const Situation& s, const SafetyLimits& l) { return s.battery_mv < l.battery_panic_mv; }},
 };
