@@ -44,6 +44,7 @@ enum class MessageType : uint8_t {
   telemetry_log_part = 0x96,
   telemetry_task = 0x99,
   log_status = 0x9C,
+  telemetry_height = 0x9F,
 };
 
 enum class Direction : uint8_t { pc_to_qr = 1, qr_to_pc = 2 };
@@ -90,6 +91,7 @@ inline constexpr MessageSpec kMessageTable[] = {
     {MessageType::telemetry_log_part, 9, false, Direction::qr_to_pc, "telemetry_log_part", false},
     {MessageType::telemetry_task, 7, false, Direction::qr_to_pc, "telemetry_task", false},
     {MessageType::log_status, 7, false, Direction::qr_to_pc, "log_status", false},
+    {MessageType::telemetry_height, 7, false, Direction::qr_to_pc, "telemetry_height", false},
 };
 
 inline constexpr size_t kMessageCount = sizeof(kMessageTable) / sizeof(kMessageTable[0]);

@@ -21,7 +21,7 @@ struct MessageList {
 using AllMessages =
     MessageList<Control, ModeChange, ParamSet, ParamGet, LogStart, LogStop, LogDownload, Exit, Ack, Nack, ParamReport,
                 DebugText, TelemetryAttitude, TelemetryRates, TelemetryEngines, TelemetrySetpoints, TelemetrySystem,
-                TelemetryLink, SensorLogPart, TelemetryLogPart, TelemetryTask, LogStatus>;
+                TelemetryLink, SensorLogPart, TelemetryLogPart, TelemetryTask, LogStatus, TelemetryHeight>;
 
 // What the QR receives: it never decodes a message of the other direction (its parser drops them).
 using PcToQrMessages = MessageList<Control, ModeChange, ParamSet, ParamGet, LogStart, LogStop, LogDownload, Exit>;

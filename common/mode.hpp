@@ -8,9 +8,20 @@
 
 namespace wire {
 
-enum class Mode : uint8_t { safe = 0, panic = 1, manual = 2, calibration = 3, yaw_control = 4, full_control = 5 };
+// IN4073 numbers its height mode 7, after a raw mode (6) this project does not have. The numbers
+// here stay dense, because every table of modes (this one, the QR's task sets, the console's) is
+// indexed by them: height hold is 6, and a raw mode, should it come, takes 7.
+enum class Mode : uint8_t {
+  safe = 0,
+  panic = 1,
+  manual = 2,
+  calibration = 3,
+  yaw_control = 4,
+  full_control = 5,
+  height_hold = 6,
+};
 
-inline constexpr uint8_t kModeCount = 6;
+inline constexpr uint8_t kModeCount = 7;
 
 struct ModeSpec {
   Mode mode;
@@ -18,16 +29,22 @@ struct ModeSpec {
   const char* key;         // one word: JSON figures, command lines
   bool flies;              // engines follow the pilot; leaving goes through panic; watchdogs on
   bool needs_calibration;  // uses calibrated sensors: refused until a calibration has finished
-  bool needs_attitude;     // flies on the attitude estimate: the tilt watchdog applies
+  bool needs_attitude;     // flies on the attitude estimate: the tilt watchdog applies; a panic can land
+  Mode entered_from;       // the one mode a request may enter it from
+  bool holds_height;       // flies on the height estimate: needs one, and needs to be flying
 };
 
 inline constexpr ModeSpec kModeTable[] = {
-    {Mode::safe, "safe", "safe", false, false, false},
-    {Mode::panic, "panic", "panic", false, false, false},
-    {Mode::manual, "manual", "manual", true, false, false},
-    {Mode::calibration, "calibration", "calibration", false, false, false},
-    {Mode::yaw_control, "yaw control", "yaw", true, true, true},
-    {Mode::full_control, "full control", "full", true, true, true},
+    {Mode::safe, "safe", "safe", false, false, false, Mode::safe, false},
+    {Mode::panic, "panic", "panic", false, false, false, Mode::safe, false},
+    {Mode::manual, "manual", "manual", true, false, false, Mode::safe, false},
+    {Mode::calibration, "calibration", "calibration", false, false, false, Mode::safe, false},
+    {Mode::yaw_control, "yaw control", "yaw", true, true, true, Mode::safe, false},
+    // Full control is also where height hold returns to (the pilot's toggle, or a lift change).
+    {Mode::full_control, "full control", "full", true, true, true, Mode::safe, false},
+    // Holds the height at entry with the lift (IN4073's height mode): entered while flying in
+    // full control, so the height it holds is one the pilot chose.
+    {Mode::height_hold, "height hold", "height", true, true, true, Mode::full_control, true},
 };
 static_assert(sizeof(kModeTable) / sizeof(kModeTable[0]) == kModeCount, "one row per mode");
 

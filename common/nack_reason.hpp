@@ -1,5 +1,5 @@
 // Why the QR refused a request: the third byte of a nack. The first six are the safety machine's
-// refusals, in its order; the rest are the protocol's own.
+// refusals, in its order, then the protocol's own, then the safety machine's later ones.
 #pragma once
 
 #include <stdint.h>
@@ -18,6 +18,7 @@ enum class NackReason : uint8_t {
   unknown_parameter = 8,  // no parameter with that id
   busy = 9,               // e.g. a log download while logging
   not_supported = 10,     // a request this firmware does not carry out
+  not_flying = 11,        // height hold asked for on the ground: there is no height to hold
 };
 
 struct NackReasonSpec {
@@ -37,6 +38,7 @@ inline constexpr NackReasonSpec kNackReasons[] = {
     {NackReason::unknown_parameter, "unknown_parameter", "no such parameter"},
     {NackReason::busy, "busy", "busy, try again later"},
     {NackReason::not_supported, "not_supported", "not supported by this firmware"},
+    {NackReason::not_flying, "not_flying", "not flying: nothing to hold"},
 };
 
 constexpr const NackReasonSpec* find_nack_reason(NackReason reason) {

@@ -39,7 +39,9 @@ namespace wire {
   ROW(battery_panic_mv, 10, 0, 9000, 12600, 10500, "mV", "below this in flight: panic") \
   ROW(tilt_limit_mrad, 11, 0, 87, 1396, 785, "mrad", "tilt beyond this in yaw/full control: panic (785 = 45 deg)") \
   ROW(max_yaw_rate_rad_s, 12, 10, 0, 8192, 2048, "rad/s", "yaw rate set-point at full stick") \
-  ROW(panic_level, 13, 0, 0, 1000, 350, "engine units", "engines hold at most this while panicking") \
+  ROW(panic_level, 13, 0, 0, 100, 90, "% of the flying lift", \
+      "a panic that cannot land (manual, no calibration, tilt): the engines hold at this share of the lift " \
+      "that was flying (the mean engine command of the last quarter second) before ramping down") \
   ROW(panic_hold_ms, 14, 0, 0, 10000, 2000, "ms", "panic: time at the panic level before ramping down") \
   ROW(panic_ramp_ms, 15, 0, 0, 10000, 1000, "ms", "panic: ramp from panic level to zero") \
   ROW(idle_level, 16, 0, 0, 500, 180, "engine units", "lowest engine value while lift > 0 in flight") \
@@ -67,7 +69,11 @@ namespace wire {
   ROW(drag_moment, 26, 0, 0, 1000, 150, "thrust units per rad", \
       "roll/pitch feed-forward against the rotors' drag moment (drag at the hubs, above the centre of mass, " \
       "tilts a moving vehicle back): moment per rad of the accelerometer angle the estimator's drag model " \
-      "expects; mass x g x hub height in thrust units; 0: none")
+      "expects; mass x g x hub height in thrust units; 0: none") \
+  ROW(panic_descent_mm_s, 27, 0, 100, 2000, 500, "mm/s", \
+      "a panic that lands (yaw, full control or height hold, calibrated): descends level at this vertical " \
+      "speed on the height estimate until it touches down; a landing that has not touched down in twice " \
+      "the time the height estimate asks for (plus 2 m) becomes the hold-and-ramp")
 
 enum class ParamId : uint8_t {
 #define WIRE_PARAMETER_ENUMERATOR(name, id, frac_bits, min, max, default_value, unit, meaning) name = id,

@@ -8,8 +8,9 @@
 namespace wire {
 
 inline constexpr const char* kTaskNames[] = {
-    "link", "filter", "calibration", "accel_angles", "estimator", "height", "attitude",
-    "yaw",  "mixer",  "manual",      "safety",       "telemetry", "logger",
+    "link",     "filter", "calibration", "accel_angles", "estimator", "height", "attitude",
+    "yaw",      "mixer",  "manual",      "safety",       "telemetry", "logger",
+    "vertical",  // added after the others: the wire's numbers of the older tasks stay
 };
 inline constexpr uint8_t kTaskCount = sizeof(kTaskNames) / sizeof(kTaskNames[0]);
 

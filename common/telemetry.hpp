@@ -161,4 +161,26 @@ struct TelemetryTask {
   constexpr bool valid() const { return mean <= max; }
 };
 
+// TelemetryHeight::flags bits
+inline constexpr uint8_t kHeightValid = 0x01;  // the estimate has its barometer reference
+
+// The height estimate (the barometer and the accelerometer fused), up, from the height at the
+// last calibration: what height hold holds and a landing descends on.
+struct TelemetryHeight {
+  static constexpr MessageType kType = MessageType::telemetry_height;
+  int32_t height_mm = 0;   // mm, up
+  int16_t climb_mm_s = 0;  // vertical speed, mm/s, up, saturated
+  uint8_t flags = 0;       // kHeightValid; without it the two figures are 0 and mean nothing
+
+  constexpr bool operator==(const TelemetryHeight&) const = default;
+
+  template <class Self, class Visit>
+  static constexpr void fields(Self& m, Visit& v) {
+    v(m.height_mm);
+    v(m.climb_mm_s);
+    v(m.flags);
+  }
+  constexpr bool valid() const { return (flags & ~kHeightValid) == 0; }
+};
+
 }  // namespace wire

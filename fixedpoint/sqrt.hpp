@@ -72,8 +72,8 @@ constexpr uint32_t root_from_above(uint32_t n, uint32_t x) {
 // 2^(s+1)) adds the rest with a single 32-bit divide, and a check of r^2 against n corrects
 // the last unit. (The Newton step from below overshoots by less than 2^s / (2 m0) <= 1/2 and
 // the truncations undershoot by less than one, so one correction step each way suffices.)
-// Both roots are out of line: inlined (and unrolled) into each caller they cost the 64 KiB
-// image kilobytes, for the few instructions of a call.
+// Both roots are out of line: inlined (and unrolled) into each caller they cost the QR's image
+// kilobytes, for the few instructions of a call.
 [[gnu::noinline]] constexpr RootAndRemainder<uint64_t> isqrt(uint64_t n) {
   const uint32_t high = static_cast<uint32_t>(n >> 32);
   if (high == 0) {

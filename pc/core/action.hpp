@@ -18,6 +18,7 @@ enum class Action : uint8_t {
   mode_calibration,
   mode_yaw_control,
   mode_full_control,
+  height_hold,  // toggles: height hold from full control, full control from height hold
   lift_up,
   lift_down,
   roll_left,
@@ -61,6 +62,7 @@ inline constexpr ActionSpec kActions[] = {
     {Action::mode_calibration, "mode calibration"},
     {Action::mode_yaw_control, "mode yaw control"},
     {Action::mode_full_control, "mode full control"},
+    {Action::height_hold, "height hold on/off"},
     {Action::lift_up, "lift up"},
     {Action::lift_down, "lift down"},
     {Action::roll_left, "roll left"},

@@ -87,6 +87,7 @@ struct Console::Receiver {
   void operator()(const wire::TelemetryLink& m) { console.telemetry_.on(m); }
   void operator()(const wire::TelemetryTask& m) { console.telemetry_.on(m); }
   void operator()(const wire::LogStatus& m) { console.on_log_status(m); }
+  void operator()(const wire::TelemetryHeight& m) { console.telemetry_.on(m); }
   void operator()(const wire::SensorLogPart& part) { console.downloader_.on_part(part, console.now_ms_); }
   void operator()(const wire::TelemetryLogPart& part) { console.downloader_.on_part(part, console.now_ms_); }
 };
@@ -164,6 +165,11 @@ void Console::act(Action action, uint32_t now_ms) {
     if (mode_key.action == action) return request_mode(mode_key.mode);
   }
   switch (action) {
+    case Action::height_hold: {
+      // A toggle: the QR's mode as last heard says which way (height hold is entered from full control).
+      const bool holding = telemetry_.attitude && telemetry_.attitude->mode == wire::Mode::height_hold;
+      return request_mode(holding ? wire::Mode::full_control : wire::Mode::height_hold);
+    }
     case Action::log_start: link_.request(wire::LogStart{0, wire::kLogSensor | wire::kLogTelemetry}, now_ms_); break;
     case Action::log_stop: link_.request(wire::LogStop{}, now_ms_); break;
     case Action::log_download:

@@ -1,4 +1,4 @@
-// The keyboard, as one table: key -> action. The IN4073 map (ESC, 0-5, a/z, arrows, q/w, u/j,
+// The keyboard, as one table: key -> action. The IN4073 map (ESC, 0-5, 7, a/z, arrows, q/w, u/j,
 // i/k, o/l) plus our keys for the filter constants, logs, parameters, the simulator's push and help.
 #pragma once
 
@@ -24,6 +24,7 @@ inline constexpr KeyBinding kKeyMap[] = {
     {'3', Action::mode_calibration},
     {'4', Action::mode_yaw_control},
     {'5', Action::mode_full_control},
+    {'7', Action::height_hold},  // IN4073's height mode key
     {'a', Action::lift_up},
     {'z', Action::lift_down},
     {kKeyLeft, Action::roll_left},

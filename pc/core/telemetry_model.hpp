@@ -22,6 +22,7 @@ struct TelemetryModel {
   std::optional<wire::TelemetryLink> qr_link;    // the QR's receive counters: the uplink's health
   std::map<uint8_t, wire::TelemetryTask> tasks;  // cycle figures by task number, one task per telemetry period
   std::optional<wire::LogStatus> log_status;     // the QR's logs: on or off, lines, room
+  std::optional<wire::TelemetryHeight> height;   // the height estimate
 
   uint32_t attitude_frames = 0;
   uint32_t attitude_lost = 0;  // from gaps in the attitude tick
@@ -34,6 +35,7 @@ struct TelemetryModel {
   void on(const wire::TelemetryLink& message) { qr_link = message; }
   void on(const wire::TelemetryTask& message) { tasks[message.task] = message; }
   void on(const wire::LogStatus& message) { log_status = message; }
+  void on(const wire::TelemetryHeight& message) { height = message; }
 
   bool flag(uint8_t bit) const { return attitude && (attitude->flags & bit) != 0; }
 };

@@ -250,6 +250,23 @@ void Cockpit::draw_pilot(const Console& console, int width) {
   (void)width;
 }
 
+// The height estimate and whether height hold flies the lift.
+void Cockpit::draw_height(const Console& console, int width) {
+  const TelemetryModel& t = console.telemetry();
+  put(13, 0, "height", 0, A_BOLD);
+  if (!t.height) {
+    put(13, 10, "-- m  climb -- m/s", kDim);
+  } else if ((t.height->flags & wire::kHeightValid) == 0) {
+    put(13, 10, "-- m  (no barometer reference: calibrate)", kDim);
+  } else {
+    put(13, 10, text("%+7.2f m  climb %+5.2f m/s", t.height->height_mm / 1000.0, t.height->climb_mm_s / 1000.0));
+  }
+  const bool holding = t.attitude && t.attitude->mode == wire::Mode::height_hold;
+  put(13, 44, holding ? " HEIGHT HOLD " : "height hold off (7)", holding ? kWarning : kDim,
+      holding ? A_BOLD | A_REVERSE : A_NORMAL);
+  (void)width;
+}
+
 void Cockpit::draw_log(const Console& console, int top, int rows, int width) {
   // A plain '-' rule: line-drawing characters turn into letters in some terminals and captures.
   put(top - 1, 0, std::string(static_cast<size_t>(width), '-'), kDim);
@@ -337,9 +354,10 @@ void Cockpit::compose(const Console& console) {
   draw_system(console, width);
   draw_engines_and_attitude(console, width);
   draw_pilot(console, width);
-  draw_log(console, 14, rows - 14, width);
+  draw_height(console, width);
+  draw_log(console, 15, rows - 15, width);
   // The simulator's truth, across the log's rule: beside the QR's estimate above it.
-  if (!console.truth().empty()) put(13, 10, " " + console.truth() + " ", kInfo);
+  if (!console.truth().empty()) put(14, 10, " " + console.truth() + " ", kInfo);
   draw_link_alarm(console, width);
   if (console.help_visible()) draw_help(rows, width);
   wnoutrefresh(stdscr);

@@ -46,10 +46,21 @@ class Flight {
   }
 
   // ---- the scheduler's side ----
-  static constexpr uint8_t kSetCount = kModeCount;  // one task set per mode
+  // The distinct task sets (modes that run the same rows share one: kCompiledSets).
+  static constexpr uint8_t kSetCount = kCompiledSetCount;
   static constexpr Task<Flight> task(uint8_t id) { return flight_tasks<Flight>()[id]; }
-  static constexpr TaskSet task_set(uint8_t set) { return flight_modes<Flight>()[set].tasks; }
-  uint8_t current_set() const { return index(safety_.mode()); }
+  static constexpr TaskSet task_set(uint8_t set) { return kCompiledSets[set]; }
+  uint8_t current_set() const {
+    struct SetOfMode {
+      uint8_t set[kModeCount];
+    };
+    constexpr SetOfMode table = [] {
+      SetOfMode t{};
+      for (uint8_t m = 0; m < kModeCount; ++m) t.set[m] = compiled_set_of<Flight>(m);
+      return t;
+    }();
+    return table.set[index(safety_.mode())];
+  }
   void begin_tick(uint32_t now_us, const SensorSample& sample) {
     sub_ms_us_ += now_us - tick_us_;  // divisions by a constant: multiplies on RV32IM
     uptime_ms_ += sub_ms_us_ / 1000u;
@@ -84,6 +95,15 @@ class Flight {
   void run_mixer() { wanted_ = chain_.mix(); }
   void run_manual_mixer() { wanted_ = chain_.mix_manual(); }
   void run_safety();
+  // The panic's entry action: a landing starts the chain's descent; the cut leaves the engines to
+  // the safety machine.
+  void enter_panic() {
+    if (safety_.landing()) {
+      chain_.start_descent(safety_.flying_lift());
+    } else {
+      chain_.release_lift();
+    }
+  }
   void run_telemetry() {
     telemetry_.period(*this, [this](const wire::FrameBytes& f) { send(f); });
   }
@@ -130,6 +150,7 @@ class Flight {
   void enter_modes() {
     static_assert(modes_in_order<Flight>(), "kFlightModes: row i is mode i");
     static_assert(rows_in_task_order<Flight>(), "kFlightTaskTable: row i is task i");
+    static_assert(every_mode_has_a_compiled_set<Flight>(), "kCompiledSets: every mode's set is compiled");
     const uint8_t entered = safety_.take_entered();
     if (entered == 0) return;
     for (uint8_t m = 0; m < kModeCount; ++m) {
@@ -150,6 +171,9 @@ class Flight {
     s.battery_mv = sample_.battery_mv;
     s.last_frame_us = last_frame_us_;
     s.tilt_mrad = chain_.tilt_mrad();
+    s.height_valid = chain_.height_valid();
+    s.height_mm = chain_.height_mm();
+    s.landed = chain_.landed();
     return s;
   }
 

@@ -24,6 +24,9 @@ struct FlightRequests {
   void operator()(const wire::Control& c) {
     f.controls_ = ControlInput{c.lift, c.roll, c.pitch, c.yaw};
     f.pilot_changed_ = true;
+    // A lift change ends height hold before the chain runs this tick.
+    f.safety_.sticks_moved(f.controls_);
+    f.enter_modes();
   }
   void operator()(const wire::ModeChange& m) {
     answer = f.safety_.request(static_cast<uint8_t>(m.mode), f.situation());

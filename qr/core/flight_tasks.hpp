@@ -31,23 +31,26 @@ enum FlightTask : uint8_t {
   kSafetyTask,
   kTelemetryTask,
   kLoggerTask,
+  kVerticalTask,  // numbered last (the wire's task numbers stay), runs after the height estimate
   kFlightTaskCount,
 };
 static_assert(kFlightTaskCount == wire::kTaskCount, "one wire task number per row");
 
 // Budgets are RV32IM instructions per run: the largest run `scripts/devboard --bench` measures in
-// any mode, rounded up with 10-50 % room (the link's largest is a param_set: its guard's bitwise
-// CRC-24, about 600, and the parameter fan-out's divisions; the estimator's its restart from the
+// any mode, rounded up with 10-50 % room (the link's largest is a param_set in safe: its guard's
+// bitwise CRC-24, about 600, and the parameter fan-out's divisions, 4002 with the landing's
+// descent rate among the parameters; the estimator's its restart from the
 // accelerometer, the safety machine's a mode announcement, the calibration's the run that
 // finishes: offsets, and the height reference's one division). The logger's is not measured by
 // the bench (it has no log memory) and is an estimate. The rv32 test Devboard.TaskBudgetsHold
 // fails when a measured maximum exceeds its budget. Phases keep the divided tasks off each
-// other's ticks: the accelerometer angles fall on ticks 0 mod 4, the height estimate on 2 mod 4,
-// telemetry and the logger on odd ones.
+// other's ticks: the accelerometer angles fall on ticks 0 mod 4, the height estimate and the
+// vertical loops on 2 mod 4, telemetry and the logger on odd ones. The vertical task's largest
+// run is a landing's (100).
 template <class Flight>
 inline constexpr Task<Flight> kFlightTaskTable[kFlightTaskCount] = {
     // name          run                                                   divider  phase  budget
-    {wire::kTaskNames[kLinkTask], [](Flight& f) { f.run_link(); }, 1, 0, 5000},
+    {wire::kTaskNames[kLinkTask], [](Flight& f) { f.run_link(); }, 1, 0, 5500},
     {wire::kTaskNames[kFilterTask], [](Flight& f) { f.run_filter(); }, 1, 0, 700},
     {wire::kTaskNames[kCalibrationTask], [](Flight& f) { f.run_calibration(); }, 1, 0, 400},
     {wire::kTaskNames[kAccelAnglesTask], [](Flight& f) { f.chain().estimate_accel_angles(); },
@@ -65,6 +68,9 @@ inline constexpr Task<Flight> kFlightTaskTable[kFlightTaskCount] = {
      [](const Flight& f) { return f.telemetry_divider(); }},
     {wire::kTaskNames[kLoggerTask], [](Flight& f) { f.run_logger(); }, 1, 3, 900,
      [](const Flight& f) { return f.log_divider(); }},
+    // On the height estimate's ticks, after it: each run sees a fresh height and vertical speed.
+    {wire::kTaskNames[kVerticalTask], [](Flight& f) { f.chain().control_vertical(); },
+     Flight::ChainType::kHeightDivider, Flight::ChainType::kHeightDivider / 2, 200},
 };
 
 // The table as a pointer (for readers, cppcheck among them, that stumble on a variable template
@@ -89,17 +95,25 @@ namespace task_sets {
 // covers the whole flight, panic included.
 inline constexpr uint8_t kSafe[] = {kLinkTask,   kFilterTask, kAccelAnglesTask, kEstimatorTask,
                                     kHeightTask, kSafetyTask, kTelemetryTask,   kLoggerTask};
-inline constexpr uint8_t kPanic[] = {kLinkTask,   kFilterTask, kAccelAnglesTask, kEstimatorTask,
-                                     kHeightTask, kSafetyTask, kTelemetryTask,   kLoggerTask};
+// A panic runs the control tasks: a landing flies on them (the safety machine passes their
+// engines); the cut (hold, ramp) overrides them.
+inline constexpr uint8_t kPanic[] = {kLinkTask,   kFilterTask,   kAccelAnglesTask,     kEstimatorTask,
+                                     kHeightTask, kVerticalTask, kAttitudeControlTask, kYawControlTask,
+                                     kMixerTask,  kSafetyTask,   kTelemetryTask,       kLoggerTask};
 inline constexpr uint8_t kManual[] = {kLinkTask,        kFilterTask, kAccelAnglesTask, kEstimatorTask, kHeightTask,
                                       kManualMixerTask, kSafetyTask, kTelemetryTask,   kLoggerTask};
 inline constexpr uint8_t kCalibration[] = {kLinkTask,   kFilterTask,    kCalibrationTask,
                                            kSafetyTask, kTelemetryTask, kLoggerTask};
 inline constexpr uint8_t kYawControl[] = {kLinkTask,       kFilterTask, kAccelAnglesTask, kEstimatorTask, kHeightTask,
                                           kYawControlTask, kMixerTask,  kSafetyTask,      kTelemetryTask, kLoggerTask};
-inline constexpr uint8_t kFullControl[] = {kLinkTask,   kFilterTask,          kAccelAnglesTask, kEstimatorTask,
-                                           kHeightTask, kAttitudeControlTask, kYawControlTask,  kMixerTask,
-                                           kSafetyTask, kTelemetryTask,       kLoggerTask};
+// Full control, height hold and panic fly the same rows, so they share one set (the scheduler
+// compiles each set into code of its own, and the image has to stay within the board's budget, docs/devboard.md):
+// in full control the vertical task returns at once (the lift is the pilot's); in height hold it
+// flies the lift; a panic that lands flies its descent on all of them, and the cut (hold, ramp)
+// overrides their engines.
+inline constexpr uint8_t kFlying[] = {kLinkTask,   kFilterTask,   kAccelAnglesTask,     kEstimatorTask,
+                                      kHeightTask, kVerticalTask, kAttitudeControlTask, kYawControlTask,
+                                      kMixerTask,  kSafetyTask,   kTelemetryTask,       kLoggerTask};
 
 template <size_t N>
 constexpr TaskSet set(const uint8_t (&ids)[N]) {
@@ -118,25 +132,66 @@ struct FlightMode {
 
 template <class Flight>
 inline constexpr FlightMode<Flight> kFlightModes[kModeCount] = {
-    {Mode::safe, task_sets::set(task_sets::kSafe), nullptr},
-    {Mode::panic, task_sets::set(task_sets::kPanic), nullptr},
-    {Mode::manual, task_sets::set(task_sets::kManual), nullptr},
+    // The lift is the pilot's stick again.
+    {Mode::safe, task_sets::set(task_sets::kSafe), [](Flight& f) { f.chain().release_lift(); }},
+    // A panic that lands starts its descent from the lift that was flying (the safety machine
+    // says which panic it is).
+    {Mode::panic, task_sets::set(task_sets::kFlying), [](Flight& f) { f.enter_panic(); }},
+    {Mode::manual, task_sets::set(task_sets::kManual), [](Flight& f) { f.chain().release_lift(); }},
     // A calibration run starts over whenever the mode is entered.
     {Mode::calibration, task_sets::set(task_sets::kCalibration), [](Flight& f) { f.chain().enter_calibration(); }},
     // The yaw loop's integral starts empty.
-    {Mode::yaw_control, task_sets::set(task_sets::kYawControl), [](Flight& f) { f.chain().enter_yaw_control(); }},
-    // The attitude and yaw loops' integrals start empty.
-    {Mode::full_control, task_sets::set(task_sets::kFullControl),
+    {Mode::yaw_control, task_sets::set(task_sets::kYawControl),
      [](Flight& f) {
+       f.chain().release_lift();
+       f.chain().enter_yaw_control();
+     }},
+    // The attitude and yaw loops' integrals start empty, unless the vehicle comes back from height
+    // hold: it flew on, and the integrals hold its trim.
+    {Mode::full_control, task_sets::set(task_sets::kFlying),
+     [](Flight& f) {
+       const bool from_height_hold = f.chain().holding_height();
+       f.chain().release_lift();
+       if (from_height_hold) return;
        f.chain().enter_attitude_control();
        f.chain().enter_yaw_control();
      }},
+    // The height at entry is held from the thrust the pilot's lift gave.
+    {Mode::height_hold, task_sets::set(task_sets::kFlying), [](Flight& f) { f.chain().enter_height_hold(); }},
 };
+
+// The distinct sets, each compiled once, and which of them each mode runs (modes_in_order and the
+// flight's static checks keep the two tables in step).
+inline constexpr TaskSet kCompiledSets[] = {
+    task_sets::set(task_sets::kSafe),       task_sets::set(task_sets::kManual), task_sets::set(task_sets::kCalibration),
+    task_sets::set(task_sets::kYawControl), task_sets::set(task_sets::kFlying),
+};
+inline constexpr uint8_t kCompiledSetCount = sizeof(kCompiledSets) / sizeof(kCompiledSets[0]);
+
+// The compiled set a mode's row names (the same rows are the same set).
+template <class Flight>
+constexpr uint8_t compiled_set_of(uint8_t mode);
 
 // The mode table as a pointer, as flight_tasks() above.
 template <class Flight>
 constexpr const FlightMode<Flight>* flight_modes() {
   return kFlightModes<Flight>;
+}
+
+template <class Flight>
+constexpr uint8_t compiled_set_of(uint8_t mode) {
+  for (uint8_t s = 0; s < kCompiledSetCount; ++s) {
+    if (kCompiledSets[s].ids == flight_modes<Flight>()[mode].tasks.ids) return s;
+  }
+  return kCompiledSetCount;  // not compiled: every_mode_has_a_compiled_set() fails
+}
+
+template <class Flight>
+constexpr bool every_mode_has_a_compiled_set() {
+  for (uint8_t m = 0; m < kModeCount; ++m) {
+    if (compiled_set_of<Flight>(m) >= kCompiledSetCount) return false;
+  }
+  return true;
 }
 
 template <class Flight>

@@ -38,11 +38,11 @@ class FlightTelemetry {
   }
 
  private:
-  // Engines, set-points, system, link and log status take turns, each at a fifth of the rate.
+  // Engines, set-points, system, link, log status and height take turns, each at a sixth of the rate.
   template <class Flight, class Send>
   void slow_group(const Flight& f, Send& send) {
     const uint8_t group = slow_group_;
-    slow_group_ = static_cast<uint8_t>(slow_group_ == 4 ? 0 : slow_group_ + 1);
+    slow_group_ = static_cast<uint8_t>(slow_group_ == 5 ? 0 : slow_group_ + 1);
     if (group == 0) {
       wire::TelemetryEngines m;
       for (int i = 0; i < 4; ++i) m.engine[i] = f.engines().value[i];
@@ -58,6 +58,10 @@ class FlightTelemetry {
                                               static_cast<uint16_t>(deadline_misses_)}));
     } else if (group == 4) {
       send(wire::encode(f.log().status()));
+    } else if (group == 5) {
+      const auto& chain = f.chain();
+      send(wire::encode(wire::TelemetryHeight{chain.height_mm(), wire::saturate_i16(chain.climb_mm_s()),
+                                              chain.height_valid() ? wire::kHeightValid : uint8_t{0}}));
     } else {
       const wire::LinkCounters& c = f.link_counters();
       send(wire::encode(wire::TelemetryLink{static_cast<uint16_t>(c.frames_ok), static_cast<uint16_t>(c.check_failures),

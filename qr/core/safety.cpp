@@ -15,6 +15,8 @@ constexpr int filter_shift(uint32_t hz) {
 }
 constexpr int kBatteryFilterShift = filter_shift(kControlHz);
 static_assert((1u << kBatteryFilterShift) >= kControlHz && kControlHz > (1u << kBatteryFilterShift) / 2);
+// The flying lift's low-pass: a quarter of the battery's time constant, 0.26 s.
+constexpr int kFlyingLiftShift = kBatteryFilterShift - 2;
 
 // A request into a mode other than safe/panic must pass every guard, in this order.
 struct Guard {
@@ -24,15 +26,43 @@ struct Guard {
 
 constexpr Guard kGuards[] = {
     {NackReason::not_from_this_mode,
-     [](Mode from, Mode, const Situation&, const SafetyLimits&) { return from != Mode::safe; }},
-    {NackReason::controls_not_neutral,
-     [](Mode, Mode, const Situation& s, const SafetyLimits&) { return !s.controls.neutral(); }},
-    {NackReason::engines_running,
-     [](Mode, Mode, const Situation& s, const SafetyLimits&) { return !s.engines.all_zero(); }},
+     [](Mode from, Mode to, const Situation&, const SafetyLimits&) { return from != rule(to).entered_from; }},
+    // Leaving safe: the pilot's hands and the engines at rest (height hold is entered in flight).
+    {NackReason::controls_not_neutral, [](Mode from, Mode, const Situation& s,
+                                          const SafetyLimits&) { return from == Mode::safe && !s.controls.neutral(); }},
+    {NackReason::engines_running, [](Mode from, Mode, const Situation& s,
+                                     const SafetyLimits&) { return from == Mode::safe && !s.engines.all_zero(); }},
     {NackReason::not_calibrated, [](Mode, Mode to, const Situation& s,
                                     const SafetyLimits&) { return rule(to).needs_calibration && !s.calibrated; }},
+    // A height to hold needs the barometer's reference, made by the calibration.
+    {NackReason::not_calibrated,
+     [](Mode, Mode to, const Situation& s, const SafetyLimits&) { return rule(to).holds_height && !s.height_valid; }},
+    {NackReason::not_flying,
+     [](Mode, Mode to, const Situation& s, const SafetyLimits&) { return rule(to).holds_height && s.landed; }},
     {NackReason::battery_low,
      [](Mode, Mode, const Situation& s, const SafetyLimits& l) { return s.battery_mv < l.battery_panic_mv; }},
+};
+
+// A panic lands (level, a bounded descent on the height estimate, the engines stopped at
+// touchdown) only when everything it flies on is trusted; each row is one thing it needs.
+// Otherwise it is the IN4073 cut: hold, ramp, safe.
+struct LandingNeed {
+  bool (*met)(Mode from, PanicCause cause, const Situation& s, uint16_t flying_lift, const SafetyLimits& l);
+};
+
+constexpr LandingNeed kLandingNeeds[] = {
+    // The attitude loops fly it level: a mode that flies on the attitude estimate, calibrated.
+    {[](Mode from, PanicCause, const Situation&, uint16_t, const SafetyLimits&) { return rule(from).needs_attitude; }},
+    {[](Mode, PanicCause, const Situation& s, uint16_t, const SafetyLimits&) { return s.calibrated; }},
+    // The descent is flown on the height estimate's vertical speed.
+    {[](Mode, PanicCause, const Situation& s, uint16_t, const SafetyLimits&) { return s.height_valid; }},
+    // A vehicle beyond the tilt limit for the tilt time is lost: the attitude loops could not hold it.
+    {[](Mode, PanicCause cause, const Situation&, uint16_t, const SafetyLimits&) { return cause != PanicCause::tilt; }},
+    // It was flying: some lift above idle in the last quarter second (a lift stick let go an
+    // instant before the panic still counts; a vehicle resting with its engines still does not).
+    {[](Mode, PanicCause, const Situation&, uint16_t flying_lift, const SafetyLimits& l) {
+      return flying_lift > l.idle;
+    }},
 };
 
 // Watchdogs that end a flight: each is checked every tick in the modes it applies to.
@@ -87,7 +117,8 @@ SafetyLimits safety_limits(const wire::ParameterValues& p) {
   l.battery_panic_mv = static_cast<uint16_t>(get(ParamId::battery_panic_mv));
   l.tilt_limit_mrad = static_cast<int32_t>(get(ParamId::tilt_limit_mrad));
   l.tilt_time_us = get(ParamId::tilt_time_ms) * 1000u;
-  l.panic_level = static_cast<uint16_t>(get(ParamId::panic_level));
+  l.panic_hold_pct = static_cast<uint16_t>(get(ParamId::panic_level));
+  l.descent_mm_s = static_cast<uint16_t>(get(ParamId::panic_descent_mm_s));
   l.panic_hold_us = get(ParamId::panic_hold_ms) * 1000u;
   l.panic_ramp_us = get(ParamId::panic_ramp_ms) * 1000u;
   l.idle = static_cast<uint16_t>(get(ParamId::idle_level));
@@ -99,6 +130,12 @@ NackReason SafetyMachine::request(uint8_t wanted, const Situation& s) {
   if (wanted >= kModeCount) return NackReason::unknown_mode;
   const Mode to = static_cast<Mode>(wanted);
   if (to == mode_) return NackReason::none;
+
+  // The pilot's toggle out of height hold: back to full control, flying on.
+  if (mode_ == Mode::height_hold && to == Mode::full_control) {
+    enter(to);
+    return NackReason::none;
+  }
 
   if (to == Mode::safe || to == Mode::panic) {
     if (rule(mode_).flies) {
@@ -112,6 +149,7 @@ NackReason SafetyMachine::request(uint8_t wanted, const Situation& s) {
   for (const Guard& g : kGuards) {
     if (g.blocks(mode_, to, s, limits_)) return g.reason;
   }
+  held_lift_ = s.controls.lift;
   enter(to);
   return NackReason::none;
 }
@@ -126,7 +164,20 @@ void SafetyMachine::calibration_finished() {
   if (mode_ == Mode::calibration) enter(Mode::safe);
 }
 
+void SafetyMachine::sticks_moved(const ControlInput& c) {
+  if (mode_ == Mode::height_hold && c.lift != held_lift_) enter(Mode::full_control);
+}
+
 void SafetyMachine::supervise(const Situation& s) {
+  // The lift that was flying: the engines' mean, low-passed, frozen while panicking.
+  if (mode_ != Mode::panic) {
+    const uint32_t mean_q8 = (uint32_t{s.engines.value[0]} + s.engines.value[1] + s.engines.value[2] +
+                              s.engines.value[3])
+                             << 6;
+    flying_q8_ = static_cast<uint32_t>(
+        static_cast<int32_t>(flying_q8_) +
+        ((static_cast<int32_t>(mean_q8) - static_cast<int32_t>(flying_q8_)) >> kFlyingLiftShift));
+  }
   // First-order low-pass, alpha = 2^-k per tick with 2^k the control rate rounded up to a power of
   // two: a time constant of 1.02 s at 1 kHz and at 500 Hz. Starts at the first sample (no transient from zero).
   const uint32_t sample_q8 = static_cast<uint32_t>(rested_mv(s.battery_mv, s.engines, limits_.battery_sag_mv)) << 8;
@@ -159,20 +210,36 @@ void SafetyMachine::supervise(const Situation& s) {
     }
   }
 
-  if (mode_ == Mode::panic && s.now_us - panic_start_us_ >= limits_.panic_hold_us + limits_.panic_ramp_us) {
-    enter(Mode::safe);
+  if (mode_ == Mode::panic) {
+    const uint32_t elapsed = s.now_us - panic_start_us_;
+    // A panic entered in this very call sees the chain's verdict from before its descent began
+    // (a lift stick let go reads "landed"): only a later tick's touchdown counts.
+    if (landing_ && s.landed && elapsed > 0) {
+      enter(Mode::safe);  // touched down: the engines stop this tick
+    } else if (landing_ && elapsed >= descent_limit_us_) {
+      // No touchdown in twice the time the descent needs: the landing is not working; the cut.
+      landing_ = false;
+      panic_start_us_ = s.now_us;
+    } else if (!landing_ && elapsed >= limits_.panic_hold_us + limits_.panic_ramp_us) {
+      enter(Mode::safe);
+    }
   }
   if (exit_pending_ && mode_ == Mode::safe) stopped_ = true;
 }
 
 EngineCommand SafetyMachine::limit_engines(const EngineCommand& wanted, const Situation& s) const {
   EngineCommand out;
+  if (mode_ == Mode::panic && landing_) {
+    // The chain flies the landing (level, descending): its engines, within their range.
+    for (int i = 0; i < 4; ++i) out.value[i] = wanted.value[i] > kEngineMax ? kEngineMax : wanted.value[i];
+    return out;
+  }
   if (mode_ == Mode::panic) {
+    // The cut: all four engines alike (no moment), held, then ramped to zero.
     const uint32_t t = s.now_us - panic_start_us_;
     const uint32_t end = limits_.panic_hold_us + limits_.panic_ramp_us;
+    const uint16_t hold = hold_level_;
     for (int i = 0; i < 4; ++i) {
-      const uint16_t from = panic_from_.value[i];
-      const uint16_t hold = from < limits_.panic_level ? from : limits_.panic_level;
       out.value[i] = t < limits_.panic_hold_us ? hold : t < end ? scale(hold, end - t, limits_.panic_ramp_us) : 0;
     }
     return out;
@@ -186,10 +253,19 @@ EngineCommand SafetyMachine::limit_engines(const EngineCommand& wanted, const Si
 }
 
 void SafetyMachine::enter_panic(PanicCause cause, const Situation& s) {
+  landing_ = true;
+  for (const LandingNeed& need : kLandingNeeds) {
+    if (!need.met(mode_, cause, s, flying_lift(), limits_)) landing_ = false;
+  }
   enter(Mode::panic);
   panic_cause_ = cause;
   panic_start_us_ = s.now_us;
-  panic_from_ = s.engines;
+  hold_level_ = scale(flying_lift(), limits_.panic_hold_pct, 100);
+  // Twice the time to descend from the height estimate (at most 100 m) plus 2 m, at the descent
+  // rate: (h + 2000 mm) x 2000 / v ms. A division, once per panic.
+  const int32_t h = s.height_mm < 0 ? 0 : s.height_mm > 100000 ? 100000 : s.height_mm;
+  const uint32_t rate = limits_.descent_mm_s == 0 ? 1u : limits_.descent_mm_s;
+  descent_limit_us_ = static_cast<uint32_t>(h + 2000) * 2000u / rate * 1000u;
 }
 
 }  // namespace qr

@@ -25,10 +25,11 @@ struct SafetyLimits {
   uint16_t battery_panic_mv;
   uint16_t battery_warn_mv;
   int32_t tilt_limit_mrad;
-  uint32_t tilt_time_us;  // beyond the tilt limit for this long: lost, not upset
-  uint16_t panic_level;   // engines hold at most this while panicking
+  uint32_t tilt_time_us;    // beyond the tilt limit for this long: lost, not upset
+  uint16_t panic_hold_pct;  // the cut: engines hold at this share of the lift that was flying
   uint32_t panic_hold_us;
   uint32_t panic_ramp_us;
+  uint16_t descent_mm_s;                 // the landing: the descent rate (the chain flies it; the machine times it)
   uint16_t idle;                         // no engine below this while lift > 0 in flight
   uint16_t battery_sag_mv;               // the sag at all engines full (battery_sag_mv parameter)
   uint32_t battery_trip_us = 100000;     // the battery measure below the panic level this long: panic
@@ -46,7 +47,10 @@ struct Situation {
   bool calibrated = false;
   uint16_t battery_mv = 0;
   uint32_t last_frame_us = 0;
-  int32_t tilt_mrad = 0;  // max(|roll|, |pitch|) from the attitude estimator
+  int32_t tilt_mrad = 0;      // max(|roll|, |pitch|) from the attitude estimator
+  bool height_valid = false;  // the height estimate has its reference (a calibration with the barometer)
+  int32_t height_mm = 0;      // the height estimate
+  bool landed = false;        // the chain's landed detector: on the ground (in a landing: touched down)
 };
 
 class SafetyMachine {
@@ -56,6 +60,13 @@ class SafetyMachine {
   Mode mode() const { return mode_; }
   bool stopped() const { return stopped_; }
   PanicCause panic_cause() const { return panic_cause_; }
+  // This panic lands: the chain holds the vehicle level and descends at descent_mm_s until it
+  // touches down (Situation::landed), then the engines stop. Otherwise it is the cut: the engines
+  // hold at panic_hold_pct of the flying lift, ramp to zero, and the machine goes to safe.
+  bool landing() const { return landing_; }
+  // The lift that was flying, engine units: the mean engine command over about the last quarter
+  // of a second outside panic (so a lift stick dropped just before a panic still counts).
+  uint16_t flying_lift() const { return static_cast<uint16_t>(flying_q8_ >> 8); }
   bool battery_warning() const { return battery_warning_; }
   // What the battery rules judge, in mV: the resting voltage (the measured one plus the sag the
   // engines' load causes through the pack's internal resistance, battery_sag_mv) low-passed with a
@@ -80,6 +91,10 @@ class SafetyMachine {
     entered_ = 0;
     return entered;
   }
+
+  // The pilot's sticks as each control frame brings them, before the chain uses them: any change
+  // of the lift ends height hold at once, back to full control.
+  void sticks_moved(const ControlInput& c);
 
   // Every tick: watchdogs (link, battery, tilt), the panic timeline and a pending exit.
   void supervise(const Situation& s);
@@ -108,7 +123,11 @@ class SafetyMachine {
   uint32_t tilted_since_us_ = 0;
   PanicCause panic_cause_ = PanicCause::none;
   uint32_t panic_start_us_ = 0;
-  EngineCommand panic_from_;
+  bool landing_ = false;
+  uint32_t descent_limit_us_ = 0;  // a landing not touched down by then becomes the cut
+  uint16_t hold_level_ = 0;        // the cut's level, engine units
+  uint32_t flying_q8_ = 0;         // flying_lift() x 256
+  uint16_t held_lift_ = 0;         // the lift stick when height hold was entered
 };
 
 }  // namespace qr

@@ -150,7 +150,7 @@ class Scheduler {
   }
 
   // A row's work, one copy in the image however many sets run it (inlined into every set, the
-  // task bodies would take the image past the board's 64 KiB).
+  // task bodies would take the image past the board's budget, docs/devboard.md).
   template <uint8_t Id>
   [[gnu::noinline]] static void run_row(Context& context) {
     Context::task(Id).run(context);

@@ -30,6 +30,7 @@ concept SignalChain = requires(C& c, const C& cc, const wire::ParameterValues& p
   c.estimate_accel_angles();
   c.estimate();
   c.estimate_height();
+  c.control_vertical();
   c.control_attitude();
   c.control_yaw();
   { c.mix() } -> ConvertibleToEngines;
@@ -39,8 +40,13 @@ concept SignalChain = requires(C& c, const C& cc, const wire::ParameterValues& p
   c.enter_calibration();
   c.enter_attitude_control();
   c.enter_yaw_control();
+  c.enter_height_hold();
+  c.start_descent(uint16_t{});  // a panic that lands, from the lift that was flying
+  c.release_lift();             // every other mode: the pilot's lift stick
   // read-outs, in the wire's units
   {cc.calibrated()};
+  {cc.landed()};
+  {cc.height_valid()};
   {cc.tilt_mrad()};
   {cc.height_mm()};
   {cc.climb_mm_s()};

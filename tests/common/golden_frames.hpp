@@ -90,6 +90,7 @@ inline std::vector<GoldenFrame> golden_frames() {
       golden("G25", ModeChange{17, Mode::manual}, "4D 12 11 02 17 31 A9 C5"),
       golden("G26", ModeChange{17, Mode::panic}, "4D 12 11 01 E1 A8 A5 B2"),
       golden("G27", Ack{MessageType::mode_change, 17}, "4D 81 12 11 6A"),
+      golden("G28", TelemetryHeight{1523, -412, kHeightValid}, "4D 9F F3 05 00 00 64 FE 01 7C"),
   };
 }
 

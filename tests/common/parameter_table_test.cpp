@@ -48,7 +48,9 @@ TEST(ParameterTable, DefaultsTheSafetyRulesName) {
   EXPECT_GT(default_of(ParamId::battery_warning_mv), default_of(ParamId::battery_panic_mv));
   // 45 degrees in mrad: 1000 * pi / 4 = 785.4.
   EXPECT_EQ(default_of(ParamId::tilt_limit_mrad), 785);
-  EXPECT_LT(default_of(ParamId::idle_level), default_of(ParamId::panic_level));
+  // The cut holds below the flying lift (the vehicle sinks), the landing descends gently.
+  EXPECT_LT(default_of(ParamId::panic_level), 100);
+  EXPECT_LE(default_of(ParamId::panic_descent_mm_s), 1000);
 }
 
 TEST(ParameterTable, EveryParameterTheIssueListsIsThere) {

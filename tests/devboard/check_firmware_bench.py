@@ -9,7 +9,7 @@ import argparse
 import json
 import sys
 
-MODES = ["safe", "panic", "manual", "calibration", "yaw", "full", "full-float"]
+MODES = ["safe", "panic", "panic-landing", "manual", "calibration", "yaw", "full", "full-float"]
 
 
 def main():

@@ -103,13 +103,18 @@ struct Rig {
     return flight.mode() == mode;
   }
   // Arms `mode` the legal way, from safe with neutral sticks; false if the firmware refused.
-  bool arm(Mode mode) {
+  // `landing`: a panic out of full control, calibrated and flying, which lands (the vertical
+  // loops and the attitude loops run; docs/safety.md rule 6).
+  bool arm(Mode mode, bool landing) {
     board.send(wire::ParamSet{++seq, static_cast<uint8_t>(wire::ParamId::telemetry_rate_hz), 100});
-    if (mode == Mode::yaw_control || mode == Mode::full_control) {
+    if (mode == Mode::yaw_control || mode == Mode::full_control || landing) {
       if (!request(Mode::calibration)) return false;
       for (uint32_t i = 0; i < kArmingTicksMax && flight.mode() != Mode::safe; ++i) step();
     }
     if (mode == Mode::safe) return true;
+    if (mode == Mode::panic && landing) {
+      return request(Mode::full_control) && (fly(300), request(Mode::panic)) && flight.safety().landing();
+    }
     if (mode == Mode::panic) return request(Mode::manual) && (fly(200), request(Mode::panic));
     return request(mode);
   }
@@ -146,12 +151,12 @@ struct ModeFigures {
 // Runs one mode and prints its line (per task: runs, mean, max, budget, overruns; and the
 // scheduler's own cost per tick); the figures are zero if the mode could not be armed.
 template <class Chain>
-ModeFigures bench_mode(Rig<Chain>& rig, Mode mode, const char* suffix) {
+ModeFigures bench_mode(Rig<Chain>& rig, Mode mode, const char* suffix, bool landing) {
   rv32virt::puts("{\"mode\":\"");
   rv32virt::puts(wire::mode_key(mode));
   rv32virt::puts(suffix);
   rv32virt::puts("\"");
-  if (!rig.arm(mode)) {
+  if (!rig.arm(mode, landing)) {
     rv32virt::puts(",\"error\":\"the firmware refused the mode\"}\n");
     return {};
   }
@@ -192,10 +197,10 @@ ModeFigures bench_mode(Rig<Chain>& rig, Mode mode, const char* suffix) {
   return figures;
 }
 
-template <Mode M, class Chain>
+template <Mode M, class Chain, bool Landing = false>
 ModeFigures measure(const char* suffix) {
   static Rig<Chain> rig;  // one fresh firmware per mode, outside the 8 KiB stack
-  return bench_mode(rig, M, suffix);
+  return bench_mode(rig, M, suffix, Landing);
 }
 
 }  // namespace
@@ -203,6 +208,7 @@ ModeFigures measure(const char* suffix) {
 int main() {
   measure<Mode::safe, qr::FixedChain>("");
   measure<Mode::panic, qr::FixedChain>("");
+  measure<Mode::panic, qr::FixedChain, true>("-landing");
   measure<Mode::manual, qr::FixedChain>("");
   measure<Mode::calibration, qr::FixedChain>("");
   measure<Mode::yaw_control, qr::FixedChain>("");

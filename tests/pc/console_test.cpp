@@ -245,6 +245,38 @@ TEST(Console, CalibrationThenYawControl) {
   EXPECT_EQ(b.qr.mode, wire::Mode::yaw_control);
 }
 
+// The last mode the console asked for, as the QR received it.
+wire::Mode last_mode_request(const Bench& b) {
+  wire::Mode mode = wire::Mode::safe;
+  for (const wire::Frame& f : b.qr.requests) {
+    wire::ModeChange m;
+    if (f.type == wire::MessageType::mode_change && wire::decode(f, m)) mode = m.mode;
+  }
+  return mode;
+}
+
+// 7 is IN4073's height mode key: a toggle, which way by the mode the QR reports.
+TEST(Console, HeightHoldKeyToggles) {
+  Bench b;
+  b.connect();
+  b.key('3');
+  ASSERT_TRUE(b.run_until([&] { return b.console.telemetry().flag(wire::kFlagCalibrated); }, 1000));
+  b.run(50);
+  b.key('5');
+  b.run(100);
+  ASSERT_EQ(b.qr.mode, wire::Mode::full_control);
+  b.key('7');
+  b.run(50);
+  EXPECT_EQ(last_mode_request(b), wire::Mode::height_hold) << "full control: 7 asks for height hold";
+  b.qr.mode = wire::Mode::height_hold;  // as the firmware would, flying
+  ASSERT_TRUE(b.run_until(
+      [&] { return b.console.telemetry().attitude && b.console.telemetry().attitude->mode == wire::Mode::height_hold; },
+      200));
+  b.key('7');
+  b.run(50);
+  EXPECT_EQ(last_mode_request(b), wire::Mode::full_control) << "height hold: 7 asks for full control";
+}
+
 TEST(Console, EscapePanicsAndTheQrSettlesInSafe) {
   Bench b;
   enter_manual(b);

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # qrterm driven in tmux as a pilot would, its screen captured and asserted:
-#   start -> the screen shows safe (and, flying qrsim, its truth line; n pushes); 3 calibrates;
+#   start -> the screen shows safe (and, flying qrsim, its truth line; n pushes); 3 calibrates
+#   (and the height row shows the height estimate, or -- from the fake QR);
 #   2 (lift at zero) enters manual; a pressed N times raises the engines; ESC -> panic -> safe;
 #   the simulator killed -> LINK LOST within 2 s; x exits and the terminal is given back as it was.
 #
@@ -42,6 +43,12 @@ keys 3
 wait_for 'QR mode: calibration' 3 "3 asks for calibration"
 wait_for 'QR calibrated' 30 "calibration done"
 wait_for 'MODE +safe ' 5 "back in safe after calibration"
+# The height estimate's row: a figure from the firmware (qrsim), or -- from the fake QR.
+if [[ $(basename "$sim") == qrsim ]]; then
+  wait_for 'height +[-+][0-9.]+ m  climb [-+][0-9.]+ m/s +height hold off \(7\)' 5 "the height row"
+else
+  wait_for 'height +-- m' 5 "the height row, empty"
+fi
 
 # 3. Manual with the lift at zero.
 keys 2

@@ -83,8 +83,9 @@ TEST_F(FlightTest, StartsInSafeAndStreamsTelemetryAtTheParameterRate) {
   EXPECT_EQ(attitude.back().mode, Mode::safe);
   // The rates frame follows the attitude frame; the last one may still be on its way.
   EXPECT_NEAR(static_cast<double>(got<wire::TelemetryRates>().size()), static_cast<double>(attitude.size()), 1.0);
-  EXPECT_NEAR(static_cast<double>(got<wire::TelemetrySystem>().size()), rate / 5.0, 1.0);  // a fifth: 5 slow groups
-  EXPECT_NEAR(static_cast<double>(got<wire::LogStatus>().size()), rate / 5.0, 1.0);
+  EXPECT_NEAR(static_cast<double>(got<wire::TelemetrySystem>().size()), rate / 6.0, 1.0);  // a sixth: 6 slow groups
+  EXPECT_NEAR(static_cast<double>(got<wire::LogStatus>().size()), rate / 6.0, 1.0);
+  EXPECT_NEAR(static_cast<double>(got<wire::TelemetryHeight>().size()), rate / 6.0, 1.0);
   EXPECT_EQ(got<wire::TelemetrySystem>().back().battery_mv, 12000);
   EXPECT_EQ(flight.tx_dropped_frames(), 0u);
 
@@ -165,11 +166,11 @@ TEST_F(FlightTest, ARequestReusingASeqWithNewContentIsAppliedNotAckedFromMemory)
   EXPECT_EQ(got<wire::Ack>().size(), 2u);
 
   const uint8_t level = static_cast<uint8_t>(wire::ParamId::panic_level);
-  send(wire::ParamSet{17, level, 300});
+  send(wire::ParamSet{17, level, 80});
   run_ms(5);
-  send(wire::ParamSet{17, level, 250});
+  send(wire::ParamSet{17, level, 70});
   run_ms(5);
-  EXPECT_EQ(flight.parameters().get(wire::ParamId::panic_level), 250) << "the second value is the one acked";
+  EXPECT_EQ(flight.parameters().get(wire::ParamId::panic_level), 70) << "the second value is the one acked";
 }
 
 TEST_F(FlightTest, AStopIsAppliedEvenWhenItIsAResend) {
@@ -234,11 +235,13 @@ TEST_F(FlightTest, LinkLossInFlightPanicsThenSettlesInSafe) {
   request_mode(Mode::manual);
   run_ms(5);
   sticks.lift = 500;
-  run_ms(100);
+  run_ms(1500);        // long enough for the machine's flying lift to be the lift
   run_ms(260, false);  // the console goes quiet
   EXPECT_EQ(flight.mode(), Mode::panic);
   EXPECT_NE(debug_text().find("mode: panic (link lost)\n"), std::string::npos);
-  EXPECT_EQ(board.engines.value[0], flight.safety().limits().panic_level);
+  // Manual: the cut, every engine at panic_level % of the lift that was flying.
+  EXPECT_FALSE(flight.safety().landing());
+  EXPECT_NEAR(board.engines.value[0], 500 * flight.safety().limits().panic_hold_pct / 100, 2);
   run_ms(3100, false);
   EXPECT_EQ(flight.mode(), Mode::safe);
   EXPECT_TRUE(board.engines.all_zero());
@@ -256,6 +259,65 @@ TEST_F(FlightTest, TiltFromTheEstimatorPanicsFullControl) {
   EXPECT_EQ(flight.mode(), Mode::full_control) << "an upset, not yet a lost vehicle";
   run_ms(10);
   EXPECT_EQ(flight.mode(), Mode::panic);
+}
+
+// Safety rule 6 through the flight: a panic in full control with a height estimate starts the
+// chain's descent from the lift that was flying, passes the chain's engines, and ends at the
+// chain's touchdown, the engines stopping in that tick.
+TEST_F(FlightTest, APanicThatLandsFliesTheChainsDescentUntilTouchdown) {
+  calibrate();
+  request_mode(Mode::full_control);
+  run_ms(5);
+  sticks.lift = 520;
+  run_ms(1500);
+  flight.chain().descent_engines = 470;
+  sticks.lift = 0;  // the pilot lets go as he hits the stop
+  request_mode(Mode::panic);
+  run_ms(30);
+  ASSERT_EQ(flight.mode(), Mode::panic);
+  EXPECT_TRUE(flight.safety().landing());
+  EXPECT_EQ(flight.chain().descents_started, 1u);
+  EXPECT_NEAR(flight.chain().descent_from_lift, 520, 30) << "the lift that was flying, not the stick at 0";
+  EXPECT_GT(flight.chain().vertical_controlled, 0u) << "the panic runs the vertical loops";
+  for (uint16_t v : board.engines.value) EXPECT_EQ(v, 470);
+  run_ms(5000);
+  EXPECT_EQ(flight.mode(), Mode::panic) << "a landing lasts until its touchdown";
+  flight.chain().landed_now = true;
+  scheduler.tick();
+  EXPECT_EQ(flight.mode(), Mode::safe);
+  EXPECT_TRUE(board.engines.all_zero());
+  EXPECT_FALSE(flight.chain().descending) << "safe gives the lift back to the stick";
+}
+
+// Safety rule 15 through the flight: the control frame that changes the lift ends height hold in
+// the tick that reads it, before the chain runs: that tick's engines are already the stick's.
+TEST_F(FlightTest, ALiftChangeEndsHeightHoldInTheTickThatReadsIt) {
+  calibrate();
+  request_mode(Mode::full_control);
+  run_ms(5);
+  sticks.lift = 500;
+  run_ms(200);
+  flight.chain().hold_engines = 650;
+  request_mode(Mode::height_hold);
+  run_ms(100);
+  ASSERT_EQ(flight.mode(), Mode::height_hold);
+  EXPECT_EQ(flight.chain().height_holds_entered, 1u);
+  for (uint16_t v : board.engines.value) EXPECT_EQ(v, 650) << "the chain flies the lift";
+  const uint32_t attitude_entered = flight.chain().attitude_entered;
+  sticks.lift = 501;
+  send(sticks);
+  for (int i = 0; i < 10 && flight.controls().lift != 501; ++i) scheduler.tick();
+  ASSERT_EQ(flight.controls().lift, 501);
+  EXPECT_EQ(flight.mode(), Mode::full_control) << "in the tick that read the frame";
+  for (uint16_t v : board.engines.value) EXPECT_EQ(v, 501) << "that tick's engines are the stick's";
+  EXPECT_EQ(flight.chain().attitude_entered, attitude_entered) << "back from height hold the integrals keep their trim";
+  // The pilot's toggle: in again, and out with the mode request.
+  request_mode(Mode::height_hold);
+  run_ms(50);
+  ASSERT_EQ(flight.mode(), Mode::height_hold);
+  request_mode(Mode::full_control);
+  run_ms(50);
+  EXPECT_EQ(flight.mode(), Mode::full_control);
 }
 
 TEST_F(FlightTest, TaskSetsFollowTheMode) {

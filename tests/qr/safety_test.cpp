@@ -8,8 +8,14 @@ namespace qr {
 namespace {
 
 constexpr uint8_t m(Mode mode) { return index(mode); }
-constexpr Mode kAllModes[] = {Mode::safe,        Mode::panic,       Mode::manual,
-                              Mode::calibration, Mode::yaw_control, Mode::full_control};
+bool same(const EngineCommand& a, const EngineCommand& b) {
+  for (int i = 0; i < 4; ++i) {
+    if (a.value[i] != b.value[i]) return false;
+  }
+  return true;
+}
+constexpr Mode kAllModes[] = {Mode::safe,        Mode::panic,        Mode::manual,     Mode::calibration,
+                              Mode::yaw_control, Mode::full_control, Mode::height_hold};
 
 struct Safety : ::testing::Test {
   SafetyLimits limits = safety_limits(wire::ParameterValues{});
@@ -33,12 +39,40 @@ struct Safety : ::testing::Test {
       ASSERT_EQ(machine.request(m(Mode::panic), s), NackReason::none);
       return;
     }
+    if (mode == Mode::height_hold) {  // from full control, flying, with a height estimate
+      enter(Mode::full_control);
+      s.height_valid = true;
+      s.controls.lift = 400;
+      ASSERT_EQ(machine.request(m(mode), s), NackReason::none);
+      ASSERT_EQ(machine.mode(), mode);
+      return;
+    }
     ASSERT_EQ(machine.request(m(mode), s), NackReason::none);
     ASSERT_EQ(machine.mode(), mode);
   }
   void fly(uint16_t engines) {
     s.controls.lift = 400;
     for (auto& e : s.engines.value) e = engines;
+  }
+  // Flying at `engines` for two seconds: the machine has seen the lift that flies.
+  void fly_a_while(uint16_t engines) {
+    fly(engines);
+    run_for(2000000);
+  }
+  // A fresh machine and situation, as at power-up.
+  void restart() {
+    machine = SafetyMachine{limits};
+    s = Situation{};
+    s.battery_mv = 12000;
+    s.calibrated = true;
+  }
+  // Everything a landing needs: full control, calibrated, a height estimate, flying.
+  void fly_trusted(uint16_t engines = 550) {
+    at(1000);
+    enter(Mode::full_control);
+    s.height_valid = true;
+    s.height_mm = 1500;
+    fly_a_while(engines);
   }
   // The pack's voltage under the engines' present load when it would read `rested_mv` at rest:
   // the sag model of docs/safety.md (rule 8), worked out here in floating point.
@@ -76,8 +110,7 @@ TEST_F(Safety, SafeIsReachableFromEveryModeFlightModesThroughPanic) {
     enter(mode);
     if (mode != Mode::calibration && mode != Mode::safe) fly(500);
     EXPECT_EQ(machine.request(m(Mode::safe), s), NackReason::none);
-    const bool flying = mode == Mode::manual || mode == Mode::yaw_control || mode == Mode::full_control ||
-                        mode == Mode::panic;
+    const bool flying = wire::flies(mode) || mode == Mode::panic;
     EXPECT_EQ(machine.mode(), flying ? Mode::panic : Mode::safe) << "from mode " << int(m(mode));
     run_for(limits.panic_hold_us + limits.panic_ramp_us + 1000);
     EXPECT_EQ(machine.mode(), Mode::safe) << "from mode " << int(m(mode));
@@ -144,7 +177,7 @@ TEST_F(Safety, EmergencyStopIsObeyedFromEveryMode) {
     EXPECT_EQ(machine.request(m(Mode::panic), s), NackReason::none);
     EXPECT_TRUE(machine.mode() == Mode::panic || machine.mode() == Mode::safe);
     const EngineCommand out = machine.limit_engines(s.engines, s);
-    for (uint16_t v : out.value) EXPECT_LE(v, limits.panic_level) << "from mode " << int(m(mode));
+    for (uint16_t v : out.value) EXPECT_LE(v, machine.flying_lift()) << "from mode " << int(m(mode));
   }
 }
 
@@ -152,28 +185,214 @@ TEST_F(Safety, EmergencyStopIsObeyedFromEveryMode) {
 TEST_F(Safety, PanicHoldsThenRampsToZeroThenSafeIgnoringControls) {
   at(1000);
   enter(Mode::manual);
-  fly(800);
-  s.engines.value[3] = 200;  // an engine below the panic level stays where it was
+  fly_a_while(800);
+  s.engines.value[3] = 200;  // the engines are held alike: no moment while the vehicle sinks
   ASSERT_EQ(machine.request(m(Mode::panic), s), NackReason::none);
+  EXPECT_FALSE(machine.landing()) << "manual: the cut";
+  const auto hold = static_cast<uint16_t>(machine.flying_lift() * limits.panic_hold_pct / 100);
 
   s.controls.lift = 1000;  // ignored from here on
   s.engines = machine.limit_engines(s.engines, s);
-  EXPECT_EQ(s.engines.value[0], limits.panic_level);
-  EXPECT_EQ(s.engines.value[3], 200);
+  for (uint16_t v : s.engines.value) EXPECT_EQ(v, hold);
 
   run_for(limits.panic_hold_us - 1000);
   EXPECT_EQ(machine.mode(), Mode::panic);
-  EXPECT_EQ(machine.limit_engines(s.engines, s).value[0], limits.panic_level);
+  EXPECT_EQ(machine.limit_engines(s.engines, s).value[0], hold);
 
   run_for(limits.panic_ramp_us / 2);
   const uint16_t mid = machine.limit_engines(s.engines, s).value[0];
   EXPECT_GT(mid, 0);
-  EXPECT_LT(mid, limits.panic_level);
+  EXPECT_LT(mid, hold);
   EXPECT_EQ(machine.request(m(Mode::manual), s), NackReason::not_from_this_mode);
 
   run_for(limits.panic_ramp_us / 2 + 1000);
   EXPECT_EQ(machine.mode(), Mode::safe);
   EXPECT_TRUE(machine.limit_engines(s.engines, s).all_zero());
+}
+
+TEST_F(Safety, PanicHoldLevelIsTheLiftThatWasFlying) {
+  for (const uint16_t flying : {uint16_t{400}, uint16_t{800}}) {
+    restart();
+    at(1000);
+    enter(Mode::manual);
+    fly_a_while(flying);
+    EXPECT_NEAR(machine.flying_lift(), flying, 2);
+    // The pilot lets go of the lift 20 ms before the stop: the lift that flew still counts.
+    fly(0);
+    s.controls.lift = 0;
+    run_for(20000);
+    ASSERT_EQ(machine.request(m(Mode::panic), s), NackReason::none);
+    const uint16_t hold = machine.limit_engines(s.engines, s).value[0];
+    EXPECT_GT(hold, flying * limits.panic_hold_pct / 100 * 9 / 10) << "flying at " << flying;
+    EXPECT_LE(hold, flying * limits.panic_hold_pct / 100) << "flying at " << flying;
+  }
+  // Resting on the ground with the engines still for two seconds: nothing to hold.
+  restart();
+  at(1000);
+  enter(Mode::manual);
+  fly_a_while(600);
+  fly(0);
+  run_for(2000000);
+  ASSERT_EQ(machine.request(m(Mode::panic), s), NackReason::none);
+  EXPECT_LE(machine.limit_engines(s.engines, s).value[0], 3);
+}
+
+TEST_F(Safety, PanicLandsWhenTheEstimatesAreTrusted) {
+  fly_trusted();
+  ASSERT_EQ(machine.request(m(Mode::panic), s), NackReason::none);
+  ASSERT_EQ(machine.mode(), Mode::panic);
+  EXPECT_TRUE(machine.landing());
+  // The chain flies the descent: its engines pass, uneven or not, whatever the sticks.
+  s.controls.lift = 0;
+  const EngineCommand descending{{480, 495, 510, 470}};
+  EXPECT_TRUE(same(machine.limit_engines(descending, s), descending));
+  // Longer than the cut's hold and ramp: a landing ends at its touchdown, not on a clock.
+  run_for(limits.panic_hold_us + limits.panic_ramp_us + 1000000);
+  EXPECT_EQ(machine.mode(), Mode::panic);
+  EXPECT_TRUE(same(machine.limit_engines(descending, s), descending));
+  s.landed = true;  // the chain's touchdown
+  run_for(kPeriodUs);
+  EXPECT_EQ(machine.mode(), Mode::safe);
+  EXPECT_TRUE(machine.limit_engines(descending, s).all_zero());
+}
+
+TEST_F(Safety, PanicCutsWhenAnEstimateIsNotTrusted) {
+  struct Case {
+    const char* what;
+    void (*spoil)(Safety&);
+  };
+  const Case cases[] = {
+      {"not calibrated", [](Safety& t) { t.s.calibrated = false; }},
+      {"no height estimate", [](Safety& t) { t.s.height_valid = false; }},
+      {"not flying",
+       [](Safety& t) {
+         t.fly(0);
+         t.run_for(2000000);
+       }},
+  };
+  for (const Case& c : cases) {
+    restart();
+    fly_trusted();
+    c.spoil(*this);
+    ASSERT_EQ(machine.request(m(Mode::panic), s), NackReason::none);
+    EXPECT_FALSE(machine.landing()) << c.what;
+  }
+  // Manual flies without the attitude estimate.
+  restart();
+  at(1000);
+  enter(Mode::manual);
+  s.height_valid = true;
+  fly_a_while(550);
+  ASSERT_EQ(machine.request(m(Mode::panic), s), NackReason::none);
+  EXPECT_FALSE(machine.landing()) << "manual";
+  // A tilt panic: the attitude loops could not hold the vehicle.
+  restart();
+  fly_trusted();
+  s.tilt_mrad = limits.tilt_limit_mrad + 10;
+  run_for(limits.tilt_time_us + 2000);
+  ASSERT_EQ(machine.mode(), Mode::panic);
+  EXPECT_EQ(machine.panic_cause(), PanicCause::tilt);
+  EXPECT_FALSE(machine.landing()) << "tilt";
+}
+
+TEST_F(Safety, LinkLossAndBatteryPanicsLandToo) {
+  fly_trusted();
+  run_for(limits.link_timeout_us + 2000, false);
+  ASSERT_EQ(machine.mode(), Mode::panic);
+  EXPECT_EQ(machine.panic_cause(), PanicCause::link_lost);
+  EXPECT_TRUE(machine.landing()) << "link loss";
+
+  restart();
+  fly_trusted();
+  s.battery_mv = 9000;
+  run_for(1500000);
+  ASSERT_EQ(machine.mode(), Mode::panic);
+  EXPECT_EQ(machine.panic_cause(), PanicCause::battery_low);
+  EXPECT_TRUE(machine.landing()) << "battery";
+}
+
+// The pilot lets go of the lift and the link goes: the chain's detector says "landed" (lift 0)
+// until the landing's descent starts, which the watchdog's panic must not take for a touchdown.
+TEST_F(Safety, AStickLetGoIsNoTouchdownForAWatchdogsPanic) {
+  fly_trusted();
+  s.controls.lift = 0;
+  s.landed = true;
+  for (uint32_t t = 0; t < 2 * limits.link_timeout_us && machine.mode() != Mode::panic; t += kPeriodUs) {
+    run_for(kPeriodUs, false);
+  }
+  ASSERT_EQ(machine.panic_cause(), PanicCause::link_lost);
+  EXPECT_EQ(machine.mode(), Mode::panic) << "the landing has not begun, let alone touched down";
+  EXPECT_TRUE(machine.landing());
+  s.landed = false;  // the chain's descent has begun
+  run_for(100000, false);
+  EXPECT_EQ(machine.mode(), Mode::panic);
+}
+
+TEST_F(Safety, ALandingThatDoesNotTouchDownBecomesTheCut) {
+  fly_trusted();
+  ASSERT_EQ(machine.request(m(Mode::panic), s), NackReason::none);
+  ASSERT_TRUE(machine.landing());
+  // From 1.5 m at 0.5 m/s: (1.5 + 2) m x 2 / 0.5 m/s = 14 s.
+  const uint32_t limit_us = static_cast<uint32_t>((1500 + 2000) * 2000 / limits.descent_mm_s) * 1000u;
+  run_for(limit_us - 10000);
+  EXPECT_TRUE(machine.landing());
+  run_for(20000);
+  EXPECT_FALSE(machine.landing()) << "no touchdown in twice the time: the cut";
+  EXPECT_EQ(machine.mode(), Mode::panic);
+  EXPECT_GT(machine.limit_engines(s.engines, s).value[0], 0);
+  run_for(limits.panic_hold_us + limits.panic_ramp_us + 1000);
+  EXPECT_EQ(machine.mode(), Mode::safe);
+}
+
+// Rule 13
+TEST_F(Safety, HeightHoldOnlyFromFullControlWhileFlying) {
+  s.height_valid = true;
+  s.controls = ControlInput{};
+  EXPECT_EQ(machine.request(m(Mode::height_hold), s), NackReason::not_from_this_mode) << "from safe";
+  for (Mode from : {Mode::manual, Mode::yaw_control}) {
+    restart();
+    at(1000);
+    enter(from);
+    fly(500);
+    EXPECT_EQ(machine.request(m(Mode::height_hold), s), NackReason::not_from_this_mode) << int(m(from));
+    EXPECT_EQ(machine.mode(), from);
+  }
+  restart();
+  enter(Mode::full_control);
+  fly(500);
+  s.height_valid = false;
+  EXPECT_EQ(machine.request(m(Mode::height_hold), s), NackReason::not_calibrated) << "no barometer reference";
+  s.height_valid = true;
+  s.landed = true;
+  EXPECT_EQ(machine.request(m(Mode::height_hold), s), NackReason::not_flying);
+  EXPECT_EQ(machine.mode(), Mode::full_control);
+  s.landed = false;
+  EXPECT_EQ(machine.request(m(Mode::height_hold), s), NackReason::none) << "sticks need not be neutral in flight";
+  EXPECT_EQ(machine.mode(), Mode::height_hold);
+}
+
+TEST_F(Safety, ALiftChangeEndsHeightHoldAtOnce) {
+  for (const int step : {1, -1, 300}) {
+    restart();
+    at(1000);
+    enter(Mode::height_hold);
+    ControlInput c = s.controls;
+    c.roll = 200;  // the other sticks fly on in height hold
+    c.yaw = -100;
+    machine.sticks_moved(c);
+    EXPECT_EQ(machine.mode(), Mode::height_hold);
+    c.lift = static_cast<uint16_t>(c.lift + step);
+    machine.sticks_moved(c);
+    EXPECT_EQ(machine.mode(), Mode::full_control) << "lift changed by " << step;
+  }
+}
+
+TEST_F(Safety, HeightHoldTogglesBackToFullControl) {
+  at(1000);
+  enter(Mode::height_hold);
+  EXPECT_EQ(machine.request(m(Mode::full_control), s), NackReason::none);
+  EXPECT_EQ(machine.mode(), Mode::full_control);
+  EXPECT_EQ(machine.request(m(Mode::height_hold), s), NackReason::none) << "and in again";
 }
 
 // Rule 7
@@ -191,13 +410,14 @@ TEST_F(Safety, LinkLossPanics) {
 // With the lift stick at zero the pilot still flies: the next frame could lift off, so a flight mode
 // without a link ends whatever the lift.
 TEST_F(Safety, LinkLossPanicsEveryFlightModeWhateverTheLift) {
-  for (Mode mode : {Mode::manual, Mode::yaw_control, Mode::full_control}) {
+  for (Mode mode : {Mode::manual, Mode::yaw_control, Mode::full_control, Mode::height_hold}) {
     SafetyMachine fresh{limits};
     machine = fresh;
     s.controls = ControlInput{};
     s.engines = EngineCommand{};
     at(1000);
     enter(mode);
+    if (mode != Mode::height_hold) s.controls.lift = 0;
     run_for(limits.link_timeout_us + 2000, false);
     EXPECT_EQ(machine.mode(), Mode::panic) << "lift 0 in mode " << int(m(mode));
     EXPECT_EQ(machine.panic_cause(), PanicCause::link_lost);
@@ -302,7 +522,7 @@ TEST_F(Safety, LowBatteryRefusesToLeaveSafe) {
 
 // Rule 9
 TEST_F(Safety, TiltBeyondLimitPanicsInYawAndFull) {
-  for (Mode mode : {Mode::yaw_control, Mode::full_control}) {
+  for (Mode mode : {Mode::yaw_control, Mode::full_control, Mode::height_hold}) {
     SafetyMachine fresh{limits};
     machine = fresh;
     s.controls = ControlInput{};

@@ -17,6 +17,8 @@ struct ScriptedChain {
   // Scripted behaviour
   uint32_t calibration_samples = 10;
   int32_t tilt = 0;
+  bool landed_now = false;   // what landed() says
+  bool height_known = true;  // what height_valid() says
 
   // What the firmware did to it
   uint32_t filtered = 0;
@@ -30,6 +32,13 @@ struct ScriptedChain {
   uint32_t attitude_controlled = 0;
   uint32_t parameter_updates = 0;
   uint32_t estimator_restarts = 0;
+  uint32_t vertical_controlled = 0;
+  uint32_t height_holds_entered = 0;
+  uint32_t descents_started = 0;
+  uint16_t descent_from_lift = 0;
+  uint16_t descent_engines = 0;  // what mix() gives while descending (the chain flies the lift)
+  uint16_t hold_engines = 0;     // what mix() gives while holding the height
+  bool holding = false, descending = false;
   int32_t yaw_p = 0;
   ControlInput pilot;
 
@@ -52,6 +61,22 @@ struct ScriptedChain {
   void estimate_accel_angles() { ++accel_angles; }
   void estimate() { ++estimated; }
   void estimate_height() { ++height_estimated; }
+  void control_vertical() { ++vertical_controlled; }
+  void enter_height_hold() {
+    ++height_holds_entered;
+    holding = true;
+    descending = false;
+  }
+  void start_descent(uint16_t flying_lift) {
+    ++descents_started;
+    descent_from_lift = flying_lift;
+    descending = true;
+    holding = false;
+  }
+  void release_lift() { holding = descending = false; }
+  bool holding_height() const { return holding; }
+  bool landed() const { return landed_now; }
+  bool height_valid() const { return height_known; }
   int32_t height_mm() const { return 0; }
   int32_t climb_mm_s() const { return 0; }
   void restart_estimator() { ++estimator_restarts; }
@@ -61,7 +86,7 @@ struct ScriptedChain {
   void control_attitude() { ++attitude_controlled; }
   // Every engine at the lift stick: enough to see that the mixer ran and what the safety
   // machine then did with it.
-  EngineCommand mix() const { return all(pilot.lift); }
+  EngineCommand mix() const { return all(descending ? descent_engines : holding ? hold_engines : pilot.lift); }
   EngineCommand mix_manual() const { return all(pilot.lift); }
 
   int16_t roll_e4() const { return 123; }

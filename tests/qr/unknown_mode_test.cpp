@@ -60,10 +60,10 @@ TEST_F(UnknownModeTest, EveryNumberBeyondTheModesIsAnsweredUnknownMode) {
 }
 
 TEST_F(UnknownModeTest, TheLastModeIsStillAMode) {
-  // Full control (the last mode number) is known: refused for another reason (no calibration).
+  // Height hold (the last mode number) is known: refused for another reason (only from full control).
   send_mode(1, wire::kModeCount - 1);
   ASSERT_EQ(nacks.size(), 1u);
-  EXPECT_EQ(nacks[0].reason, wire::NackReason::not_calibrated);
+  EXPECT_EQ(nacks[0].reason, wire::NackReason::not_from_this_mode);
 }
 
 }  // namespace

@@ -26,6 +26,12 @@ struct FlightRecord {
   double rested_v_at_panic = kNotMeasured;
   double battery_v_min = kNotMeasured, rested_v_min = kNotMeasured;
   double touchdown_speed = kNotMeasured;  // m/s, the first after having been airborne
+  double touchdown_at = kNotMeasured, engines_stopped_at = kNotMeasured;
+  // Height hold: the first stay in it
+  double hold_entry_height = kNotMeasured;  // true height, m, at the first tick in height hold
+  Trace hold_height_err;                    // true height minus that, m, every tick in height hold
+  int hold_lift = -1;                       // the lift stick the QR had read when it held
+  double hold_lift_changed_at = kNotMeasured, hold_left_at = kNotMeasured;
 };
 
 // The plant and firmware at the end, for the figures that need them.

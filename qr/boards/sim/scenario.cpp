@@ -55,6 +55,14 @@ struct Hands {
   bool hold_height = true;  // else lift_share of the hover lift, open loop
   double height = kHoverHeight;
   double lift_share = 0;
+  bool still = false;  // the lift stick stays at still_lift
+  uint16_t still_lift = 0;
+
+  uint16_t lift(const sim::Quadrotor& plant) const {
+    if (still) return still_lift;
+    return hold_height ? lift_for_height(plant, height, 1)
+                       : static_cast<uint16_t>(std::clamp(std::lround(lift_share * plant.hover_command()), 0L, 1000L));
+  }
 
   Sticks sticks(const sim::Quadrotor& plant, const wire::ParameterValues& p) const {
     // Full control: roll and pitch sticks are angle set-points, full stick max_tilt_mrad; the yaw
@@ -62,9 +70,7 @@ struct Hands {
     const double per_degree = kRad * 1000 / (p.get(wire::ParamId::max_tilt_mrad) * 1e-3);
     const double max_rate = std::ldexp(p.get(wire::ParamId::max_yaw_rate_rad_s), -10);
     Sticks s;
-    s.lift = hold_height
-                 ? lift_for_height(plant, height, 1)
-                 : static_cast<uint16_t>(std::clamp(std::lround(lift_share * plant.hover_command()), 0L, 1000L));
+    s.lift = lift(plant);
     s.roll = stick(roll_deg * per_degree);
     s.pitch = stick(pitch_deg * per_degree);
     s.yaw = stick(yaw_rad_s / max_rate * 1000);
@@ -119,15 +125,22 @@ void apply(const Event& e, Hands& hands, Pilot& pilot, sim::Quadrotor& plant) {
     case Action::roll: hands.roll_deg = e.value; break;
     case Action::pitch: hands.pitch_deg = e.value; break;
     case Action::yaw: hands.yaw_rad_s = e.value; break;
+    case Action::lift_still:
+      hands.still_lift = hands.lift(plant);
+      hands.still = true;
+      break;
     case Action::lift_hold:
+      hands.still = false;
       hands.hold_height = true;
       hands.height = kHoverHeight;
       break;
     case Action::lift_height:
+      hands.still = false;
       hands.hold_height = true;
       hands.height = e.value;
       break;
     case Action::lift_share:
+      hands.still = false;
       hands.hold_height = false;
       hands.lift_share = e.value;
       break;
@@ -218,8 +231,24 @@ void record_tick(FlightRecord& rec, double t, uint8_t mode, FlyingQr& qr, uint16
   // is the last airborne tick's (at most one control period, 0.01 m/s of free fall, earlier):
   // the contact's damper stops the vehicle within a millisecond.
   const bool in_air = plant.deepest_contact() < 0;
-  if (airborne && !in_air && std::isnan(rec.touchdown_speed)) rec.touchdown_speed = last_down_speed;
+  if (airborne && !in_air && std::isnan(rec.touchdown_speed)) {
+    rec.touchdown_speed = last_down_speed;
+    rec.touchdown_at = t;
+  }
   airborne = in_air;
+  bool engines_still = true;
+  for (uint16_t v : qr.board().engines().value) engines_still = engines_still && v == 0;
+  if (!std::isnan(rec.touchdown_at) && engines_still && std::isnan(rec.engines_stopped_at)) rec.engines_stopped_at = t;
+  // Height hold: the true height against the one at entry, and how long a lift change took to end it.
+  const bool holding = mode == static_cast<uint8_t>(wire::Mode::height_hold);
+  if (holding && std::isnan(rec.hold_entry_height)) rec.hold_entry_height = -s.position.z;
+  if (holding) rec.hold_height_err.push_back({t, -s.position.z - rec.hold_entry_height});
+  const uint16_t lift_read = chain.controls.lift;
+  if (holding && rec.hold_lift < 0) rec.hold_lift = lift_read;
+  if (rec.hold_lift >= 0 && std::isnan(rec.hold_lift_changed_at) && lift_read != rec.hold_lift) {
+    rec.hold_lift_changed_at = t;
+  }
+  if (!std::isnan(rec.hold_entry_height) && !holding && std::isnan(rec.hold_left_at)) rec.hold_left_at = t;
   last_down_speed = std::abs(s.velocity.z);
 }
 

@@ -216,6 +216,9 @@ class Reader {
       if (w.size() == 4 && w[3] == "hold") {
         e.action = Action::lift_hold;
         ok = true;
+      } else if (w.size() == 4 && w[3] == "still") {
+        e.action = Action::lift_still;
+        ok = true;
       } else if (w.size() == 5 && w[3] == "height") {
         e.action = Action::lift_height;
         ok = get_number(w[4], e.value, "the height");
@@ -225,7 +228,7 @@ class Reader {
         ok = get_number(w[3], e.value, "the share of hover lift");
         if (ok && (e.value < 0 || e.value > 3)) ok = fail("lift share must be 0 .. 3 (of the hover lift)");
       } else {
-        ok = fail("lift needs 'hold', 'height METRES' or a share of the hover lift");
+        ok = fail("lift needs 'hold', 'height METRES', 'still' or a share of the hover lift");
       }
     } else if (action == "mode") {
       e.action = Action::mode;

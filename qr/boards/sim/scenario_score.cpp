@@ -1,5 +1,7 @@
 #include <qr/boards/sim/scenario_score.hpp>
 
+#include <qr/core/rate.hpp>
+
 #include <algorithm>
 #include <cmath>
 
@@ -100,6 +102,24 @@ void step_figures(const ScenarioScript& script, const FlightRecord& rec, std::ve
   f.push_back({"release_settle_s", release_settle});
 }
 
+// Height hold, on the truth: how well it held the height it was entered at, until the pilot's lift
+// changed (or the window's end), and how many control periods the firmware took to leave it after
+// reading a changed lift (0: in the tick that read it).
+void height_hold_figures(const FlightRecord& rec, std::vector<Figure>& f) {
+  if (rec.hold_height_err.empty()) {
+    for (const char* name : {"height_hold_s", "height_hold_rms_m", "height_hold_drift_m", "height_hold_exit_periods"}) {
+      f.push_back({name, kNotMeasured});
+    }
+    return;
+  }
+  const double begin = rec.hold_height_err.front().t;
+  const double end = std::isnan(rec.hold_lift_changed_at) ? rec.hold_height_err.back().t : rec.hold_lift_changed_at;
+  f.push_back({"height_hold_s", end - begin});
+  f.push_back({"height_hold_rms_m", rms(rec.hold_height_err, begin, end)});
+  f.push_back({"height_hold_drift_m", std::abs(mean(rec.hold_height_err, end - 1.0, end))});
+  f.push_back({"height_hold_exit_periods", (rec.hold_left_at - rec.hold_lift_changed_at) * qr::kControlHz});
+}
+
 }  // namespace
 
 void add_flight_figures(const ScenarioScript& script, const FlightRecord& rec, const EndState& end,
@@ -144,6 +164,8 @@ void add_flight_figures(const ScenarioScript& script, const FlightRecord& rec, c
   f.push_back({"battery_v_min", rec.battery_v_min});
   f.push_back({"battery_rested_v_min", rec.rested_v_min});
   f.push_back({"touchdown_speed_m_s", rec.touchdown_speed});
+  f.push_back({"engines_stop_s", rec.engines_stopped_at - rec.touchdown_at});
+  height_hold_figures(rec, f);
 }
 
 void judge(const ScenarioScript& script, ScenarioResult& result) {

@@ -42,6 +42,7 @@ enum class Action : uint8_t {
   lift_hold,    // the pilot holds the hover height (1.5 m), taking off if on the ground
   lift_height,  // value: the pilot holds this height, m
   lift_share,   // value: this share of the hover lift, held open loop (0: lift stick down)
+  lift_still,   // the pilot's hand stops: the lift stick stays where it is (height hold flies)
   mode,         // mode: the pilot requests it
   param,        // param, raw: the pilot uploads it
   torque,       // vector: N·m in body axes, for duration_s

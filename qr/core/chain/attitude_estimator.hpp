@@ -264,7 +264,7 @@ class AttitudeEstimator {
   static constexpr typename N::AngleGain kNoLag = typename N::AngleGain(1.0);
 
   // One copy for both callers (the accelerometer-angle task and a restart): inlined into each, it
-  // cost the 64 KiB image 1.3 KiB twice over.
+  // cost the image 1.3 KiB twice over.
   [[gnu::noinline]] void take_accel_angles(const Accel (&accel)[3]) {
     roll_from_accel_ = N::atan2(-accel[1], -accel[2]);
     const auto horizontal_squared = fx::mul_wide(accel[1], accel[1]) + fx::mul_wide(accel[2], accel[2]);

@@ -44,7 +44,7 @@ struct IirOfOrder<1> {
 
 // A Butterworth low-pass's numerator is symmetric, b2 = b0, exactly in every number type (the
 // design writes one value to both, and quantising rounds that one value twice): four coefficients
-// are kept, not five, which is 1000 bytes of the flight table at 1 kHz (the QR's image is 64 KiB).
+// are kept, not five, which is 1000 bytes of the flight table at 1 kHz.
 template <class C>
 struct SymmetricIir2Coefficients {
   C b0, b1, a1, a2;

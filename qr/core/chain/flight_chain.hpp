@@ -2,7 +2,7 @@
 // flowing one way through a tick:
 //
 //   set_pilot -> filter -> (calibrate) -> (estimate_accel_angles) -> estimate -> (estimate_height)
-//             -> (control_attitude) (control_yaw) -> mix          (manual: mix_manual)
+//             -> (control_vertical) -> (control_attitude) (control_yaw) -> mix   (manual: mix_manual)
 //
 // Each method reads what the ones before it left and writes its own outputs; none reaches back.
 // Which of them run in a tick, and how often, is the flight's task table (qr/core/flight_tasks.hpp);
@@ -31,6 +31,7 @@
 #include <qr/core/chain/pilot_setpoints.hpp>
 #include <qr/core/chain/sensor_calibration.hpp>
 #include <qr/core/chain/sensor_filters.hpp>
+#include <qr/core/chain/vertical_controller.hpp>
 #include <qr/core/flight_types.hpp>
 #include <qr/core/rate.hpp>
 
@@ -68,6 +69,7 @@ class FlightChain {
     estimator_.set_divisors(p.get(ParamId::attitude_c1), p.get(ParamId::attitude_c2));
     estimator_.set_lag(p.get(ParamId::accel_lag_ms));
     landed_.set_takeoff(p.get(ParamId::takeoff_mg));
+    touchdown_.set_descent(p.get(ParamId::panic_descent_mm_s));
     yaw_.set_gains(p.get(ParamId::yaw_p), p.get(ParamId::yaw_i));
     for (auto& axis : tilt_) {
       axis.set_gains(p.get(ParamId::roll_pitch_p1), p.get(ParamId::roll_pitch_p2), p.get(ParamId::roll_pitch_i),
@@ -131,7 +133,9 @@ class FlightChain {
       accel[i] = filters_.accel(i) - calibration_.accel_offset(i);
     }
     estimator_.update(rate, accel, landed_.landed());  // on the ground (last tick's verdict): no drag lag
-    landed_.update(pilot_.lift(), accel[2]);
+    // When the chain flies the lift (height hold, a landing) there is lift: only a touchdown lands.
+    landed_.update(lift_ == LiftSource::pilot ? pilot_.lift() : uint16_t{1}, accel[2]);
+    if (lift_ == LiftSource::descend && touchdown_.impact(accel[2])) landed_.touch_down();
   }
 
   // Task "height": calibrated filtered accelerometer, the attitude estimate and the barometer ->
@@ -140,6 +144,36 @@ class FlightChain {
     Accel accel[3];
     for (int i = 0; i < 3; ++i) accel[i] = filters_.accel(i) - calibration_.accel_offset(i);
     height_.update(accel, estimator_.roll(), estimator_.pitch(), sample_.pressure_pa);
+  }
+
+  // ---- who flies the lift: the pilot's stick, or the vertical loops (vertical_controller.hpp) ----
+  // Entry action of height hold: the height now is held, starting from the thrust the pilot's
+  // lift gave.
+  void enter_height_hold() {
+    vertical_.start(mixer_.thrust_of_lift(pilot_.lift()), height_.height());
+    lift_ = LiftSource::hold;
+  }
+  // Entry action of a panic that lands: level, descending at panic_descent_mm_s from the thrust
+  // of `flying_lift` (engine units), until touchdown. A lift stick let go just before the panic
+  // made the landed detector say "landed"; the vehicle is flying until the touchdown says not.
+  void start_descent(uint16_t flying_lift) {
+    vertical_.start(mixer_.thrust_of_lift(flying_lift), height_.height());
+    touchdown_.start();
+    landed_.take_off();
+    lift_ = LiftSource::descend;
+  }
+  // Every other mode's entry: the lift is the pilot's stick again.
+  void release_lift() { lift_ = LiftSource::pilot; }
+  bool holding_height() const { return lift_ == LiftSource::hold; }
+  bool descending() const { return lift_ == LiftSource::descend; }
+
+  // Task "vertical": after the height estimate, at its rate: the thrust the vertical loops ask
+  // for, and in a landing the touchdown.
+  void control_vertical() {
+    if (lift_ == LiftSource::pilot) return;
+    const Climb want = lift_ == LiftSource::hold ? vertical_.climb_to_hold(height_.height()) : -touchdown_.descent();
+    vertical_.update(want, height_.climb(), !landed_.landed());
+    if (lift_ == LiftSource::descend && touchdown_.update(height_.climb())) landed_.touch_down();
   }
 
   // Entry action of yaw and full control: the yaw loop's integral starts empty.
@@ -156,7 +190,7 @@ class FlightChain {
     if (landed_.landed()) yaw_.reset();
     const bool integrate = !landed_.landed() && (yaw_entered_ || !mixer_.limited());
     yaw_entered_ = false;
-    yaw_moment_ = yaw_.moment(pilot_.yaw_rate(), estimator_.r(), integrate);
+    yaw_moment_ = yaw_.moment(yaw_rate_target(), estimator_.r(), integrate);
     yaw_ran_ = true;
   }
 
@@ -186,10 +220,9 @@ class FlightChain {
     attitude_entered_ = false;
     // On the ground nothing moves, so there is no drag (and the expected angle is the tilt).
     const auto drag = landed_.landed() ? typename Num::template Fixed<0>{} : drag_moment_;
-    roll_moment_ = tilt_[0].moment(pilot_.roll_angle(), estimator_.roll(), estimator_.p(), integrate,
-                                   estimator_.p_to_hold(),
+    roll_moment_ = tilt_[0].moment(roll_target(), estimator_.roll(), estimator_.p(), integrate, estimator_.p_to_hold(),
                                    chain::product_sat<Thrust>(drag, estimator_.roll_expected()));
-    pitch_moment_ = tilt_[1].moment(pilot_.pitch_angle(), estimator_.pitch(), estimator_.q(), integrate,
+    pitch_moment_ = tilt_[1].moment(pitch_target(), estimator_.pitch(), estimator_.q(), integrate,
                                     estimator_.q_to_hold(),
                                     chain::product_sat<Thrust>(drag, estimator_.pitch_expected()));
     attitude_ran_ = true;
@@ -204,6 +237,7 @@ class FlightChain {
     moments_.pitch = attitude_ran_ ? pitch_moment_ : pilot_.pitch_moment();
     moments_.yaw = yaw_ran_ ? yaw_moment_ : pilot_.yaw_moment();
     attitude_ran_ = yaw_ran_ = false;
+    if (lift_ != LiftSource::pilot) return engines_ = mixer_.mix_thrust(vertical_.thrust(), moments_);
     return engines_ = mixer_.mix(pilot_.lift(), moments_);
   }
 
@@ -220,9 +254,9 @@ class FlightChain {
   int16_t p_e3() const { return rate_e3(estimator_.p()); }
   int16_t q_e3() const { return rate_e3(estimator_.q()); }
   int16_t r_e3() const { return rate_e3(estimator_.r()); }
-  int16_t roll_setpoint_e4() const { return angle_e4(pilot_.roll_angle()); }
-  int16_t pitch_setpoint_e4() const { return angle_e4(pilot_.pitch_angle()); }
-  int16_t yaw_rate_setpoint_e3() const { return rate_e3(pilot_.yaw_rate()); }
+  int16_t roll_setpoint_e4() const { return angle_e4(roll_target()); }
+  int16_t pitch_setpoint_e4() const { return angle_e4(pitch_target()); }
+  int16_t yaw_rate_setpoint_e3() const { return rate_e3(yaw_rate_target()); }
   uint16_t lift() const { return pilot_.lift(); }
   // On the ground (landed_detector.hpp): the controllers' integrals are held empty.
   bool landed() const { return landed_.landed(); }
@@ -261,6 +295,10 @@ class FlightChain {
   int32_t accel_bias_mm_s2() const { return Num::round_to_int(fx::mul_wide(height_.accel_bias(), kThousand)); }
   int32_t baro_height_mm() const { return Num::round_to_int(fx::mul_wide(height_.baro_height(), kThousand)); }
 
+  // The vertical loops' per-engine thrust, 1e-3 thrust units, and the height held, mm.
+  int32_t vertical_thrust_e3() const { return Num::round_to_int(fx::mul_wide(vertical_.thrust(), kThousand)); }
+  int32_t held_height_mm() const { return Num::round_to_int(fx::mul_wide(vertical_.held(), kThousand)); }
+
   // The blocks themselves, for tests and tools that look inside.
   const chain::AttitudeEstimator<Num, SampleHz>& estimator() const { return estimator_; }
   const chain::SensorCalibration<Num>& calibration() const { return calibration_; }
@@ -269,6 +307,14 @@ class FlightChain {
  private:
   using Units = chain::SensorUnits<Num>;
   using Count = typename Num::template Fixed<0>;
+  using Climb = typename Num::Climb;
+
+  enum class LiftSource : uint8_t { pilot, hold, descend };
+
+  // What the loops fly to: the pilot's sticks, or level and not turning in a landing.
+  Angle roll_target() const { return lift_ == LiftSource::descend ? Angle{} : pilot_.roll_angle(); }
+  Angle pitch_target() const { return lift_ == LiftSource::descend ? Angle{} : pilot_.pitch_angle(); }
+  Rate yaw_rate_target() const { return lift_ == LiftSource::descend ? Rate{} : pilot_.yaw_rate(); }
 
   static constexpr Count kThousand = Count(1000.0);
   static constexpr Count kTenThousand = Count(10000.0);
@@ -290,6 +336,9 @@ class FlightChain {
   chain::AttitudeController<Num, SampleHz> tilt_[2];  // roll, pitch
   chain::EngineMixer<Num> mixer_;
   chain::LandedDetector<Num, SampleHz> landed_;
+  chain::VerticalController<Num, kHeightRunHz> vertical_;
+  chain::TouchdownDetector<Num, kHeightRunHz, SampleHz> touchdown_;
+  LiftSource lift_ = LiftSource::pilot;
   typename Num::template Fixed<0> drag_moment_{};         // thrust units per rad of expected accelerometer angle
   Thrust roll_moment_{}, pitch_moment_{}, yaw_moment_{};  // the controllers' latest outputs
   bool attitude_ran_ = false, yaw_ran_ = false;           // ... computed in this tick

@@ -43,6 +43,12 @@ class LandedDetector {
     return landed_;
   }
   bool landed() const { return landed_; }
+  // A landing (panic): flying until its touchdown says otherwise, and then on the ground.
+  void take_off() {
+    landed_ = false;
+    climbing_ = 0;
+  }
+  void touch_down() { landed_ = true; }
 
  private:
   static constexpr Accel kDefaultTakeoff = Accel(-1.1);

@@ -64,6 +64,7 @@ class ChainReplay {
   void run_mixer() { chain_.mix(); }
   void run_manual_mixer() { chain_.mix_manual(); }
   void run_safety() {}
+  void enter_panic() {}  // test mode never panics
   void run_telemetry() {}
   void run_logger() {}
   uint16_t telemetry_divider() const { return 1; }
