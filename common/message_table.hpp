@@ -10,7 +10,8 @@
 //  - none is 0x00..0x0F or 0xF0..0xFF (the high bytes of small positive and negative numbers,
 //    the most common payload bytes) and none is a printable character (debug text): when the
 //    parser hunts for a frame start inside old payload bytes, 'M' followed by such a byte is
-//    rarely taken for a frame,
+//    rarely taken for a frame (PC -> QR types may be printable since observable_get: the QR's
+//    receiver never sees text),
 //  - none is 'M' itself.
 #pragma once
 
@@ -29,6 +30,10 @@ enum class MessageType : uint8_t {
   log_stop = 0x1B,
   log_download = 0x1D,
   exit = 0x1E,
+  // Printable, unlike the rest: the eight even-parity bytes 0x10..0x1F are taken. Only the QR
+  // accepts these, and nothing it receives is text (docs/protocol.md section 3).
+  observable_get = 0x22,
+  stream_request = 0x41,
   // QR -> PC
   ack = 0x81,
   nack = 0x82,
@@ -44,6 +49,11 @@ enum class MessageType : uint8_t {
   telemetry_log_part = 0x96,
   telemetry_task = 0x99,
   log_status = 0x9C,
+  // Their bytes keep a two-bit change of the type from giving a type of another length, where one
+  // was free (docs/protocol.md section 3).
+  observable_info = 0xEB,
+  observable_text = 0xE7,
+  observable_samples = 0xE8,
 };
 
 enum class Direction : uint8_t { pc_to_qr = 1, qr_to_pc = 2 };
@@ -73,6 +83,8 @@ inline constexpr MessageSpec kMessageTable[] = {
     {MessageType::log_stop, 1, true, Direction::pc_to_qr, "log_stop"},
     {MessageType::log_download, 6, true, Direction::pc_to_qr, "log_download"},
     {MessageType::exit, 1, true, Direction::pc_to_qr, "exit"},
+    {MessageType::observable_get, 2, true, Direction::pc_to_qr, "observable_get"},
+    {MessageType::stream_request, 8, true, Direction::pc_to_qr, "stream_request"},
     {MessageType::ack, 2, false, Direction::qr_to_pc, "ack"},
     {MessageType::nack, 3, false, Direction::qr_to_pc, "nack"},
     {MessageType::param_report, 5, false, Direction::qr_to_pc, "param_report"},
@@ -87,6 +99,9 @@ inline constexpr MessageSpec kMessageTable[] = {
     {MessageType::telemetry_log_part, 9, false, Direction::qr_to_pc, "telemetry_log_part"},
     {MessageType::telemetry_task, 7, false, Direction::qr_to_pc, "telemetry_task"},
     {MessageType::log_status, 7, false, Direction::qr_to_pc, "log_status"},
+    {MessageType::observable_info, 6, false, Direction::qr_to_pc, "observable_info"},
+    {MessageType::observable_text, 9, false, Direction::qr_to_pc, "observable_text"},
+    {MessageType::observable_samples, 9, false, Direction::qr_to_pc, "observable_samples"},
 };
 
 inline constexpr size_t kMessageCount = sizeof(kMessageTable) / sizeof(kMessageTable[0]);

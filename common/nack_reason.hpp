@@ -18,6 +18,7 @@ enum class NackReason : uint8_t {
   unknown_parameter = 8,  // no parameter with that id
   busy = 9,               // e.g. a log download while logging
   not_supported = 10,     // a request this firmware does not carry out
+  over_budget = 11,       // a stream the line cannot carry beside telemetry (stream_budget.hpp)
 };
 
 struct NackReasonSpec {
@@ -37,6 +38,7 @@ inline constexpr NackReasonSpec kNackReasons[] = {
     {NackReason::unknown_parameter, "unknown_parameter", "no such parameter"},
     {NackReason::busy, "busy", "busy, try again later"},
     {NackReason::not_supported, "not_supported", "not supported by this firmware"},
+    {NackReason::over_budget, "over_budget", "the line cannot carry it beside control and telemetry"},
 };
 
 constexpr const NackReasonSpec* find_nack_reason(NackReason reason) {

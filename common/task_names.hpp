@@ -9,7 +9,7 @@ namespace wire {
 
 inline constexpr const char* kTaskNames[] = {
     "link", "filter", "calibration", "accel_angles", "estimator", "height", "attitude",
-    "yaw",  "mixer",  "manual",      "safety",       "telemetry", "logger",
+    "yaw",  "mixer",  "manual",      "safety",       "telemetry", "logger", "stream",
 };
 inline constexpr uint8_t kTaskCount = sizeof(kTaskNames) / sizeof(kTaskNames[0]);
 

@@ -15,6 +15,11 @@ constexpr KeyCode kKeyCodes[] = {
     {KEY_DOWN, kKeyDown},
     {KEY_LEFT, kKeyLeft},
     {KEY_RIGHT, kKeyRight},
+    {KEY_BACKSPACE, kKeyBackspace},
+    {127, kKeyBackspace},  // what most terminals send for Backspace
+    {8, kKeyBackspace},
+    {KEY_ENTER, kKeyEnter},
+    {'\n', kKeyEnter},
 };
 
 // A lone ESC is told from an arrow key's escape sequence by waiting this long for the rest. Short:

@@ -31,6 +31,7 @@ enum FlightTask : uint8_t {
   kSafetyTask,
   kTelemetryTask,
   kLoggerTask,
+  kStreamTask,
   kFlightTaskCount,
 };
 static_assert(kFlightTaskCount == wire::kTaskCount, "one wire task number per row");
@@ -63,6 +64,10 @@ inline constexpr Task<Flight> kFlightTaskTable[kFlightTaskCount] = {
      [](const Flight& f) { return f.telemetry_divider(); }},
     {wire::kTaskNames[kLoggerTask], [](Flight& f) { f.run_logger(); }, 1, 3, 900,
      [](const Flight& f) { return f.log_divider(); }},
+    // Every tick: each observable stream samples on its own divider, the request's (data, not
+    // code: observable_streams.hpp); idle it only checks four slots. The bench's largest run (1228)
+    // is a sample of two streams and a frame of the observable table on one tick.
+    {wire::kTaskNames[kStreamTask], [](Flight& f) { f.run_stream(); }, 1, 0, 1400},
 };
 
 // The table as a pointer (for readers, cppcheck among them, that stumble on a variable template
@@ -85,19 +90,20 @@ namespace task_sets {
 // The filter and estimators also run in safe and panic, so the pilot sees attitude and height on
 // the bench and the filters are settled when a flight mode starts. The logger runs in every mode: a log
 // covers the whole flight, panic included.
-inline constexpr uint8_t kSafe[] = {kLinkTask,   kFilterTask, kAccelAnglesTask, kEstimatorTask,
-                                    kHeightTask, kSafetyTask, kTelemetryTask,   kLoggerTask};
-inline constexpr uint8_t kPanic[] = {kLinkTask,   kFilterTask, kAccelAnglesTask, kEstimatorTask,
-                                     kHeightTask, kSafetyTask, kTelemetryTask,   kLoggerTask};
+inline constexpr uint8_t kSafe[] = {kLinkTask,   kFilterTask, kAccelAnglesTask, kEstimatorTask, kHeightTask,
+                                    kSafetyTask, kStreamTask, kTelemetryTask,   kLoggerTask};
+inline constexpr uint8_t kPanic[] = {kLinkTask,   kFilterTask, kAccelAnglesTask, kEstimatorTask, kHeightTask,
+                                     kSafetyTask, kStreamTask, kTelemetryTask,   kLoggerTask};
 inline constexpr uint8_t kManual[] = {kLinkTask,        kFilterTask, kAccelAnglesTask, kEstimatorTask, kHeightTask,
-                                      kManualMixerTask, kSafetyTask, kTelemetryTask,   kLoggerTask};
-inline constexpr uint8_t kCalibration[] = {kLinkTask,   kFilterTask,    kCalibrationTask,
-                                           kSafetyTask, kTelemetryTask, kLoggerTask};
-inline constexpr uint8_t kYawControl[] = {kLinkTask,       kFilterTask, kAccelAnglesTask, kEstimatorTask, kHeightTask,
-                                          kYawControlTask, kMixerTask,  kSafetyTask,      kTelemetryTask, kLoggerTask};
+                                      kManualMixerTask, kSafetyTask, kStreamTask,      kTelemetryTask, kLoggerTask};
+inline constexpr uint8_t kCalibration[] = {kLinkTask,   kFilterTask,    kCalibrationTask, kSafetyTask,
+                                           kStreamTask, kTelemetryTask, kLoggerTask};
+inline constexpr uint8_t kYawControl[] = {kLinkTask,   kFilterTask,     kAccelAnglesTask, kEstimatorTask,
+                                          kHeightTask, kYawControlTask, kMixerTask,       kSafetyTask,
+                                          kStreamTask, kTelemetryTask,  kLoggerTask};
 inline constexpr uint8_t kFullControl[] = {kLinkTask,   kFilterTask,          kAccelAnglesTask, kEstimatorTask,
                                            kHeightTask, kAttitudeControlTask, kYawControlTask,  kMixerTask,
-                                           kSafetyTask, kTelemetryTask,       kLoggerTask};
+                                           kSafetyTask, kStreamTask,          kTelemetryTask,   kLoggerTask};
 
 template <size_t N>
 constexpr TaskSet set(const uint8_t (&ids)[N]) {

@@ -66,6 +66,7 @@ class ChainReplay {
   void run_safety() {}
   void run_telemetry() {}
   void run_logger() {}
+  void run_stream() {}
   uint16_t telemetry_divider() const { return 1; }
   uint16_t log_divider() const { return 1; }
 
