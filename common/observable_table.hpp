@@ -110,8 +110,9 @@ constexpr const ObservableSpec* find_observable(uint8_t id) {
   return id < kObservableCount ? &kObservableTable[id] : nullptr;
 }
 
-// The text observable_text frames carry: "name unit", a single space between.
-inline constexpr size_t kObservableTextChars = 28;  // 4 frames of 7 characters
+// The text observable_text frames carry: "name unit", a single space between, then at least one
+// NUL, which is how a client knows it has the whole text.
+inline constexpr size_t kObservableTextChars = 28;  // 4 frames of 7 characters, the NUL included
 
 constexpr size_t text_length(const char* s) {
   size_t n = 0;
@@ -121,13 +122,14 @@ constexpr size_t text_length(const char* s) {
 
 constexpr bool observable_texts_fit() {
   for (const ObservableSpec& spec : kObservableTable) {
-    if (text_length(spec.name) + 1 + text_length(spec.unit) > kObservableTextChars) return false;
+    if (text_length(spec.name) + 1 + text_length(spec.unit) + 1 > kObservableTextChars) return false;
     for (size_t i = 0; spec.unit[i] != '\0'; ++i) {
       if (spec.unit[i] == ' ') return false;
     }
   }
   return true;
 }
-static_assert(observable_texts_fit(), "name, space and unit fit four observable_text frames; units have no space");
+static_assert(observable_texts_fit(),
+              "name, space, unit and a NUL fit four observable_text frames; units have no space");
 
 }  // namespace wire

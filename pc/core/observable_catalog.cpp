@@ -34,7 +34,7 @@ void ObservableCatalog::on(const wire::ObservableText& piece) {
   ObservableRow& row = slot(piece.id);
   const size_t at = size_t{piece.part} * wire::kObservableTextPartChars;
   if (row.text.size() < at + wire::kObservableTextPartChars) row.text.resize(at + wire::kObservableTextPartChars, '\0');
-  bool ended = piece.part + 1 == wire::kObservableTextParts;
+  bool ended = false;  // the part holding a NUL is the last (docs/protocol.md section 13.1)
   for (size_t i = 0; i < wire::kObservableTextPartChars; ++i) {
     row.text[at + i] = piece.text[i];
     ended = ended || piece.text[i] == '\0';

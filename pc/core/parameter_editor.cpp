@@ -11,7 +11,7 @@
 namespace qrterm {
 namespace {
 
-constexpr const char* kStatusNames[] = {"pending", "read back", "QR differs", "not reported"};
+constexpr const char* kStatusNames[] = {"pending", "read back", "differs", "no report"};
 
 }  // namespace
 

@@ -42,14 +42,16 @@ std::vector<std::vector<PlotCell>> draw_plot(const PlotFrame& frame, const std::
     // Every dot of this series; a cell it touches becomes its own (its style), even if another
     // series had dots there: the last drawn is on top.
     std::vector<std::vector<uint8_t>> mine(cells.size(), std::vector<uint8_t>(cells[0].size(), 0));
-    int last_x = -1, last_y = -1;
+    bool joined = false;  // a previous dot to join
+    int last_x = 0, last_y = 0;
     for (const PlotPoint& p : *s.points) {
       if (p.t_s < frame.t_begin || p.t_s > frame.t_end || !std::isfinite(p.value)) continue;
       const int x = std::min(x_of(p.t_s), width - 1);
       const int y = y_of(p.value);
       // Joined to the previous dot by a vertical run, so a step reads as a step.
-      const int from = last_x == x - 1 || last_x == x ? std::min(last_y, y) : y;
-      const int to = last_x == x - 1 || last_x == x ? std::max(last_y, y) : y;
+      const bool adjacent = joined && (last_x == x - 1 || last_x == x);
+      const int from = adjacent ? std::min(last_y, y) : y;
+      const int to = adjacent ? std::max(last_y, y) : y;
       for (int yy = std::max(from, 0); yy <= to; ++yy) {
         const size_t row = static_cast<size_t>(yy / dots_y);
         const size_t column = static_cast<size_t>(x / dots_x);
@@ -58,6 +60,7 @@ std::vector<std::vector<PlotCell>> draw_plot(const PlotFrame& frame, const std::
       }
       last_x = x;
       last_y = y;
+      joined = true;
     }
     for (size_t r = 0; r < cells.size(); ++r) {
       for (size_t c = 0; c < cells[r].size(); ++c) {

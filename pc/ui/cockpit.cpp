@@ -9,31 +9,14 @@
 #include <pc/core/key_map.hpp>
 #include <pc/core/mode_names.hpp>
 #include <pc/core/param_file.hpp>
+#include <pc/ui/screen_draw.hpp>
+#include <pc/ui/screens.hpp>
 #include <pc/ui/terminal.hpp>
 
 namespace qrterm {
 namespace {
 
 constexpr double kDegPerRad = 57.29577951308232;
-
-std::string text(const char* format, ...) __attribute__((format(printf, 1, 2)));
-std::string text(const char* format, ...) {
-  char buffer[512];
-  va_list arguments;
-  va_start(arguments, format);
-  std::vsnprintf(buffer, sizeof buffer, format, arguments);
-  va_end(arguments);
-  return buffer;
-}
-
-// Writes `s` at (row, column), cut at the right edge.
-void put(int row, int column, const std::string& s, short pair = 0, attr_t attributes = A_NORMAL) {
-  const int room = COLS - column;
-  if (row < 0 || row >= LINES || room <= 0) return;
-  attron(COLOR_PAIR(pair) | attributes);
-  mvaddnstr(row, column, s.c_str(), std::min(room, static_cast<int>(s.size())));
-  attroff(COLOR_PAIR(pair) | attributes);
-}
 
 double degrees(int32_t ten_thousandths_rad) { return ten_thousandths_rad * 1e-4 * kDegPerRad; }
 double degrees_per_s(int32_t thousandths_rad_s) { return thousandths_rad_s * 1e-3 * kDegPerRad; }
@@ -62,6 +45,8 @@ void Cockpit::draw_title(const Console& console, int width) {
   std::string title = text(" qrterm | %s | %.1f s | logs %s", labels_.source.c_str(), console.uptime_ms() / 1000.0,
                            labels_.log_folder.c_str());
   put(0, 0, title, kTitle);
+  const std::string screen = text(" %s (Tab) ", kScreenNames[static_cast<size_t>(console.screen())]);
+  put(0, width - 11 - static_cast<int>(screen.size()), screen, kTitle, A_BOLD);
   put(0, width - 11, " h: help ", kTitle, A_BOLD);
 }
 
@@ -332,14 +317,21 @@ void Cockpit::compose(const Console& console) {
     wnoutrefresh(stdscr);
     return;
   }
+  // The status rows live on every screen; Tab changes what is below them.
   draw_title(console, width);
   draw_mode_and_link(console, width);
   draw_system(console, width);
-  draw_engines_and_attitude(console, width);
-  draw_pilot(console, width);
-  draw_log(console, 14, rows - 14, width);
-  // The simulator's truth, across the log's rule: beside the QR's estimate above it.
-  if (!console.truth().empty()) put(13, 10, " " + console.truth() + " ", kInfo);
+  if (console.screen() == Screen::plot) {
+    draw_plot_screen(console, 4, rows - 4, width, braille_);
+  } else if (console.screen() == Screen::parameters) {
+    draw_parameter_screen(console, 4, rows - 4, width);
+  } else {
+    draw_engines_and_attitude(console, width);
+    draw_pilot(console, width);
+    draw_log(console, 14, rows - 14, width);
+    // The simulator's truth, across the log's rule: beside the QR's estimate above it.
+    if (!console.truth().empty()) put(13, 10, " " + console.truth() + " ", kInfo);
+  }
   draw_link_alarm(console, width);
   if (console.help_visible()) draw_help(rows, width);
   wnoutrefresh(stdscr);

@@ -9,6 +9,7 @@
 #include <string>
 
 #include <pc/core/console.hpp>
+#include <pc/ui/terminal.hpp>
 
 namespace qrterm {
 
@@ -39,6 +40,7 @@ class Cockpit {
   void draw_help(int rows, int width);
 
   CockpitLabels labels_;
+  bool braille_ = terminal_speaks_utf8();
   LinkState alarmed_ = LinkState::waiting;
   bool bell_ = false;  // the link was just lost: ring once
 };

@@ -109,7 +109,7 @@ class ObservableStreams {
   }
 
   // One frame of the owed table rows a tick: a row's observable_info, then its observable_text
-  // pieces ("name unit", seven characters each, NUL-padded, as many as the text needs).
+  // pieces ("name unit", seven characters each, NUL-padded, until a piece holds a NUL).
   template <class Send>
   [[gnu::cold, gnu::noinline]] void send_table_frame(uint32_t control_hz, Send& send) {
     const wire::ObservableWireRow& row = wire::kObservableWire[next_row_];
@@ -125,10 +125,13 @@ class ObservableStreams {
     wire::ObservableText piece;
     piece.id = next_row_;
     piece.part = part;
-    for (size_t i = 0; i < wire::kObservableTextPartChars && *c != '\0'; ++i) piece.text[i] = *c++;
+    size_t copied = 0;
+    for (; copied < wire::kObservableTextPartChars && *c != '\0'; ++copied) piece.text[copied] = *c++;
     send(wire::encode(piece));
     next_part_ = static_cast<uint8_t>(next_part_ + 1);
-    if (*c == '\0') {  // the text is out: the next row
+    // The text ends with a NUL: a piece with room left. A text of 7k characters takes a last,
+    // empty piece.
+    if (copied < wire::kObservableTextPartChars) {
       next_part_ = 0;
       ++next_row_;
     }
