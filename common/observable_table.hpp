@@ -47,7 +47,8 @@ enum class ObservableType : uint8_t { i16 = 0, u16 = 1 };
   ROW(height, 27, "m", i16, -3, "height estimate above the calibration's reference, saturated") \
   ROW(climb, 28, "m/s", i16, -3, "vertical speed estimate, up positive") \
   ROW(tilt, 29, "rad", u16, -3, "tilt from level, estimated") \
-  ROW(tick_busy, 30, "us", u16, 0, "time the last tick's tasks took (the board's clock)")
+  ROW(tick_busy, 30, "us", u16, 0, "time the last tick's tasks took (the board's clock)") \
+  ROW(time_ms, 31, "ms", u16, 0, "the QR's clock, wrapping every 65.536 s: when a sample was taken")
 
 enum class ObservableId : uint8_t {
 #define WIRE_OBSERVABLE_ENUMERATOR(name, id, unit, type, scale, meaning) name = id,

@@ -1,5 +1,6 @@
 #include <pc/core/console.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
@@ -129,7 +130,11 @@ void Console::truth_line(const std::string& line) {
     out = std::strtod(line.c_str() + at + key.size(), &end);
     return end != line.c_str() + at + key.size();
   };
-  double roll = 0, pitch = 0, yaw = 0, height = 0;
+  double roll = 0, pitch = 0, yaw = 0, height = 0, t_s = 0;
+  if (field("t", t_s)) {
+    const int64_t offset = static_cast<int64_t>(now_ms_) - std::llround(t_s * 1000);
+    if (!sim_clock_offset_ms_ || offset < *sim_clock_offset_ms_) sim_clock_offset_ms_ = offset;
+  }
   if (!field("roll", roll) || !field("pitch", pitch) || !field("yaw", yaw) || !field("height", height)) return;
   char text[96];
   std::snprintf(text, sizeof text, "truth roll %+.1f pitch %+.1f yaw %+.1f height %.2f m", roll, pitch, yaw, height);

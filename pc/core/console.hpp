@@ -115,6 +115,12 @@ class Console {
   uint32_t telemetry_hz() const;
   // "truth roll +1.2 pitch -0.5 yaw +10.0 height 1.50 m", or empty: no simulator or no line yet.
   const std::string& truth() const { return truth_; }
+  // The console started the simulator: the QR's CPU load, loop time and deadline misses are the
+  // host's scheduling of a simulated board there, not figures of a flight computer.
+  bool flying_simulator() const { return simulator_; }
+  // The simulator's clock on the console's (ms to add to a QR time): from the truth lines, the
+  // smallest difference seen, so the one that waited least on its way. Empty without truth lines.
+  std::optional<int64_t> sim_clock_offset_ms() const { return sim_clock_offset_ms_; }
   bool exiting() const { return exit_ != ExitState::running; }
   std::string download_status() const { return downloader_.status(); }
   size_t parameters_to_send() const { return parameters_.to_send(); }
@@ -166,6 +172,7 @@ class Console {
   bool help_ = false;
   bool simulator_ = false;
   std::string truth_;
+  std::optional<int64_t> sim_clock_offset_ms_;
   std::vector<std::string> sim_commands_;
   ExitState exit_ = ExitState::running;
   uint32_t exit_started_ms_ = 0;

@@ -125,6 +125,7 @@ void StreamSession::tick(LinkSession& link, uint32_t now_ms) {
     }
     return;
   }
+  if (state_.rfind("no table", 0) == 0) state_ = "table of " + std::to_string(catalog_.count()) + " observables";
   if (!request_owed_ || catalog_.control_hz() == 0) return;
   request_owed_ = false;
   wire::StreamRequest request;

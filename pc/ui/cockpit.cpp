@@ -3,12 +3,14 @@
 #include <ncurses.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdarg>
 #include <cstdio>
 
 #include <pc/core/key_map.hpp>
 #include <pc/core/mode_names.hpp>
 #include <pc/core/param_file.hpp>
+#include <pc/platform/clock.hpp>
 #include <pc/ui/screen_draw.hpp>
 #include <pc/ui/screens.hpp>
 #include <pc/ui/terminal.hpp>
@@ -87,8 +89,19 @@ void Cockpit::draw_system(const Console& console, int width) {
     const bool low = t.flag(wire::kFlagBatteryWarning);
     put(2, 0, "battery", 0, A_BOLD);
     put(2, 8, text("%5.2f V", s.battery_mv / 1000.0), low ? kError : kInfo, low ? A_BOLD | A_REVERSE : A_NORMAL);
-    put(2, 18,
-        text("cpu %5.1f %%   loop %5u us   deadline misses %u", s.cpu_load / 10.0, s.loop_time_us, s.deadline_misses));
+    // On the simulator the board's clock is simulated time, which stands still while a tick runs:
+    // load and loop time read 0 and the misses count the host's scheduling, so none is shown. A QR
+    // whose board has no clock (loop time 0) gets the same.
+    if (console.flying_simulator() || s.loop_time_us == 0) {
+      put(2, 18,
+          console.flying_simulator() ? "cpu n/a   loop n/a   deadline misses n/a (simulator)"
+                                     : "cpu n/a   loop n/a (the board has no clock)",
+          kDim);
+    } else {
+      put(2, 18,
+          text("cpu %5.1f %%   loop %5u us   deadline misses %u", s.cpu_load / 10.0, s.loop_time_us,
+               s.deadline_misses));
+    }
   } else {
     put(2, 0, "battery", 0, A_BOLD);
     put(2, 8, "-- V", kDim);
@@ -299,6 +312,37 @@ void Cockpit::show() {
   if (bell_) beep();
   bell_ = false;
   doupdate();
+  // On the screen now: how long since the QR's tick that took the newest sample.
+  if (shown_sample_ms_ && *shown_sample_ms_ != measured_sample_ms_) {
+    measured_sample_ms_ = *shown_sample_ms_;
+    const int64_t age = static_cast<int64_t>(monotonic_ms()) - *shown_sample_ms_;
+    if (age >= 0 && age < 10000) latencies_ms_.push_back(static_cast<uint32_t>(age));
+  }
+}
+
+std::string Cockpit::latency_summary() const {
+  if (latencies_ms_.empty()) return "";
+  std::vector<uint32_t> sorted = latencies_ms_;
+  std::sort(sorted.begin(), sorted.end());
+  return text(
+      "plot latency, tick to screen: median %u ms, 90th percentile %u ms over %zu screens (time_ms against "
+      "qrsim's clock)",
+      sorted[sorted.size() / 2], sorted[sorted.size() * 9 / 10], sorted.size());
+}
+
+// The newest time_ms sample of the plot as a time on the console's clock: its QR time (16 bits of
+// ms) unwrapped near the simulator's clock now.
+void Cockpit::note_plotted_sample(const Console& console) {
+  shown_sample_ms_.reset();
+  const std::optional<int64_t> offset = console.sim_clock_offset_ms();
+  if (console.screen() != Screen::plot || !offset) return;
+  for (const Trace& t : console.streams().plot().traces()) {
+    if (t.name != "time_ms" || t.points.empty() || console.streams().plot().frozen()) continue;
+    const int64_t qr_now = static_cast<int64_t>(console.now_ms()) - *offset;
+    const int64_t sample = static_cast<int64_t>(std::llround(t.points.back().value));
+    const int64_t behind = ((qr_now - sample) % 65536 + 65536) % 65536;
+    shown_sample_ms_ = static_cast<int64_t>(console.now_ms()) - behind;
+  }
 }
 
 void Cockpit::compose(const Console& console) {
@@ -334,6 +378,7 @@ void Cockpit::compose(const Console& console) {
   }
   draw_link_alarm(console, width);
   if (console.help_visible()) draw_help(rows, width);
+  note_plotted_sample(console);
   wnoutrefresh(stdscr);
 }
 

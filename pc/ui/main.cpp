@@ -196,6 +196,8 @@ int run(int argc, char** argv) {
     Session session{console, *serial, sim.get(), joystick.get(), terminal, cockpit};
     run_main_loop(session);
     confirmed = console.exit_confirmed();
+    const std::string latency = cockpit.latency_summary();
+    if (!latency.empty()) console.note(Severity::info, latency);
   }
   if (sim) sim->stop(confirmed ? 1000 : 0);
 

@@ -42,7 +42,8 @@ struct ObservableRead {
            : i == 1 ? f.chain().height_mm()
            : i == 2 ? f.chain().climb_mm_s()
            : i == 3 ? f.chain().tilt_mrad()
-                    : static_cast<int32_t>(wire::saturate_u16(f.last_busy_us()));
+           : i == 4 ? static_cast<int32_t>(wire::saturate_u16(f.last_busy_us()))
+                    : static_cast<int32_t>((f.tick_us() / 1000u) & 0xFFFFu);
   }
 };
 
@@ -63,7 +64,7 @@ inline constexpr ObservableSource<Flight> kObservableSources[wire::kObservableCo
     {ObservableRead<Flight>::accel_filtered, 1}, {ObservableRead<Flight>::accel_filtered, 2},
     {ObservableRead<Flight>::state, 0},          {ObservableRead<Flight>::state, 1},
     {ObservableRead<Flight>::state, 2},          {ObservableRead<Flight>::state, 3},
-    {ObservableRead<Flight>::state, 4},
+    {ObservableRead<Flight>::state, 4},          {ObservableRead<Flight>::state, 5},
 };
 
 template <class Flight>

@@ -16,12 +16,13 @@ e2e_start
 export LC_ALL=C
 e2e_pane "$qrterm" --sim "$sim" --no-joystick --log-dir "$work/logs" --params "$work/params.txt"
 wait_for 'MODE +safe ' 30 "start: safe"
+wait_for 'cpu n/a +loop n/a +deadline misses n/a \(simulator\)' 5 "no CPU figures that mean nothing on the simulator"
 keys 3
 wait_for 'QR calibrated' 30 "calibrated"
 wait_for 'MODE +safe ' 5 "back in safe"
 
 keys Tab
-wait_for 'PLOT ' 3 "Tab: the plot screen"
+wait_for 'PLOT .*table of [0-9]+ observables' 10 "Tab: the plot screen"
 wait_for 'plot \(Tab\)' 1 "the title names the screen"
 wait_for 'MODE +safe ' 1 "the status rows stay"
 keys /
@@ -81,4 +82,7 @@ rows=$(($(wc -l <"$csv") - 1))
 ((rows > 1000)) || fail "only $rows samples in $csv"
 echo "e2e: ok: $rows samples in observables_1.csv"
 exit_and_check_terminal
+root=$(cd "$(dirname "$0")/../.." && pwd)
+"$root/scripts/plot" "$csv" --out "$work/observables.png" || fail "scripts/plot could not draw $csv"
+[[ $(head -c 4 "$work/observables.png" | od -An -tx1 | tr -d ' ') == 89504e47 ]] || fail "observables.png is not a PNG"
 echo "e2e: passed"
