@@ -10,7 +10,8 @@
 //  - none is 0x00..0x0F or 0xF0..0xFF (the high bytes of small positive and negative numbers,
 //    the most common payload bytes) and none is a printable character (debug text): when the
 //    parser hunts for a frame start inside old payload bytes, 'M' followed by such a byte is
-//    rarely taken for a frame,
+//    rarely taken for a frame (PC -> QR types may be printable since observable_get: the QR's
+//    receiver never sees text),
 //  - none is 'M' itself.
 #pragma once
 
@@ -29,6 +30,10 @@ enum class MessageType : uint8_t {
   log_stop = 0x1B,
   log_download = 0x1D,
   exit = 0x1E,
+  // Printable, unlike the rest: the eight even-parity bytes 0x10..0x1F are taken. Only the QR
+  // accepts these, and nothing it receives is text (docs/protocol.md section 3).
+  observable_get = 0x22,
+  stream_request = 0x41,
   // QR -> PC
   ack = 0x81,
   nack = 0x82,
@@ -45,6 +50,11 @@ enum class MessageType : uint8_t {
   telemetry_task = 0x99,
   log_status = 0x9C,
   telemetry_height = 0x9F,
+  // Their bytes keep a two-bit change of the type from giving a type of another length, where one
+  // was free (docs/protocol.md section 3).
+  observable_info = 0xEB,
+  observable_text = 0xE7,
+  observable_samples = 0xE8,
 };
 
 enum class Direction : uint8_t { pc_to_qr = 1, qr_to_pc = 2 };
@@ -77,6 +87,8 @@ inline constexpr MessageSpec kMessageTable[] = {
     {MessageType::log_stop, 1, true, Direction::pc_to_qr, "log_stop", true},
     {MessageType::log_download, 6, true, Direction::pc_to_qr, "log_download", false},
     {MessageType::exit, 1, true, Direction::pc_to_qr, "exit", true},
+    {MessageType::observable_get, 2, true, Direction::pc_to_qr, "observable_get", false},
+    {MessageType::stream_request, 8, true, Direction::pc_to_qr, "stream_request", false},
     {MessageType::ack, 2, false, Direction::qr_to_pc, "ack", false},
     {MessageType::nack, 3, false, Direction::qr_to_pc, "nack", false},
     {MessageType::param_report, 5, false, Direction::qr_to_pc, "param_report", false},
@@ -92,6 +104,9 @@ inline constexpr MessageSpec kMessageTable[] = {
     {MessageType::telemetry_task, 7, false, Direction::qr_to_pc, "telemetry_task", false},
     {MessageType::log_status, 7, false, Direction::qr_to_pc, "log_status", false},
     {MessageType::telemetry_height, 7, false, Direction::qr_to_pc, "telemetry_height", false},
+    {MessageType::observable_info, 6, false, Direction::qr_to_pc, "observable_info", false},
+    {MessageType::observable_text, 9, false, Direction::qr_to_pc, "observable_text", false},
+    {MessageType::observable_samples, 9, false, Direction::qr_to_pc, "observable_samples", false},
 };
 
 inline constexpr size_t kMessageCount = sizeof(kMessageTable) / sizeof(kMessageTable[0]);

@@ -5,6 +5,7 @@
 
 #include <common/frame.hpp>
 #include <common/log_records.hpp>
+#include <common/observable_messages.hpp>
 #include <common/payload_codec.hpp>
 #include <common/replies.hpp>
 #include <common/requests.hpp>
@@ -21,10 +22,12 @@ struct MessageList {
 using AllMessages =
     MessageList<Control, ModeChange, ParamSet, ParamGet, LogStart, LogStop, LogDownload, Exit, Ack, Nack, ParamReport,
                 DebugText, TelemetryAttitude, TelemetryRates, TelemetryEngines, TelemetrySetpoints, TelemetrySystem,
-                TelemetryLink, SensorLogPart, TelemetryLogPart, TelemetryTask, LogStatus, TelemetryHeight>;
+                TelemetryLink, SensorLogPart, TelemetryLogPart, TelemetryTask, LogStatus, TelemetryHeight,
+                ObservableGet, StreamRequest, ObservableInfo, ObservableText, ObservableSamples>;
 
 // What the QR receives: it never decodes a message of the other direction (its parser drops them).
-using PcToQrMessages = MessageList<Control, ModeChange, ParamSet, ParamGet, LogStart, LogStop, LogDownload, Exit>;
+using PcToQrMessages = MessageList<Control, ModeChange, ParamSet, ParamGet, LogStart, LogStop, LogDownload, Exit,
+                                   ObservableGet, StreamRequest>;
 
 template <class... Msgs>
 constexpr bool covers_table(MessageList<Msgs...>) {

@@ -19,6 +19,7 @@ enum class NackReason : uint8_t {
   busy = 9,               // e.g. a log download while logging
   not_supported = 10,     // a request this firmware does not carry out
   not_flying = 11,        // height hold asked for on the ground: there is no height to hold
+  over_budget = 12,       // a stream the line cannot carry beside telemetry (stream_budget.hpp)
 };
 
 struct NackReasonSpec {
@@ -39,6 +40,7 @@ inline constexpr NackReasonSpec kNackReasons[] = {
     {NackReason::busy, "busy", "busy, try again later"},
     {NackReason::not_supported, "not_supported", "not supported by this firmware"},
     {NackReason::not_flying, "not_flying", "not flying: nothing to hold"},
+    {NackReason::over_budget, "over_budget", "the line cannot carry it beside control and telemetry"},
 };
 
 constexpr const NackReasonSpec* find_nack_reason(NackReason reason) {

@@ -15,7 +15,7 @@ const ParameterSpec* find_parameter(uint8_t id) {
 }
 
 ParameterValues::ParameterValues() {
-  for (size_t i = 0; i < kParameterCount; ++i) values_[i] = kParameterTable[i].default_value;
+  for (size_t i = 0; i < kParameterCount; ++i) values_[i] = kParameterLimits[i].default_value;
 }
 
 int32_t ParameterValues::get(ParamId id) const {
@@ -26,7 +26,7 @@ int32_t ParameterValues::get(ParamId id) const {
 NackReason ParameterValues::set(uint8_t id, int32_t raw) {
   const size_t row = row_of(id);
   if (row >= kParameterCount) return NackReason::unknown_parameter;
-  if (!in_range(kParameterTable[row], raw)) return NackReason::bad_value;
+  if (!in_range(kParameterLimits[row], raw)) return NackReason::bad_value;
   values_[row] = raw;
   return NackReason::none;
 }

@@ -101,6 +101,24 @@ inline constexpr ParameterSpec kParameterTable[] = {
 
 inline constexpr size_t kParameterCount = sizeof(kParameterTable) / sizeof(kParameterTable[0]);
 
+// The numbers of each row without its texts: what the QR reads at run time (range checks,
+// defaults, reports). Its image has no room for names, units and meanings it never sends, and the
+// linker keeps only the arrays code reads.
+struct ParameterLimits {
+  ParamId id;
+  int32_t min;            // raw, inclusive
+  int32_t max;            // raw, inclusive
+  int32_t default_value;  // raw
+};
+
+inline constexpr ParameterLimits kParameterLimits[] = {
+#define WIRE_PARAMETER_LIMITS(name, id, frac_bits, min, max, default_value, unit, meaning) \
+  {ParamId::name, min, max, default_value},
+    WIRE_PARAMETER_ROWS(WIRE_PARAMETER_LIMITS)
+#undef WIRE_PARAMETER_LIMITS
+};
+static_assert(sizeof(kParameterLimits) / sizeof(kParameterLimits[0]) == kParameterCount);
+
 // Ids run 1..kParameterCount in row order (find_parameter finds a row by subtraction).
 constexpr bool ids_follow_rows() {
   for (size_t row = 0; row < kParameterCount; ++row) {
@@ -114,6 +132,7 @@ static_assert(ids_follow_rows(), "parameter ids must run 1, 2, 3, ... in table o
 const ParameterSpec* find_parameter(uint8_t id);
 
 constexpr bool in_range(const ParameterSpec& spec, int32_t raw) { return raw >= spec.min && raw <= spec.max; }
+constexpr bool in_range(const ParameterLimits& limits, int32_t raw) { return raw >= limits.min && raw <= limits.max; }
 
 // Current values of every parameter, starting at the defaults. The QR owns the real one; the
 // console keeps a copy updated from param_report.

@@ -23,6 +23,7 @@ class PayloadWriter {
 
   constexpr void operator()(uint8_t v) { put(v); }
   constexpr void operator()(char v) { put(static_cast<uint8_t>(v)); }
+  constexpr void operator()(int8_t v) { put(static_cast<uint8_t>(v)); }
   constexpr void operator()(uint16_t v) {
     put(static_cast<uint8_t>(v));
     put(static_cast<uint8_t>(v >> 8));
@@ -65,6 +66,7 @@ class PayloadReader {
 
   constexpr void operator()(uint8_t& v) { v = get(); }
   constexpr void operator()(char& v) { v = static_cast<char>(get()); }
+  constexpr void operator()(int8_t& v) { v = static_cast<int8_t>(get()); }
   constexpr void operator()(uint16_t& v) {
     const uint8_t low = get();
     v = static_cast<uint16_t>(low | (get() << 8));
@@ -115,6 +117,7 @@ class SizeCounter {
  public:
   constexpr void operator()(uint8_t) { size_ += 1; }
   constexpr void operator()(char) { size_ += 1; }
+  constexpr void operator()(int8_t) { size_ += 1; }
   constexpr void operator()(uint16_t) { size_ += 2; }
   constexpr void operator()(int16_t) { size_ += 2; }
   constexpr void operator()(uint32_t) { size_ += 4; }

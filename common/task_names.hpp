@@ -11,6 +11,7 @@ inline constexpr const char* kTaskNames[] = {
     "link",     "filter", "calibration", "accel_angles", "estimator", "height", "attitude",
     "yaw",      "mixer",  "manual",      "safety",       "telemetry", "logger",
     "vertical",  // added after the others: the wire's numbers of the older tasks stay
+    "stream",
 };
 inline constexpr uint8_t kTaskCount = sizeof(kTaskNames) / sizeof(kTaskNames[0]);
 

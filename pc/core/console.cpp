@@ -1,5 +1,6 @@
 #include <pc/core/console.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
@@ -43,6 +44,8 @@ constexpr RequestText kRequestTexts[] = {
     {wire::MessageType::log_stop, "QR logs stopped", "log stop"},
     {wire::MessageType::log_download, nullptr, "log download"},
     {wire::MessageType::exit, nullptr, "exit"},
+    {wire::MessageType::observable_get, nullptr, "observable table request"},
+    {wire::MessageType::stream_request, nullptr, "stream request"},
 };
 
 const RequestText& request_text(wire::MessageType type) {
@@ -90,6 +93,9 @@ struct Console::Receiver {
   void operator()(const wire::TelemetryHeight& m) { console.telemetry_.on(m); }
   void operator()(const wire::SensorLogPart& part) { console.downloader_.on_part(part, console.now_ms_); }
   void operator()(const wire::TelemetryLogPart& part) { console.downloader_.on_part(part, console.now_ms_); }
+  void operator()(const wire::ObservableInfo& m) { console.streams_.on(m); }
+  void operator()(const wire::ObservableText& m) { console.streams_.on(m); }
+  void operator()(const wire::ObservableSamples& m) { console.streams_.on(m, console.uptime_ms() / 1000.0); }
 };
 
 Console::Console(ConsoleLog& log, ConsoleFiles files, const Setup& setup, uint32_t now_ms)
@@ -99,7 +105,11 @@ Console::Console(ConsoleLog& log, ConsoleFiles files, const Setup& setup, uint32
           LogDownloader::Hooks{[this](const wire::LogDownload& request) { link_.request(request, now_ms_); },
                                [this](Severity severity, const std::string& text) { note(severity, text); },
                                [this](const std::string& name) { return files_.open ? files_.open(name) : nullptr; }}),
-      joystick_(setup.joystick ? JoystickState::ok : JoystickState::none), simulator_(setup.simulator) {
+      joystick_(setup.joystick ? JoystickState::ok : JoystickState::none), simulator_(setup.simulator),
+      streams_(
+          StreamSession::Hooks{[this](Severity severity, const std::string& text) { note(severity, text); },
+                               [this](const std::string& name) { return files_.open ? files_.open(name) : nullptr; }}),
+      editor_(setup.params, setup.params_file) {
   if (files_.telemetry_csv != nullptr) telemetry_csv_.emplace(*files_.telemetry_csv, telemetry_csv_header());
 }
 
@@ -121,11 +131,17 @@ void Console::truth_line(const std::string& line) {
     out = std::strtod(line.c_str() + at + key.size(), &end);
     return end != line.c_str() + at + key.size();
   };
-  double roll = 0, pitch = 0, yaw = 0, height = 0;
+  double roll = 0, pitch = 0, yaw = 0, height = 0, t_s = 0;
+  if (field("t", t_s)) {
+    const int64_t offset = static_cast<int64_t>(now_ms_) - std::llround(t_s * 1000);
+    if (!sim_clock_offset_ms_ || offset < *sim_clock_offset_ms_) sim_clock_offset_ms_ = offset;
+  }
   if (!field("roll", roll) || !field("pitch", pitch) || !field("yaw", yaw) || !field("height", height)) return;
   char text[96];
   std::snprintf(text, sizeof text, "truth roll %+.1f pitch %+.1f yaw %+.1f height %.2f m", roll, pitch, yaw, height);
   truth_ = text;
+  constexpr double kRadPerDeg = 0.017453292519943295;
+  streams_.plot().add_truth(uptime_ms() / 1000.0, roll * kRadPerDeg, pitch * kRadPerDeg, yaw * kRadPerDeg);
 }
 
 std::vector<std::string> Console::take_sim_commands() {
@@ -134,8 +150,26 @@ std::vector<std::string> Console::take_sim_commands() {
   return commands;
 }
 
+uint32_t Console::telemetry_hz() const {
+  return static_cast<uint32_t>(parameters_.wanted().get(wire::ParamId::telemetry_rate_hz));
+}
+
 void Console::key(Key key, uint32_t now_ms) {
   set_time(now_ms);
+  // A prompt takes the typing; the abort keys and ^C still act (and close it).
+  if (prompt_ && key != kKeyEscape && key != kKeyInterrupt) return prompt_key(key);
+  if (prompt_) prompt_.reset();
+  if (key == kKeyTab) {
+    help_ = false;
+    escape_armed_ = false;
+    screen_ = static_cast<Screen>((static_cast<size_t>(screen_) + 1) % kScreenCount);
+    return;
+  }
+  if (screen_key(key)) {
+    help_ = false;
+    escape_armed_ = false;
+    return;
+  }
   const Action action = action_for(key);
   const bool second_escape = escape_armed_ && action == Action::abort;
   escape_armed_ = action == Action::abort && !second_escape;
@@ -192,6 +226,77 @@ void Console::act(Action action, uint32_t now_ms) {
       }
       break;
     default: break;
+  }
+}
+
+bool Console::screen_key(Key key) {
+  const ScreenAction action = screen_action(screen_, key);
+  const double now_s = uptime_ms() / 1000.0;
+  PlotModel& plot = streams_.plot();
+  switch (action) {
+    case ScreenAction::none: return false;
+    case ScreenAction::plot_pick: prompt_ = Prompt{PromptKind::observables, ""}; break;
+    case ScreenAction::plot_remove_last: streams_.remove_last(); break;
+    case ScreenAction::plot_window: plot.next_window(); break;
+    case ScreenAction::plot_scale: plot.toggle_scale(now_s); break;
+    case ScreenAction::plot_zoom_in: plot.zoom(0.5, now_s); break;
+    case ScreenAction::plot_zoom_out: plot.zoom(2.0, now_s); break;
+    case ScreenAction::plot_freeze: plot.toggle_freeze(now_s); break;
+    case ScreenAction::plot_faster: streams_.faster(); break;
+    case ScreenAction::plot_slower: streams_.slower(); break;
+    case ScreenAction::param_previous: editor_.move(-1); break;
+    case ScreenAction::param_next: editor_.move(1); break;
+    case ScreenAction::param_step_down: editor_.step(parameters_, -1); break;
+    case ScreenAction::param_step_up: editor_.step(parameters_, 1); break;
+    case ScreenAction::param_type: prompt_ = Prompt{PromptKind::value, ""}; break;
+    case ScreenAction::param_default: editor_.reset_default(parameters_); break;
+    case ScreenAction::param_save: prompt_ = Prompt{PromptKind::save, editor_.file_name()}; break;
+    case ScreenAction::param_load: prompt_ = Prompt{PromptKind::load, ""}; break;
+  }
+  return true;
+}
+
+void Console::prompt_key(Key key) {
+  Prompt& prompt = *prompt_;
+  if (key == kKeyEnter) {
+    const Prompt done = prompt;
+    prompt_.reset();
+    return submit_prompt(done);
+  }
+  if (key == kKeyBackspace) {
+    if (!prompt.text.empty()) prompt.text.pop_back();
+    return;
+  }
+  if (key == kKeyTab && prompt.kind == PromptKind::observables) {
+    // Completes the last word from the QR's table when one name fits.
+    const size_t start = prompt.text.find_last_of(' ') + 1;
+    const std::vector<std::string> names = streams_.catalog().names_starting(prompt.text.substr(start));
+    if (names.size() == 1) prompt.text = prompt.text.substr(0, start) + names[0] + " ";
+    return;
+  }
+  if (key >= ' ' && key < 0x7F && prompt.text.size() < 64) prompt.text += static_cast<char>(key);
+}
+
+void Console::submit_prompt(const Prompt& prompt) {
+  switch (prompt.kind) {
+    case PromptKind::observables: streams_.pick(prompt.text); break;
+    case PromptKind::value: {
+      const std::string error = editor_.set_typed(parameters_, prompt.text);
+      if (!error.empty()) note(Severity::warning, error);
+      break;
+    }
+    case PromptKind::save: {
+      const std::string error = editor_.save(parameters_, prompt.text);
+      note(error.empty() ? Severity::info : Severity::error,
+           error.empty() ? "parameters saved to " + prompt.text : error);
+      break;
+    }
+    case PromptKind::load: {
+      const std::string error = editor_.load(parameters_, prompt.text);
+      note(error.empty() ? Severity::info : Severity::error,
+           error.empty() ? "parameters loaded from " + prompt.text : error);
+      break;
+    }
   }
 }
 
@@ -338,6 +443,9 @@ void Console::on_answer(wire::MessageType type, wire::NackReason reason, const A
     if (refused) downloader_.on_nack(reason);
     return;  // accepted: the parts say the rest
   }
+  if (type == wire::MessageType::stream_request || type == wire::MessageType::observable_get) {
+    return streams_.on_answer(type, reason, telemetry_hz());
+  }
   if (type == wire::MessageType::mode_change) {
     const std::string mode = requested_mode_ ? mode_name(*requested_mode_) : "?";
     if (refused) note(Severity::warning, "QR refused mode " + mode + ": " + reason_text(reason));
@@ -359,6 +467,7 @@ void Console::on_gave_up(const wire::ResendEvent& event) {
   // A log_download that went unanswered is asked for again by the downloader once the line is
   // quiet; it gives up by itself when nothing comes.
   if (event.type == wire::MessageType::log_download) return;
+  if (event.type == wire::MessageType::observable_get) return streams_.table_unanswered();
   note(Severity::error, std::string("no answer from the QR to the ") + text.what + " request (" +
                             std::to_string(wire::kMaxSends) + " sends)");
 }
@@ -368,8 +477,10 @@ void Console::on_link_state(LinkState state) {
   link_state_ = state;
   if (state == LinkState::up) {
     note(Severity::info, before == LinkState::lost ? "link back" : "link up");
-    // The QR may have restarted with its defaults: every parameter goes up again.
+    // The QR may have restarted with its defaults: every parameter goes up again, and the
+    // observable table and the plot's stream are asked for again.
     parameters_.send_all();
+    streams_.link_up();
   } else if (state == LinkState::lost) {
     note(Severity::error,
          "LINK LOST: no valid frame from the QR for " + std::to_string(kLinkLostAfterMs / 1000) + " s");
@@ -417,7 +528,10 @@ void Console::tick(uint32_t now_ms) {
   if (state != LinkState::closed && link_.control_due(now_ms)) send_control();
   link_.poll(now_ms, [this](const wire::ResendEvent& event) { on_gave_up(event); });
 
-  if (state == LinkState::up && exit_ == ExitState::running) parameters_.tick(link_, now_ms);
+  if (state == LinkState::up && exit_ == ExitState::running) {
+    parameters_.tick(link_, now_ms);
+    streams_.tick(link_, now_ms);
+  }
 
   downloader_.tick(now_ms);
   if (exit_ == ExitState::waiting_for_qr && now_ms - exit_started_ms_ >= kExitWaitMs) {

@@ -23,8 +23,11 @@
 #include <pc/core/key.hpp>
 #include <pc/core/link_session.hpp>
 #include <pc/core/log_downloader.hpp>
+#include <pc/core/parameter_editor.hpp>
 #include <pc/core/parameter_sync.hpp>
 #include <pc/core/pilot_controls.hpp>
+#include <pc/core/screen_keys.hpp>
+#include <pc/core/stream_session.hpp>
 #include <pc/core/telemetry_model.hpp>
 
 namespace qrterm {
@@ -53,6 +56,14 @@ class Console {
     bool joystick = false;         // a joystick is part of the cockpit
     uint8_t first_seq = 0;         // of every request type (docs/protocol.md section 6)
     bool simulator = false;        // the console started qrsim and has its truth channel
+    std::string params_file;       // where `params` came from: the parameter screen's "file" column
+  };
+
+  // A line the pilot is typing on the plot or parameter screen.
+  enum class PromptKind : uint8_t { observables, value, save, load };
+  struct Prompt {
+    PromptKind kind;
+    std::string text;
   };
 
   Console(ConsoleLog& log, ConsoleFiles files, const Setup& setup, uint32_t now_ms);
@@ -96,8 +107,20 @@ class Console {
   JoystickState joystick_state() const { return joystick_; }
   bool joystick_position_known() const { return joystick_known_; }
   bool help_visible() const { return help_; }
+  Screen screen() const { return screen_; }
+  const std::optional<Prompt>& prompt() const { return prompt_; }
+  const StreamSession& streams() const { return streams_; }
+  const ParameterEditor& parameter_editor() const { return editor_; }
+  const ParameterSync& parameter_sync() const { return parameters_; }
+  uint32_t telemetry_hz() const;
   // "truth roll +1.2 pitch -0.5 yaw +10.0 height 1.50 m", or empty: no simulator or no line yet.
   const std::string& truth() const { return truth_; }
+  // The console started the simulator: the QR's CPU load, loop time and deadline misses are the
+  // host's scheduling of a simulated board there, not figures of a flight computer.
+  bool flying_simulator() const { return simulator_; }
+  // The simulator's clock on the console's (ms to add to a QR time): from the truth lines, the
+  // smallest difference seen, so the one that waited least on its way. Empty without truth lines.
+  std::optional<int64_t> sim_clock_offset_ms() const { return sim_clock_offset_ms_; }
   bool exiting() const { return exit_ != ExitState::running; }
   std::string download_status() const { return downloader_.status(); }
   size_t parameters_to_send() const { return parameters_.to_send(); }
@@ -125,6 +148,10 @@ class Console {
   void on_attitude(const wire::TelemetryAttitude& attitude);
   void on_log_status(const wire::LogStatus& status);
   void on_link_state(LinkState state);
+  // The plot and parameter screens' keys; false when the key is not theirs.
+  bool screen_key(Key key);
+  void prompt_key(Key key);
+  void submit_prompt(const Prompt& prompt);
 
   ConsoleLog& log_;
   ConsoleFiles files_;
@@ -145,6 +172,7 @@ class Console {
   bool help_ = false;
   bool simulator_ = false;
   std::string truth_;
+  std::optional<int64_t> sim_clock_offset_ms_;
   std::vector<std::string> sim_commands_;
   ExitState exit_ = ExitState::running;
   uint32_t exit_started_ms_ = 0;
@@ -153,6 +181,10 @@ class Console {
   uint32_t invalid_frames_ = 0;
   uint32_t unhandled_frames_ = 0;
   std::set<uint8_t> unhandled_types_;
+  StreamSession streams_;
+  ParameterEditor editor_;
+  Screen screen_ = Screen::cockpit;
+  std::optional<Prompt> prompt_;
 };
 
 }  // namespace qrterm

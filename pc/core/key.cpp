@@ -9,8 +9,9 @@ struct NamedKey {
 };
 
 constexpr NamedKey kNamedKeys[] = {
-    {kKeyEscape, "ESC"}, {kKeyInterrupt, "^C"}, {kKeyUp, "up"}, {kKeyDown, "down"},
-    {kKeyLeft, "left"},  {kKeyRight, "right"},  {' ', "space"},
+    {kKeyEscape, "ESC"},  {kKeyInterrupt, "^C"},        {kKeyUp, "up"}, {kKeyDown, "down"},
+    {kKeyLeft, "left"},   {kKeyRight, "right"},         {' ', "space"}, {kKeyTab, "Tab"},
+    {kKeyEnter, "Enter"}, {kKeyBackspace, "Backspace"}, {19, "^S"},     {15, "^O"},
 };
 
 }  // namespace

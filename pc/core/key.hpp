@@ -14,11 +14,14 @@ using Key = int32_t;
 inline constexpr Key kKeyNone = -1;
 inline constexpr Key kKeyEscape = 27;
 inline constexpr Key kKeyInterrupt = 3;  // ^C: the terminal is raw, so it is a key, not a signal
+inline constexpr Key kKeyTab = 9;
+inline constexpr Key kKeyEnter = 13;  // the raw terminal's carriage return; the screen layer maps the others here
 // Outside the range of characters, so they never collide with a typed letter.
 inline constexpr Key kKeyUp = 0x110000;
 inline constexpr Key kKeyDown = 0x110001;
 inline constexpr Key kKeyLeft = 0x110002;
 inline constexpr Key kKeyRight = 0x110003;
+inline constexpr Key kKeyBackspace = 0x110004;
 
 // "ESC", "up", "a", "?": what the help overlay and the documentation call the key.
 std::string key_name(Key key);

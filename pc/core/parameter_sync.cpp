@@ -50,6 +50,14 @@ void ParameterSync::step(const GainStep& step) {
   queue(step.id);
 }
 
+wire::NackReason ParameterSync::set(wire::ParamId id, int32_t raw) {
+  const wire::NackReason reason = wanted_.set(id_byte(id), raw);
+  if (reason != wire::NackReason::none) return reason;
+  note_(Severity::info, param_text(id, raw));
+  queue(id);
+  return reason;
+}
+
 void ParameterSync::on_report(const wire::ParamReport& report) {
   const wire::ParameterSpec* spec = wire::find_parameter(report.id);
   if (spec == nullptr) return;

@@ -35,6 +35,10 @@ class ParameterSync {
   void send_all();
   // A gain key: one step of its parameter, sent at once.
   void step(const GainStep& step);
+  // A value typed or loaded on the parameter screen: sent at once if in range, else refused.
+  wire::NackReason set(wire::ParamId id, int32_t raw);
+  // Sent and not answered yet, or waiting its turn.
+  bool pending(wire::ParamId id) const { return on_its_way(id); }
   // A value the QR says is in force.
   void on_report(const wire::ParamReport& report);
 

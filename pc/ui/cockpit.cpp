@@ -3,37 +3,22 @@
 #include <ncurses.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdarg>
 #include <cstdio>
 
 #include <pc/core/key_map.hpp>
 #include <pc/core/mode_names.hpp>
 #include <pc/core/param_file.hpp>
+#include <pc/platform/clock.hpp>
+#include <pc/ui/screen_draw.hpp>
+#include <pc/ui/screens.hpp>
 #include <pc/ui/terminal.hpp>
 
 namespace qrterm {
 namespace {
 
 constexpr double kDegPerRad = 57.29577951308232;
-
-std::string text(const char* format, ...) __attribute__((format(printf, 1, 2)));
-std::string text(const char* format, ...) {
-  char buffer[512];
-  va_list arguments;
-  va_start(arguments, format);
-  std::vsnprintf(buffer, sizeof buffer, format, arguments);
-  va_end(arguments);
-  return buffer;
-}
-
-// Writes `s` at (row, column), cut at the right edge.
-void put(int row, int column, const std::string& s, short pair = 0, attr_t attributes = A_NORMAL) {
-  const int room = COLS - column;
-  if (row < 0 || row >= LINES || room <= 0) return;
-  attron(COLOR_PAIR(pair) | attributes);
-  mvaddnstr(row, column, s.c_str(), std::min(room, static_cast<int>(s.size())));
-  attroff(COLOR_PAIR(pair) | attributes);
-}
 
 double degrees(int32_t ten_thousandths_rad) { return ten_thousandths_rad * 1e-4 * kDegPerRad; }
 double degrees_per_s(int32_t thousandths_rad_s) { return thousandths_rad_s * 1e-3 * kDegPerRad; }
@@ -62,6 +47,8 @@ void Cockpit::draw_title(const Console& console, int width) {
   std::string title = text(" qrterm | %s | %.1f s | logs %s", labels_.source.c_str(), console.uptime_ms() / 1000.0,
                            labels_.log_folder.c_str());
   put(0, 0, title, kTitle);
+  const std::string screen = text(" %s (Tab) ", kScreenNames[static_cast<size_t>(console.screen())]);
+  put(0, width - 11 - static_cast<int>(screen.size()), screen, kTitle, A_BOLD);
   put(0, width - 11, " h: help ", kTitle, A_BOLD);
 }
 
@@ -102,8 +89,19 @@ void Cockpit::draw_system(const Console& console, int width) {
     const bool low = t.flag(wire::kFlagBatteryWarning);
     put(2, 0, "battery", 0, A_BOLD);
     put(2, 8, text("%5.2f V", s.battery_mv / 1000.0), low ? kError : kInfo, low ? A_BOLD | A_REVERSE : A_NORMAL);
-    put(2, 18,
-        text("cpu %5.1f %%   loop %5u us   deadline misses %u", s.cpu_load / 10.0, s.loop_time_us, s.deadline_misses));
+    // On the simulator the board's clock is simulated time, which stands still while a tick runs:
+    // load and loop time read 0 and the misses count the host's scheduling, so none is shown. A QR
+    // whose board has no clock (loop time 0) gets the same.
+    if (console.flying_simulator() || s.loop_time_us == 0) {
+      put(2, 18,
+          console.flying_simulator() ? "cpu n/a   loop n/a   deadline misses n/a (simulator)"
+                                     : "cpu n/a   loop n/a (the board has no clock)",
+          kDim);
+    } else {
+      put(2, 18,
+          text("cpu %5.1f %%   loop %5u us   deadline misses %u", s.cpu_load / 10.0, s.loop_time_us,
+               s.deadline_misses));
+    }
   } else {
     put(2, 0, "battery", 0, A_BOLD);
     put(2, 8, "-- V", kDim);
@@ -331,6 +329,37 @@ void Cockpit::show() {
   if (bell_) beep();
   bell_ = false;
   doupdate();
+  // On the screen now: how long since the QR's tick that took the newest sample.
+  if (shown_sample_ms_ && *shown_sample_ms_ != measured_sample_ms_) {
+    measured_sample_ms_ = *shown_sample_ms_;
+    const int64_t age = static_cast<int64_t>(monotonic_ms()) - *shown_sample_ms_;
+    if (age >= 0 && age < 10000) latencies_ms_.push_back(static_cast<uint32_t>(age));
+  }
+}
+
+std::string Cockpit::latency_summary() const {
+  if (latencies_ms_.empty()) return "";
+  std::vector<uint32_t> sorted = latencies_ms_;
+  std::sort(sorted.begin(), sorted.end());
+  return text(
+      "plot latency, tick to screen: median %u ms, 90th percentile %u ms over %zu screens (time_ms against "
+      "qrsim's clock)",
+      sorted[sorted.size() / 2], sorted[sorted.size() * 9 / 10], sorted.size());
+}
+
+// The newest time_ms sample of the plot as a time on the console's clock: its QR time (16 bits of
+// ms) unwrapped near the simulator's clock now.
+void Cockpit::note_plotted_sample(const Console& console) {
+  shown_sample_ms_.reset();
+  const std::optional<int64_t> offset = console.sim_clock_offset_ms();
+  if (console.screen() != Screen::plot || !offset) return;
+  for (const Trace& t : console.streams().plot().traces()) {
+    if (t.name != "time_ms" || t.points.empty() || console.streams().plot().frozen()) continue;
+    const int64_t qr_now = static_cast<int64_t>(console.now_ms()) - *offset;
+    const int64_t sample = static_cast<int64_t>(std::llround(t.points.back().value));
+    const int64_t behind = ((qr_now - sample) % 65536 + 65536) % 65536;
+    shown_sample_ms_ = static_cast<int64_t>(console.now_ms()) - behind;
+  }
 }
 
 void Cockpit::compose(const Console& console) {
@@ -349,17 +378,25 @@ void Cockpit::compose(const Console& console) {
     wnoutrefresh(stdscr);
     return;
   }
+  // The status rows live on every screen; Tab changes what is below them.
   draw_title(console, width);
   draw_mode_and_link(console, width);
   draw_system(console, width);
-  draw_engines_and_attitude(console, width);
-  draw_pilot(console, width);
-  draw_height(console, width);
-  draw_log(console, 15, rows - 15, width);
-  // The simulator's truth, across the log's rule: beside the QR's estimate above it.
-  if (!console.truth().empty()) put(14, 10, " " + console.truth() + " ", kInfo);
+  if (console.screen() == Screen::plot) {
+    draw_plot_screen(console, 4, rows - 4, width, braille_);
+  } else if (console.screen() == Screen::parameters) {
+    draw_parameter_screen(console, 4, rows - 4, width);
+  } else {
+    draw_engines_and_attitude(console, width);
+    draw_pilot(console, width);
+    draw_height(console, width);
+    draw_log(console, 15, rows - 15, width);
+    // The simulator's truth, across the log's rule: beside the QR's estimate above it.
+    if (!console.truth().empty()) put(14, 10, " " + console.truth() + " ", kInfo);
+  }
   draw_link_alarm(console, width);
   if (console.help_visible()) draw_help(rows, width);
+  note_plotted_sample(console);
   wnoutrefresh(stdscr);
 }
 

@@ -6,9 +6,12 @@
 // which may block (a slow or frozen terminal), with the lock released.
 #pragma once
 
+#include <optional>
 #include <string>
+#include <vector>
 
 #include <pc/core/console.hpp>
+#include <pc/ui/terminal.hpp>
 
 namespace qrterm {
 
@@ -25,6 +28,11 @@ class Cockpit {
   void compose(const Console& console);
   void show();
 
+  // The plot's latency from the QR's tick to the screen, on the simulator with a time_ms trace:
+  // "plot latency, tick to screen: median 23 ms over 240 screens (time_ms against qrsim's clock)",
+  // or empty when there was nothing to measure.
+  std::string latency_summary() const;
+
   static constexpr int kMinRows = 24;
   static constexpr int kMinColumns = 80;
 
@@ -38,8 +46,15 @@ class Cockpit {
   void draw_log(const Console& console, int top, int rows, int width);
   void draw_link_alarm(const Console& console, int width);
   void draw_help(int rows, int width);
+  void note_plotted_sample(const Console& console);
 
   CockpitLabels labels_;
+  bool braille_ = terminal_speaks_utf8();
+  // The newest time_ms sample in the screen being written, on the console's clock (ms), and the
+  // last one measured: each sample is measured on the first screen that shows it.
+  std::optional<int64_t> shown_sample_ms_;
+  int64_t measured_sample_ms_ = -1;
+  std::vector<uint32_t> latencies_ms_;
   LinkState alarmed_ = LinkState::waiting;
   bool bell_ = false;  // the link was just lost: ring once
 };

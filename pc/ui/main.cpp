@@ -4,6 +4,7 @@
 #include <errno.h>
 #include <unistd.h>
 
+#include <clocale>
 #include <cstdio>
 #include <cstring>
 #include <ctime>
@@ -162,6 +163,7 @@ int run(int argc, char** argv) {
   setup.joystick = joystick != nullptr;
   setup.first_seq = static_cast<uint8_t>(::time(nullptr));
   setup.simulator = sim != nullptr;
+  setup.params_file = options.params;
   Console console(log, std::move(files), setup, monotonic_ms());
 
   console.note(Severity::info,
@@ -194,6 +196,8 @@ int run(int argc, char** argv) {
     Session session{console, *serial, sim.get(), joystick.get(), terminal, cockpit};
     run_main_loop(session);
     confirmed = console.exit_confirmed();
+    const std::string latency = cockpit.latency_summary();
+    if (!latency.empty()) console.note(Severity::info, latency);
   }
   if (sim) sim->stop(confirmed ? 1000 : 0);
 

@@ -101,7 +101,9 @@ class Ui {
         console.request_exit(now);
       }
       finished = console.finished();
-      if (finished || now - last_draw_ >= kRedrawMs) {
+      // The plot moves: drawn more often, so a sample reaches the screen soon after it arrives.
+      const uint32_t redraw_ms = console.screen() == Screen::plot ? kPlotRedrawMs : kRedrawMs;
+      if (finished || now - last_draw_ >= redraw_ms) {
         last_draw_ = now;
         redraw = true;
         s_.cockpit.compose(console);

@@ -27,8 +27,9 @@ struct Session {
 // Runs until the console has finished its exit.
 void run_main_loop(Session& session);
 
-inline constexpr uint32_t kRedrawMs = 100;  // at most 10 screens a second
-inline constexpr int kLinkPollMs = 2;       // the longest a control message waits past its time
+inline constexpr uint32_t kRedrawMs = 100;     // at most 10 screens a second
+inline constexpr uint32_t kPlotRedrawMs = 40;  // the plot screen: 25 a second
+inline constexpr int kLinkPollMs = 2;          // the longest a control message waits past its time
 inline constexpr int kUiPollMs = 10;
 
 }  // namespace qrterm

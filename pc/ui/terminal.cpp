@@ -1,6 +1,10 @@
 #include <pc/ui/terminal.hpp>
 
+#include <langinfo.h>
 #include <ncurses.h>
+
+#include <clocale>
+#include <cstring>
 
 namespace qrterm {
 namespace {
@@ -15,6 +19,11 @@ constexpr KeyCode kKeyCodes[] = {
     {KEY_DOWN, kKeyDown},
     {KEY_LEFT, kKeyLeft},
     {KEY_RIGHT, kKeyRight},
+    {KEY_BACKSPACE, kKeyBackspace},
+    {127, kKeyBackspace},  // what most terminals send for Backspace
+    {8, kKeyBackspace},
+    {KEY_ENTER, kKeyEnter},
+    {'\n', kKeyEnter},
 };
 
 // A lone ESC is told from an arrow key's escape sequence by waiting this long for the rest. Short:
@@ -22,8 +31,24 @@ constexpr KeyCode kKeyCodes[] = {
 constexpr int kEscapeDelayMs = 25;
 
 }  // namespace
+}  // namespace qrterm
+
+// Present only when the program is linked with the wide-character curses (a build directory
+// configured before pc/CMakeLists.txt asked for it links the narrow one, which would print UTF-8
+// as escapes).
+#pragma weak wadd_wchnstr
+
+namespace qrterm {
+
+bool terminal_speaks_utf8() {
+  const char* codeset = ::nl_langinfo(CODESET);
+  return codeset != nullptr && std::strcmp(codeset, "UTF-8") == 0 && &wadd_wchnstr != nullptr;
+}
 
 Terminal::Terminal() {
+  // The user's locale, so the wide-character curses writes UTF-8 (the plot's braille) when the
+  // terminal takes it; under C or POSIX everything stays plain ASCII.
+  std::setlocale(LC_ALL, "");
   ::initscr();
   open_ = true;
   // Raw, not cbreak: no ^S (XOFF) to freeze the screen, no ^Z to suspend the console and with it
@@ -46,6 +71,7 @@ Terminal::Terminal() {
     ::init_pair(kTitle, COLOR_BLACK, COLOR_CYAN);
     ::init_pair(kBar, COLOR_GREEN, -1);
     ::init_pair(kDim, COLOR_BLUE, -1);
+    ::init_pair(kMagenta, COLOR_MAGENTA, -1);
   }
 }
 

@@ -26,6 +26,10 @@ class Terminal {
 };
 
 // Colour pairs the cockpit draws with.
-enum ColorPair : short { kInfo = 1, kWarning, kError, kQr, kAlarm, kTitle, kBar, kDim };
+enum ColorPair : short { kInfo = 1, kWarning, kError, kQr, kAlarm, kTitle, kBar, kDim, kMagenta };
+
+// Whether the terminal takes UTF-8 (the locale says so): the plot draws in braille then, else in
+// plain characters.
+bool terminal_speaks_utf8();
 
 }  // namespace qrterm

@@ -24,6 +24,7 @@
 #include <qr/core/flight_tasks.hpp>
 #include <qr/core/flight_telemetry.hpp>
 #include <qr/core/led_map.hpp>
+#include <qr/core/observable_streams.hpp>
 #include <qr/core/rate.hpp>
 #include <qr/core/safety.hpp>
 #include <qr/core/scheduler.hpp>
@@ -108,6 +109,7 @@ class Flight {
     telemetry_.period(*this, [this](const wire::FrameBytes& f) { send(f); });
   }
   void run_logger();
+  void run_stream();
   // The rates that are parameters, as dividers of the control rate.
   uint16_t telemetry_divider() const {
     return divider_for(static_cast<uint32_t>(params_.get(wire::ParamId::telemetry_rate_hz)));
@@ -205,6 +207,8 @@ class Flight {
 
   FlightLog log_;
   bool log_status_owed_ = false;  // after a log request, its effect is reported at once
+
+  ObservableStreams<Flight> streams_;
 
   // Parameter reports still owed after a param_get: table rows [report_next_, report_end_).
   uint8_t report_next_ = 0;

@@ -32,7 +32,7 @@ void Flight<Chain>::run_link() {
   // Parameter reports owed to a param_get: one per tick, so a full report never crowds out
   // telemetry or replies.
   if (report_next_ < report_end_ && tx_.space() >= wire::kMaxFrameBytes) {
-    const wire::ParameterSpec& spec = wire::kParameterTable[report_next_++];
+    const wire::ParameterLimits& spec = wire::kParameterLimits[report_next_++];
     send(wire::encode(wire::ParamReport{static_cast<uint8_t>(spec.id), params_.get(spec.id)}));
   }
   send_download_parts();
@@ -96,6 +96,17 @@ uint8_t Flight<Chain>::telemetry_flags() const {
 template <SignalChain Chain>
 void Flight<Chain>::run_logger() {
   if (log_.logging()) log_.write(sensor_log_line(*this), telemetry_log_line(*this));
+}
+
+// Observable samples that are due, and a row of the observable table when one is owed and the
+// line has room for it beside a telemetry period (the same reserve as log downloads keep).
+template <SignalChain Chain>
+void Flight<Chain>::run_stream() {
+  if constexpr (!kObservableStreams) return;
+  constexpr size_t kTxReserve = 64;
+  streams_.run(
+      *this, kControlHz, [this](const wire::FrameBytes& frame) { send(frame); },
+      [this](uint32_t bytes) { return tx_.space() >= bytes + kTxReserve; });
 }
 
 // Parts of a download while the link has room for them next to a telemetry period's frames.

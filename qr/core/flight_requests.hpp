@@ -50,7 +50,7 @@ struct FlightRequests {
       return;
     }
     for (uint8_t row = 0; row < wire::kParameterCount; ++row) {
-      if (static_cast<uint8_t>(wire::kParameterTable[row].id) == g.id) {
+      if (static_cast<uint8_t>(wire::kParameterLimits[row].id) == g.id) {
         f.report_next_ = row;
         f.report_end_ = static_cast<uint8_t>(row + 1);
         return;
@@ -61,6 +61,13 @@ struct FlightRequests {
   void operator()(const wire::Exit&) {
     f.safety_.request_exit(f.situation());
     f.enter_modes();
+  }
+  void operator()(const wire::ObservableGet& g) {
+    answer = kObservableStreams ? f.streams_.request_table(g.id) : NackReason::not_supported;
+  }
+  void operator()(const wire::StreamRequest& r) {
+    answer = kObservableStreams ? f.streams_.request(r, kControlHz, kControlHz / f.telemetry_divider())
+                                : NackReason::not_supported;
   }
   void operator()(const wire::LogStart& l) { log(f.log_.start(l.logs)); }
   void operator()(const wire::LogStop&) { log(f.log_.stop()); }

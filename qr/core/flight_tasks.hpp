@@ -32,6 +32,7 @@ enum FlightTask : uint8_t {
   kTelemetryTask,
   kLoggerTask,
   kVerticalTask,  // numbered last (the wire's task numbers stay), runs after the height estimate
+  kStreamTask,
   kFlightTaskCount,
 };
 static_assert(kFlightTaskCount == wire::kTaskCount, "one wire task number per row");
@@ -71,6 +72,10 @@ inline constexpr Task<Flight> kFlightTaskTable[kFlightTaskCount] = {
     // On the height estimate's ticks, after it: each run sees a fresh height and vertical speed.
     {wire::kTaskNames[kVerticalTask], [](Flight& f) { f.chain().control_vertical(); },
      Flight::ChainType::kHeightDivider, Flight::ChainType::kHeightDivider / 2, 200},
+    // Every tick: each observable stream samples on its own divider, the request's (data, not
+    // code: observable_streams.hpp); idle it only checks four slots. The bench's largest run (1228)
+    // is a sample of two streams and a frame of the observable table on one tick.
+    {wire::kTaskNames[kStreamTask], [](Flight& f) { f.run_stream(); }, 1, 0, 1400},
 };
 
 // The table as a pointer (for readers, cppcheck among them, that stumble on a variable template
@@ -94,18 +99,18 @@ namespace task_sets {
 // the bench and the filters are settled when a flight mode starts. The logger runs in every mode: a log
 // covers the whole flight, panic included.
 inline constexpr uint8_t kSafe[] = {kLinkTask,   kFilterTask, kAccelAnglesTask, kEstimatorTask,
-                                    kHeightTask, kSafetyTask, kTelemetryTask,   kLoggerTask};
+                                    kHeightTask, kSafetyTask, kStreamTask, kTelemetryTask,   kLoggerTask};
 // A panic runs the control tasks: a landing flies on them (the safety machine passes their
 // engines); the cut (hold, ramp) overrides them.
 inline constexpr uint8_t kPanic[] = {kLinkTask,   kFilterTask,   kAccelAnglesTask,     kEstimatorTask,
                                      kHeightTask, kVerticalTask, kAttitudeControlTask, kYawControlTask,
-                                     kMixerTask,  kSafetyTask,   kTelemetryTask,       kLoggerTask};
+                                     kMixerTask,  kSafetyTask, kStreamTask,   kTelemetryTask,       kLoggerTask};
 inline constexpr uint8_t kManual[] = {kLinkTask,        kFilterTask, kAccelAnglesTask, kEstimatorTask, kHeightTask,
-                                      kManualMixerTask, kSafetyTask, kTelemetryTask,   kLoggerTask};
+                                      kManualMixerTask, kSafetyTask, kStreamTask, kTelemetryTask,   kLoggerTask};
 inline constexpr uint8_t kCalibration[] = {kLinkTask,   kFilterTask,    kCalibrationTask,
-                                           kSafetyTask, kTelemetryTask, kLoggerTask};
+                                           kSafetyTask, kStreamTask, kTelemetryTask, kLoggerTask};
 inline constexpr uint8_t kYawControl[] = {kLinkTask,       kFilterTask, kAccelAnglesTask, kEstimatorTask, kHeightTask,
-                                          kYawControlTask, kMixerTask,  kSafetyTask,      kTelemetryTask, kLoggerTask};
+                                          kYawControlTask, kMixerTask,  kSafetyTask, kStreamTask,      kTelemetryTask, kLoggerTask};
 // Full control, height hold and panic fly the same rows, so they share one set (the scheduler
 // compiles each set into code of its own, and the image has to stay within the board's budget, docs/devboard.md):
 // in full control the vertical task returns at once (the lift is the pilot's); in height hold it
@@ -113,7 +118,7 @@ inline constexpr uint8_t kYawControl[] = {kLinkTask,       kFilterTask, kAccelAn
 // overrides their engines.
 inline constexpr uint8_t kFlying[] = {kLinkTask,   kFilterTask,   kAccelAnglesTask,     kEstimatorTask,
                                       kHeightTask, kVerticalTask, kAttitudeControlTask, kYawControlTask,
-                                      kMixerTask,  kSafetyTask,   kTelemetryTask,       kLoggerTask};
+                                      kMixerTask,  kSafetyTask, kStreamTask,   kTelemetryTask,       kLoggerTask};
 
 template <size_t N>
 constexpr TaskSet set(const uint8_t (&ids)[N]) {

@@ -24,6 +24,7 @@ class EdgeFiller {
 
   void operator()(uint8_t& v) { v = pick<uint8_t>({0, 1, 2, 5, 6, 7, 9, 0x12, 0x14, 0x1D, 0x81, 127, 128, 254, 255}); }
   void operator()(char& v) { v = static_cast<char>(pick<uint8_t>({0, 0, 'a', 'Z', '\n', ' ', 0x7F, 0xC3})); }
+  void operator()(int8_t& v) { v = pick<int8_t>({-128, -4, -1, 0, 1, 127}); }
   void operator()(uint16_t& v) { v = pick<uint16_t>({0, 1, 500, 999, 1000, 1001, 32768, 65535}); }
   void operator()(int16_t& v) { v = pick<int16_t>({-32768, -1001, -1000, -1, 0, 1, 1000, 1001, 32767}); }
   void operator()(uint32_t& v) { v = pick<uint32_t>({0, 1, 0x80000000u, 0xFFFFFFFFu}); }

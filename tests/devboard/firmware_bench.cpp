@@ -5,7 +5,8 @@
 // bench runs as fast as QEMU can go while the firmware sees a steady control rate. Between ticks
 // (outside what is measured) the board makes the next sensor sample from the synthetic flight
 // and a scripted pilot puts frames on the serial line, as the console would: telemetry at
-// 100 Hz, control at 50 Hz, the mode requests that arm each mode the legal way.
+// 100 Hz, control at 50 Hz, the mode requests that arm each mode the legal way, the observable
+// table and two observable streams.
 //
 // Last, the same firmware with the chain in float (soft-float through libgcc) flies full control:
 // the speed comparison the fixed-point design is judged by.
@@ -107,6 +108,19 @@ struct Rig {
   // loops and the attitude loops run; docs/safety.md rule 6).
   bool arm(Mode mode, bool landing) {
     board.send(wire::ParamSet{++seq, static_cast<uint8_t>(wire::ParamId::telemetry_rate_hz), 100});
+    // Observable streams as a plot asks for them (four observables at 200 Hz, the battery at 2 Hz)
+    // and the table being sent: the stream row's cost is measured under load.
+    // One request a control period, as a console's resend queue sends them.
+    step();
+    board.send(wire::ObservableGet{++seq, wire::kAllObservables});
+    step();
+    board.send(wire::StreamRequest{++seq, 0, static_cast<uint16_t>(qr::kControlHz / 200), {0, 1, 6, 10}});
+    step();
+    board.send(wire::StreamRequest{++seq,
+                                   1,
+                                   static_cast<uint16_t>(qr::kControlHz / 2),
+                                   {26, wire::kNoObservable, wire::kNoObservable, wire::kNoObservable}});
+    step();
     if (mode == Mode::yaw_control || mode == Mode::full_control || landing) {
       if (!request(Mode::calibration)) return false;
       for (uint32_t i = 0; i < kArmingTicksMax && flight.mode() != Mode::safe; ++i) step();

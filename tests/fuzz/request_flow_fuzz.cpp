@@ -23,6 +23,13 @@ wire::FrameBytes submit(wire::ResendQueue& queue, uint8_t which, uint8_t value, 
     case 3: return queue.submit(wire::LogStart{0, static_cast<uint8_t>(value % 3 + 1)}, now);
     case 4: return queue.submit(wire::LogStop{}, now);
     case 5: return queue.submit(wire::LogDownload{0, wire::LogKind::sensor, value, value}, now);
+    case 6: return queue.submit(wire::ObservableGet{0, value}, now);
+    case 7:
+      return queue.submit(wire::StreamRequest{0,
+                                              static_cast<uint8_t>(value % wire::kStreamCount),
+                                              value,
+                                              {value, wire::kNoObservable, wire::kNoObservable, wire::kNoObservable}},
+                          now);
     default: return queue.submit(wire::Exit{}, now);
   }
 }

@@ -67,6 +67,7 @@ class ChainReplay {
   void enter_panic() {}  // test mode never panics
   void run_telemetry() {}
   void run_logger() {}
+  void run_stream() {}
   uint16_t telemetry_divider() const { return 1; }
   uint16_t log_divider() const { return 1; }
 

@@ -1,0 +1,59 @@
+// The parameter screen's logic: a cursor over the parameter table, a step up or down, a typed
+// value, back to the default, and named parameter files saved and loaded; every change goes to the
+// QR through the ParameterSync (one param_set at a time, then a read-back). What a row shows: the
+// value the console wants, what the QR last reported, whether it is on its way, and how it differs
+// from the file the values came from.
+#pragma once
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include <optional>
+#include <string>
+
+#include <common/parameter_table.hpp>
+#include <pc/core/parameter_sync.hpp>
+
+namespace qrterm {
+
+enum class ParamStatus : uint8_t {
+  pending,    // sent (or queued), not answered yet
+  read_back,  // the QR reports the value the console wants
+  differs,    // the QR reports another value (it refused, or nothing was sent yet)
+  unknown,    // the QR has not reported it
+};
+
+const char* status_name(ParamStatus status);
+
+class ParameterEditor {
+ public:
+  explicit ParameterEditor(const wire::ParameterValues& file_values, std::string file_name)
+      : file_values_(file_values), file_name_(std::move(file_name)) {}
+
+  size_t cursor() const { return cursor_; }
+  const wire::ParameterSpec& selected() const { return wire::kParameterTable[cursor_]; }
+  void move(int rows);
+
+  ParamStatus status(const ParameterSync& sync, wire::ParamId id) const;
+  // The value the file holds, or nothing when the console's value is the file's.
+  std::optional<int32_t> file_difference(const ParameterSync& sync, wire::ParamId id) const;
+  const std::string& file_name() const { return file_name_; }
+
+  // The selected parameter one step up (+1) or down (-1): the gain keys' step where a key has one
+  // (C1 and C2 double and halve), else a hundredth of its range.
+  void step(ParameterSync& sync, int direction) const;
+  // A value typed in the parameter's unit ("5.75"): an error text, or empty when sent.
+  std::string set_typed(ParameterSync& sync, const std::string& text) const;
+  void reset_default(ParameterSync& sync) const;
+
+  // Named parameter files, in parameter-file format: an error text, or empty.
+  std::string save(const ParameterSync& sync, const std::string& path);
+  std::string load(ParameterSync& sync, const std::string& path);
+
+ private:
+  wire::ParameterValues file_values_;
+  std::string file_name_;
+  size_t cursor_ = 0;
+};
+
+}  // namespace qrterm

@@ -1,0 +1,119 @@
+#include <pc/core/plot_model.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <tuple>
+
+namespace qrterm {
+namespace {
+
+// Samples older than the longest window, and a little, are let go.
+constexpr double kKeepS = kPlotWindowsS[std::size(kPlotWindowsS) - 1] + 1;
+
+constexpr const char* kTruthOf[] = {"phi", "theta", "psi"};
+
+}  // namespace
+
+bool PlotModel::add(uint8_t id, const ObservableRow& row) {
+  if (traces_.size() >= kMaxTraces) return false;
+  for (const Trace& t : traces_) {
+    if (t.id == id) return false;
+  }
+  traces_.push_back(Trace{id, row.name, row.unit, {}});
+  return true;
+}
+
+void PlotModel::remove_last() {
+  if (!traces_.empty()) traces_.pop_back();
+}
+
+std::vector<uint8_t> PlotModel::ids() const {
+  std::vector<uint8_t> ids;
+  for (const Trace& t : traces_) ids.push_back(t.id);
+  return ids;
+}
+
+uint16_t PlotModel::divider(uint16_t control_hz) const {
+  const uint32_t d = control_hz / rate_hz();
+  return static_cast<uint16_t>(std::clamp<uint32_t>(d, 1, 65535));
+}
+
+std::pair<double, double> PlotModel::scale(double now_s) const {
+  if (fixed_) return {fixed_low_, fixed_high_};
+  const double end = view_end_s(now_s);
+  const double begin = end - window_s();
+  double low = std::numeric_limits<double>::infinity();
+  double high = -low;
+  const auto take = [&](const std::deque<PlotPoint>& points) {
+    for (const PlotPoint& p : points) {
+      if (p.t_s < begin || p.t_s > end) continue;
+      low = std::min(low, p.value);
+      high = std::max(high, p.value);
+    }
+  };
+  for (const Trace& t : traces_) {
+    take(t.points);
+    if (const auto* truth = truth_for(t)) take(*truth);
+  }
+  if (!(low <= high)) return {-1, 1};
+  // A flat trace still gets a visible band; a little room above and below the extremes.
+  const double span = std::max(high - low, std::max(std::fabs(high), std::fabs(low)) * 0.1 + 1e-3);
+  const double middle = (high + low) / 2;
+  return {middle - span * 0.55, middle + span * 0.55};
+}
+
+void PlotModel::toggle_scale(double now_s) {
+  if (!fixed_) std::tie(fixed_low_, fixed_high_) = scale(now_s);
+  fixed_ = !fixed_;
+}
+
+void PlotModel::zoom(double factor, double now_s) {
+  if (!fixed_) toggle_scale(now_s);
+  const double middle = (fixed_low_ + fixed_high_) / 2;
+  const double half = (fixed_high_ - fixed_low_) / 2 * factor;
+  fixed_low_ = middle - half;
+  fixed_high_ = middle + half;
+}
+
+void PlotModel::toggle_freeze(double now_s) {
+  if (frozen_at_) {
+    frozen_at_.reset();
+  } else {
+    frozen_at_ = now_s;
+  }
+}
+
+void PlotModel::trim(std::deque<PlotPoint>& points, double now_s) const {
+  // While frozen nothing the screen shows is let go.
+  const double oldest = (frozen_at_ ? std::min(*frozen_at_, now_s) - window_s() : now_s) - kKeepS;
+  while (!points.empty() && points.front().t_s < oldest) points.pop_front();
+}
+
+void PlotModel::add_sample(double t_s, const std::vector<double>& values) {
+  for (size_t i = 0; i < traces_.size() && i < values.size(); ++i) {
+    traces_[i].points.push_back({t_s, values[i]});
+    trim(traces_[i].points, t_s);
+  }
+}
+
+void PlotModel::clear_points() {
+  for (Trace& t : traces_) t.points.clear();
+}
+
+void PlotModel::add_truth(double t_s, double roll, double pitch, double yaw) {
+  const double values[] = {roll, pitch, yaw};
+  for (size_t i = 0; i < 3; ++i) {
+    truth_[i].push_back({t_s, values[i]});
+    trim(truth_[i], t_s);
+  }
+}
+
+const std::deque<PlotPoint>* PlotModel::truth_for(const Trace& trace) const {
+  for (size_t i = 0; i < 3; ++i) {
+    if (trace.name == kTruthOf[i] && trace.unit == "rad" && !truth_[i].empty()) return &truth_[i];
+  }
+  return nullptr;
+}
+
+}  // namespace qrterm

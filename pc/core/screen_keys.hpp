@@ -1,0 +1,76 @@
+// The keys of the plot and parameter screens, as one table. They are looked up before the
+// cockpit's key map, and only on their screen; every other key (the abort keys, modes, lift and the
+// trims, exit) still does what the cockpit's map says, so the pilot flies from any screen. Tab
+// cycles the screens.
+#pragma once
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include <pc/core/key.hpp>
+
+namespace qrterm {
+
+enum class Screen : uint8_t { cockpit, plot, parameters };
+inline constexpr size_t kScreenCount = 3;
+inline constexpr const char* kScreenNames[kScreenCount] = {"cockpit", "plot", "parameters"};
+
+enum class ScreenAction : uint8_t {
+  none,
+  plot_pick,  // opens the prompt: observable names
+  plot_remove_last,
+  plot_window,
+  plot_scale,
+  plot_zoom_in,
+  plot_zoom_out,
+  plot_freeze,
+  plot_faster,
+  plot_slower,
+  param_previous,
+  param_next,
+  param_step_down,
+  param_step_up,
+  param_type,  // opens the prompt: a value
+  param_default,
+  param_save,  // opens the prompt: a file name
+  param_load,
+};
+
+struct ScreenKey {
+  Screen screen;
+  Key key;
+  ScreenAction action;
+  const char* text;  // the screen's key line and docs/console.md
+};
+
+inline constexpr Key kKeyCtrlS = 19;
+inline constexpr Key kKeyCtrlO = 15;
+
+inline constexpr ScreenKey kScreenKeys[] = {
+    {Screen::plot, '/', ScreenAction::plot_pick, "pick observables by name"},
+    {Screen::plot, kKeyBackspace, ScreenAction::plot_remove_last, "remove the last trace"},
+    {Screen::plot, 'm', ScreenAction::plot_window, "time window 2/5/10/30 s"},
+    {Screen::plot, 'y', ScreenAction::plot_scale, "autoscale / fixed scale"},
+    {Screen::plot, '+', ScreenAction::plot_zoom_in, "fixed scale, zoom in"},
+    {Screen::plot, '-', ScreenAction::plot_zoom_out, "fixed scale, zoom out"},
+    {Screen::plot, ' ', ScreenAction::plot_freeze, "freeze / resume"},
+    {Screen::plot, '.', ScreenAction::plot_faster, "sample rate up"},
+    {Screen::plot, ',', ScreenAction::plot_slower, "sample rate down"},
+    {Screen::parameters, kKeyUp, ScreenAction::param_previous, "previous parameter"},
+    {Screen::parameters, kKeyDown, ScreenAction::param_next, "next parameter"},
+    {Screen::parameters, kKeyLeft, ScreenAction::param_step_down, "step down, sent at once"},
+    {Screen::parameters, kKeyRight, ScreenAction::param_step_up, "step up, sent at once"},
+    {Screen::parameters, kKeyEnter, ScreenAction::param_type, "type a value"},
+    {Screen::parameters, '=', ScreenAction::param_default, "back to the default"},
+    {Screen::parameters, kKeyCtrlS, ScreenAction::param_save, "save to a named file"},
+    {Screen::parameters, kKeyCtrlO, ScreenAction::param_load, "load a named file"},
+};
+
+constexpr ScreenAction screen_action(Screen screen, Key key) {
+  for (const ScreenKey& k : kScreenKeys) {
+    if (k.screen == screen && k.key == key) return k.action;
+  }
+  return ScreenAction::none;
+}
+
+}  // namespace qrterm

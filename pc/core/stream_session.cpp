@@ -1,0 +1,208 @@
+#include <pc/core/stream_session.hpp>
+
+#include <cstdio>
+#include <sstream>
+
+#include <common/nack_reason.hpp>
+#include <common/requests.hpp>
+
+namespace qrterm {
+namespace {
+
+// "p" in "rad/s" -> "p_rad_per_s": a unit in a column name, in characters every CSV reader takes.
+std::string column_name(const Trace& trace) {
+  std::string unit;
+  for (char c : trace.unit) {
+    if (c == '/') {
+      unit += "_per_";
+    } else if ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '-') {
+      unit += c;
+    } else {
+      unit += '_';
+    }
+  }
+  return trace.name + "_" + unit;
+}
+
+std::string number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", value);
+  return text;
+}
+
+}  // namespace
+
+void StreamSession::table_unanswered() {
+  table_given_up_ = true;
+  state_ = "the QR does not answer observable_get: no streams";
+  hooks_.note(Severity::warning, "the QR does not answer the observable table request: no plots from this firmware");
+}
+
+void StreamSession::link_up() {
+  table_given_up_ = false;
+  table_owed_ = true;
+  table_asked_ = false;
+  streaming_ = false;
+  asked_.reset();
+  request_owed_ = !plot_.traces().empty();
+}
+
+void StreamSession::pick(const std::string& names) {
+  std::istringstream words(names);
+  std::string name;
+  bool changed = false;
+  while (words >> name) {
+    const std::optional<uint8_t> id = catalog_.find(name);
+    if (!id) {
+      const std::vector<std::string> like = catalog_.names_starting(name.substr(0, 1));
+      std::string hint;
+      for (const std::string& n : like) hint += (hint.empty() ? "" : ", ") + n;
+      hooks_.note(Severity::warning, catalog_.complete()
+                                         ? "no observable \"" + name + "\"" + (hint.empty() ? "" : " (" + hint + ")")
+                                         : "no observable \"" + name + "\" in the QR's table yet (" + state_ + ")");
+      continue;
+    }
+    if (plot_.traces().size() >= kMaxTraces) {
+      hooks_.note(Severity::warning, "the plot has " + std::to_string(kMaxTraces) + " traces already: " + name +
+                                         " left out (Backspace removes the last)");
+      break;
+    }
+    if (plot_.add(*id, *catalog_.row(*id))) changed = true;
+  }
+  if (changed) selection_changed();
+}
+
+void StreamSession::remove_last() {
+  if (plot_.traces().empty()) return;
+  plot_.remove_last();
+  selection_changed();
+}
+
+void StreamSession::faster() {
+  plot_.faster();
+  selection_changed();
+}
+
+void StreamSession::slower() {
+  plot_.slower();
+  selection_changed();
+}
+
+void StreamSession::selection_changed() {
+  plot_.clear_points();
+  streaming_ = false;
+  request_owed_ = true;
+}
+
+std::string StreamSession::cost_text(uint32_t telemetry_hz) const {
+  const uint32_t room = wire::stream_room_bytes_per_s(telemetry_hz);
+  const size_t n = plot_.traces().size();
+  if (n == 0 || catalog_.control_hz() == 0) return "room " + std::to_string(room) + " B/s";
+  const uint16_t divider = plot_.divider(catalog_.control_hz());
+  const uint32_t bytes = wire::stream_bytes_per_s(catalog_.control_hz(), divider, static_cast<uint8_t>(n));
+  const uint32_t samples = wire::stream_samples_per_s(catalog_.control_hz(), divider, static_cast<uint8_t>(n));
+  return std::to_string(n) + " x " + std::to_string(catalog_.control_hz() / divider) +
+         " Hz = " + std::to_string(samples) + " samples/s: " + std::to_string(bytes) + " of " + std::to_string(room) +
+         " B/s" + (bytes > room ? " OVER" : "");
+}
+
+void StreamSession::tick(LinkSession& link, uint32_t now_ms) {
+  // Rows reach the disk twice a second, not per frame: at 200 frames a second a flush each would
+  // cost more than the plot.
+  if (csv_file_ && now_ms - flushed_ms_ >= 500) {
+    csv_file_->flush();
+    flushed_ms_ = now_ms;
+  }
+  if (table_given_up_) return;
+  if (!catalog_.complete()) {
+    state_ = "no table yet (" + std::to_string(catalog_.complete_rows()) + "/" +
+             (catalog_.count() ? std::to_string(catalog_.count()) : std::string("?")) + ")";
+    if (table_owed_ || (table_asked_ && now_ms - table_asked_ms_ >= kTableRetryMs)) {
+      link.request(wire::ObservableGet{0, wire::kAllObservables}, now_ms);
+      table_owed_ = false;
+      table_asked_ = true;
+      table_asked_ms_ = now_ms;
+    }
+    return;
+  }
+  if (state_.rfind("no table", 0) == 0) state_ = "table of " + std::to_string(catalog_.count()) + " observables";
+  if (!request_owed_ || catalog_.control_hz() == 0) return;
+  request_owed_ = false;
+  wire::StreamRequest request;
+  request.stream = kPlotStream;
+  const std::vector<uint8_t> ids = plot_.ids();
+  request.divider = ids.empty() ? uint16_t{0} : plot_.divider(catalog_.control_hz());
+  for (size_t i = 0; i < ids.size(); ++i) request.id[i] = ids[i];
+  asked_ = request;
+  streaming_ = false;
+  state_ = ids.empty() ? "stopping" : "asking the QR";
+  link.request(request, now_ms);
+}
+
+void StreamSession::on_answer(wire::MessageType type, wire::NackReason reason, uint32_t telemetry_hz) {
+  if (type == wire::MessageType::observable_get) {
+    if (reason != wire::NackReason::none) hooks_.note(Severity::warning, "QR refused the observable table request");
+    return;
+  }
+  if (type != wire::MessageType::stream_request || !asked_) return;
+  const wire::StreamRequest asked = *asked_;
+  asked_.reset();
+  if (reason != wire::NackReason::none) {
+    const wire::NackReasonSpec* spec = wire::find_nack_reason(reason);
+    state_ = std::string("refused: ") + (spec != nullptr ? spec->name : "?");
+    hooks_.note(Severity::warning, std::string("QR refused the stream: ") + (spec != nullptr ? spec->text : "refused") +
+                                       " (" + cost_text(telemetry_hz) + ")");
+    return;
+  }
+  if (asked.divider == 0) {
+    state_ = "stopped";
+    return;
+  }
+  streaming_ = true;
+  state_ = "streaming";
+  unpacker_.start(asked.count());
+  open_csv();
+}
+
+void StreamSession::open_csv() {
+  csv_.reset();
+  csv_file_.reset();
+  if (!hooks_.open) return;
+  csv_file_ = hooks_.open("observables_" + std::to_string(++csv_count_) + ".csv");
+  if (!csv_file_) return;
+  std::vector<std::string> header = {"time_s", "qr_time_s"};
+  for (const Trace& t : plot_.traces()) header.push_back(column_name(t));
+  csv_.emplace(*csv_file_, header);
+}
+
+void StreamSession::on(const wire::ObservableSamples& m, double now_s) {
+  // Frames of an older selection, or before the QR said yes, are not this plot's.
+  if (!streaming_ || m.stream() != kPlotStream) return;
+  const std::vector<Trace>& traces = plot_.traces();
+  const double period_s = static_cast<double>(plot_.divider(catalog_.control_hz())) / catalog_.control_hz();
+  std::vector<std::vector<double>> samples;
+  unpacker_.unpack(m, [&](const int16_t* bits) {
+    std::vector<double> values;
+    for (size_t i = 0; i < traces.size(); ++i) {
+      const ObservableRow* row = catalog_.row(traces[i].id);
+      values.push_back(row != nullptr ? row->value(bits[i]) : 0.0);
+    }
+    samples.push_back(std::move(values));
+  });
+  // The newest sample of the frame was taken last; the others a period apart before it.
+  const uint32_t first_index = unpacker_.received() + unpacker_.lost() - static_cast<uint32_t>(samples.size());
+  for (size_t j = 0; j < samples.size(); ++j) {
+    const double t = now_s - static_cast<double>(samples.size() - 1 - j) * period_s;
+    plot_.add_sample(t, samples[j]);
+    ++received_;
+    if (csv_) {
+      CsvRow row;
+      row << number(t) << number(static_cast<double>(first_index + j) * period_s);
+      for (double v : samples[j]) row << number(v);
+      csv_->write(row);
+    }
+  }
+  last_arrival_s_ = now_s;
+}
+
+}  // namespace qrterm

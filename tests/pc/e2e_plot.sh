@@ -1,0 +1,88 @@
+#!/usr/bin/env bash
+# The plot screen in tmux, flying the firmware in qrsim (issue 17): Tab to the plot screen, pick phi
+# and its set-point by name, fly full control, roll right, and read from the captured pane that
+# the phi trace went up (plain characters: the pane runs under the C locale); then ask for more
+# than the line carries and see the QR's refusal with its reason.
+set -euo pipefail
+
+qrterm=${1:?usage: e2e_plot.sh QRTERM QRSIM}
+sim=${2:?usage: e2e_plot.sh QRTERM QRSIM}
+command -v tmux >/dev/null || { echo "e2e: tmux is not installed (scripts/bootstrap installs it)" >&2; exit 1; }
+[[ -x $qrterm && -x $sim ]] || { echo "e2e: no qrterm at $qrterm or no qrsim at $sim" >&2; exit 1; }
+
+source "$(dirname "$0")/e2e_lib.sh"
+e2e_start
+
+export LC_ALL=C
+e2e_pane "$qrterm" --sim "$sim" --no-joystick --log-dir "$work/logs" --params "$work/params.txt"
+wait_for 'MODE +safe ' 30 "start: safe"
+wait_for 'cpu n/a +loop n/a +deadline misses n/a \(simulator\)' 5 "no CPU figures that mean nothing on the simulator"
+keys 3
+wait_for 'QR calibrated' 30 "calibrated"
+wait_for 'MODE +safe ' 5 "back in safe"
+
+keys Tab
+wait_for 'PLOT .*table of [0-9]+ observables' 10 "Tab: the plot screen"
+wait_for 'plot \(Tab\)' 1 "the title names the screen"
+wait_for 'MODE +safe ' 1 "the status rows stay"
+keys /
+keys -l 'phi phi_sp'
+keys Enter
+wait_for 'streaming' 10 "phi and phi_sp stream"
+wait_for '\* phi [+-][0-9.]+ .*rad +o phi_sp [+-][0-9.]+ rad' 3 "readouts of both, with units"
+
+keys 5
+wait_for 'MODE +full' 3 "5 enters full control from the plot screen"
+for _ in $(seq 56); do keys a; done
+sleep 3
+before=$(screen)
+for _ in $(seq 10); do keys Right; done
+sleep 2
+after=$(screen)
+
+# The readout: phi follows its set-point to the right (positive: right side down).
+phi=$(sed -nE 's/.*\* phi ([+-][0-9.]+) .*/\1/p' <<<"$after" | head -1)
+phi_sp=$(sed -nE 's/.*o phi_sp ([+-][0-9.]+) rad.*/\1/p' <<<"$after" | head -1)
+awk -v p="$phi" -v s="$phi_sp" 'BEGIN { exit !(s > 0.04 && p > 0.03) }' ||
+  fail "after the roll step phi $phi, phi_sp $phi_sp (expected both > 0.03 rad)"
+echo "e2e: ok: phi $phi rad follows phi_sp $phi_sp rad"
+
+# The trace: the newest '*' (phi) stands higher on the screen than the oldest one in the window,
+# and the axis says the unit.
+rows_of_phi() { awk -v side="$1" 'NR >= 7 && NR <= 19 {
+    line = substr($0, 10); n = length(line)
+    if (side == "left") { if (index(substr(line, 1, 10), "*")) print NR }
+    else { if (index(substr(line, n - 10), "*")) print NR } }'; }
+left=$(rows_of_phi left <<<"$after" | tail -1)
+right=$(rows_of_phi right <<<"$after" | head -1)
+[[ -n $left && -n $right ]] || fail "no phi trace at both ends of the window (left '$left', right '$right')"
+((right < left)) || fail "the phi trace did not go up: row $left at the left, $right at the right"
+grep -q '^rad ' <<<"$after" || fail "no unit on the axis"
+echo "e2e: ok: the phi trace went up from row $left to row $right"
+
+# Over budget: four traces at 1 kHz need 12000 B/s, the line has 8420 beside the telemetry.
+keys /
+keys -l 'theta psi'
+keys Enter
+wait_for '4 x 200 Hz' 5 "four traces"
+keys . .
+wait_for '4 x 1000 Hz = 4000 samples/s: 12000 of 8420 B/s OVER' 5 "the cost shown before the QR answers"
+wait_for 'refused: over_budget' 10 "the QR refuses the selection"
+wait_for 'QR refused the stream: the line cannot carry it' 3 "with its reason in the log"
+
+keys Escape
+wait_for 'MODE +panic ' 3 "ESC aborts from the plot screen"
+wait_for 'MODE +safe ' 10 "panic settles in safe"
+
+# Every sample went to a CSV with units in the column names.
+csv=$work/logs/observables_1.csv
+[[ -s $csv ]] || fail "no observables_1.csv"
+head -n 1 "$csv" | grep -q '^time_s,qr_time_s,phi_rad,phi_sp_rad' || fail "CSV header: $(head -n 1 "$csv")"
+rows=$(($(wc -l <"$csv") - 1))
+((rows > 1000)) || fail "only $rows samples in $csv"
+echo "e2e: ok: $rows samples in observables_1.csv"
+exit_and_check_terminal
+root=$(cd "$(dirname "$0")/../.." && pwd)
+"$root/scripts/plot" "$csv" --out "$work/observables.png" || fail "scripts/plot could not draw $csv"
+[[ $(head -c 4 "$work/observables.png" | od -An -tx1 | tr -d ' ') == 89504e47 ]] || fail "observables.png is not a PNG"
+echo "e2e: passed"

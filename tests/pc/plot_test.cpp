@@ -1,0 +1,146 @@
+// The console's side of the plot (issue 17), without a terminal: the observable table learned from
+// the wire, the samples of a stream into the plot and its CSV, the canvas a trace is drawn on.
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <common/messages.hpp>
+#include <common/sample_packing.hpp>
+#include <pc/core/observable_catalog.hpp>
+#include <pc/core/plot_canvas.hpp>
+#include <pc/core/stream_session.hpp>
+
+namespace qrterm {
+namespace {
+
+// The QR's rows as it sends them: info, then "name unit" in pieces of 7 with a NUL at the end.
+void send_table(ObservableCatalog& catalog) {
+  for (const wire::ObservableSpec& spec : wire::kObservableTable) {
+    const uint8_t id = static_cast<uint8_t>(spec.id);
+    catalog.on(wire::ObservableInfo{id, wire::kObservableCount, spec.type, spec.scale, 1000});
+    const std::string text = std::string(spec.name) + " " + spec.unit;
+    for (uint8_t part = 0; part * 7u <= text.size(); ++part) {
+      wire::ObservableText piece;
+      piece.id = id;
+      piece.part = part;
+      for (size_t i = 0; i < 7 && part * 7u + i < text.size(); ++i) piece.text[i] = text[part * 7u + i];
+      catalog.on(piece);
+    }
+  }
+}
+
+TEST(ObservableCatalog, LearnsEveryRowIncludingTextsOfSevenCharactersExactly) {
+  ObservableCatalog catalog;
+  send_table(catalog);
+  ASSERT_TRUE(catalog.complete());
+  // "accel_x counts" is 14 characters: two full parts and an empty last one.
+  const auto id = catalog.find("accel_x");
+  ASSERT_TRUE(id.has_value());
+  EXPECT_EQ(catalog.row(*id)->unit, "counts");
+  const ObservableRow& battery = *catalog.row(*catalog.find("battery"));
+  EXPECT_DOUBLE_EQ(battery.value(static_cast<int16_t>(static_cast<uint16_t>(50000))), 50.0) << "u16, 1e-3";
+  EXPECT_NEAR(catalog.row(*catalog.find("phi"))->value(-1234), -0.1234, 1e-12);
+}
+
+TEST(ObservableCatalog, ARowWithoutItsLastPieceIsNotUsable) {
+  ObservableCatalog catalog;
+  catalog.on(wire::ObservableInfo{0, 1, wire::ObservableType::i16, -4, 1000});
+  wire::ObservableText piece{0, 0, {'a', 'c', 'c', 'e', 'l', '_', 'x'}};
+  catalog.on(piece);
+  EXPECT_FALSE(catalog.complete());
+  EXPECT_FALSE(catalog.find("accel_x").has_value());
+}
+
+struct Files {
+  std::vector<std::pair<std::string, std::ostringstream*>> opened;
+  std::unique_ptr<std::ostream> open(const std::string& name) {
+    auto out = std::make_unique<std::ostringstream>();
+    opened.push_back({name, out.get()});
+    return out;
+  }
+};
+
+TEST(StreamSession, SamplesReachThePlotAndTheCsvWithUnitsInTheColumnNames) {
+  std::vector<std::string> notes;
+  Files files;
+  StreamSession session(StreamSession::Hooks{[&](Severity, const std::string& t) { notes.push_back(t); },
+                                             [&](const std::string& name) {
+                                               auto out = files.open(name);
+                                               return out;
+                                             }});
+  for (const wire::ObservableSpec& spec : wire::kObservableTable) {
+    const uint8_t id = static_cast<uint8_t>(spec.id);
+    session.on(wire::ObservableInfo{id, wire::kObservableCount, spec.type, spec.scale, 1000});
+    const std::string text = std::string(spec.name) + " " + spec.unit;
+    for (uint8_t part = 0; part * 7u <= text.size(); ++part) {
+      wire::ObservableText piece;
+      piece.id = id;
+      piece.part = part;
+      for (size_t i = 0; i < 7 && part * 7u + i < text.size(); ++i) piece.text[i] = text[part * 7u + i];
+      session.on(piece);
+    }
+  }
+  session.pick("phi p nothing");
+  EXPECT_EQ(session.plot().traces().size(), 2u);
+  ASSERT_FALSE(notes.empty());
+  EXPECT_NE(notes.back().find("no observable \"nothing\""), std::string::npos);
+  EXPECT_EQ(session.cost_text(50), "2 x 200 Hz = 400 samples/s: 1200 of 8420 B/s");
+
+  session.on_answer(wire::MessageType::stream_request, wire::NackReason::none, 50);  // nothing asked: ignored
+  LinkSession link(0, 1);
+  session.tick(link, 0);  // asks
+  session.on_answer(wire::MessageType::stream_request, wire::NackReason::none, 50);
+  EXPECT_EQ(session.state(), "streaming");
+  wire::SamplePacker packer;
+  packer.start(0, 2);
+  for (int s = 0; s < 10; ++s) {
+    const int16_t values[2] = {static_cast<int16_t>(s * 100), -500};
+    wire::ObservableSamples frame;
+    if (packer.add(values, frame)) session.on(frame, 1.0 + s * 0.005);
+  }
+  EXPECT_EQ(session.samples_received(), 10u);
+  const Trace& phi = session.plot().traces()[0];
+  ASSERT_EQ(phi.points.size(), 10u);
+  EXPECT_NEAR(phi.points.back().value, 0.09, 1e-12);
+  EXPECT_NEAR(session.plot().traces()[1].points.back().value, -0.5, 1e-12) << "p in rad/s";
+  ASSERT_EQ(files.opened.size(), 1u);
+  EXPECT_EQ(files.opened[0].first, "observables_1.csv");
+  const std::string csv = files.opened[0].second->str();
+  EXPECT_EQ(csv.substr(0, csv.find('\r')), "time_s,qr_time_s,phi_rad,p_rad_per_s");
+}
+
+TEST(PlotCanvas, ARisingTraceEndsHigherThanItStartsInBothCellKinds) {
+  std::deque<PlotPoint> points;
+  for (int i = 0; i <= 100; ++i) points.push_back({i * 0.01, i * 0.01});
+  for (bool braille : {false, true}) {
+    const PlotFrame frame{0, 1, 0, 1, 20, 8, braille};
+    const auto cells = draw_plot(frame, {{&points, 0, '*'}});
+    int first_row = -1, last_row = -1;
+    for (int r = 0; r < 8; ++r) {
+      if (cells[static_cast<size_t>(r)][0].style == 0 && first_row < 0) first_row = r;
+      if (cells[static_cast<size_t>(r)][19].style == 0 && last_row < 0) last_row = r;
+    }
+    EXPECT_EQ(first_row, 7) << "the lowest value on the bottom row, braille " << braille;
+    EXPECT_EQ(last_row, 0) << "the highest on the top row, braille " << braille;
+    if (braille) EXPECT_EQ(cells[0][19].text.size(), 3u) << "one UTF-8 braille character";
+  }
+}
+
+TEST(PlotModel, FreezeHoldsTheViewAndFixedScaleHoldsTheRange) {
+  PlotModel plot;
+  plot.add_truth(0, 0.1, 0, 0);
+  plot.toggle_freeze(5.0);
+  EXPECT_EQ(plot.view_end_s(9.0), 5.0);
+  plot.toggle_freeze(9.0);
+  EXPECT_EQ(plot.view_end_s(9.0), 9.0);
+  plot.zoom(2.0, 9.0);
+  EXPECT_FALSE(plot.autoscale());
+  const auto [low, high] = plot.scale(9.0);
+  EXPECT_DOUBLE_EQ(high - low, 4.0) << "the default band of 2, zoomed out twice";
+}
+
+}  // namespace
+}  // namespace qrterm
