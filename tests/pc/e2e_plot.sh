@@ -72,7 +72,9 @@ wait_for 'QR refused the stream: the line cannot carry it' 3 "with its reason in
 
 keys Escape
 wait_for 'MODE +panic ' 3 "ESC aborts from the plot screen"
-wait_for 'MODE +safe ' 10 "panic settles in safe"
+# The lift above (56 presses, above the hover command) has been climbing for seconds: the panic
+# lands at its descent rate (panic_descent_mm_s, 0.5 m/s) from there before it settles in safe.
+wait_for 'MODE +safe ' 40 "panic lands and settles in safe"
 
 # Every sample went to a CSV with units in the column names.
 csv=$work/logs/observables_1.csv
