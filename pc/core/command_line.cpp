@@ -13,15 +13,24 @@ struct OptionSpec {
   std::string (*set)(Options& options, const std::string& value);
 };
 
+constexpr uint32_t kBaudRates[] = {9600, 19200, 38400, 57600, 115200, 230400, 460800, 921600};
+
 constexpr OptionSpec kOptions[] = {
     {"--port", "PATH", "fly the QR on this serial device or pty instead of the simulator",
      [](Options& o, const std::string& v) { return o.port = v, std::string(); }},
     {"--baud", "N", "serial line speed (default 115200)",
      [](Options& o, const std::string& v) {
        const auto [end, error] = std::from_chars(v.data(), v.data() + v.size(), o.baud);
-       return error == std::errc{} && end == v.data() + v.size() && o.baud > 0
-                  ? std::string()
-                  : "--baud: \"" + v + "\" is not a number";
+       if (error != std::errc{} || end != v.data() + v.size() || o.baud == 0)
+         return "--baud: \"" + v + "\" is not a number";
+       // The rates a serial port takes (pc/platform/serial_port.cpp): another is a bad option, not a
+       // port that fails to open.
+       for (uint32_t rate : kBaudRates) {
+         if (o.baud == rate) return std::string();
+       }
+       return "--baud: " + v +
+              " is not a serial line speed (9600, 19200, 38400, 57600, 115200, 230400, 460800, "
+              "921600)";
      }},
     {"--sim", "PATH", "the simulator to start (default: ../qr/qrsim next to qrterm)",
      [](Options& o, const std::string& v) { return o.sim = v, std::string(); }},

@@ -78,7 +78,10 @@ struct Console::Receiver {
   void operator()(const wire::Nack& nack) {
     console.on_answer(nack.type, nack.reason, console.link_.answer(nack, console.now_ms_));
   }
-  void operator()(const wire::ParamReport& report) { console.parameters_.on_report(report); }
+  void operator()(const wire::ParamReport& report) {
+    console.parameters_.on_report(report);
+    console.on_read_back(report);
+  }
   void operator()(const wire::DebugText& text) {
     for (std::string& line : console.debug_text_.add(text)) console.note(Severity::qr, line);
   }
@@ -215,7 +218,11 @@ void Console::act(Action action, uint32_t now_ms) {
         downloader_.start(*telemetry_.log_status, now_ms_);
       }
       break;
-    case Action::params_read: link_.request(wire::ParamGet{0, wire::kAllParameters}, now_ms_); break;
+    case Action::params_read:
+      link_.request(wire::ParamGet{0, wire::kAllParameters}, now_ms_);
+      read_back_left_ = wire::kParameterCount;  // the log says what came back once all have
+      read_back_differ_.clear();
+      break;
     case Action::tasks_print: print_tasks(); break;
     case Action::sim_push:
       if (!simulator_) {
@@ -300,6 +307,21 @@ void Console::submit_prompt(const Prompt& prompt) {
   }
 }
 
+void Console::on_read_back(const wire::ParamReport& report) {
+  if (read_back_left_ == 0) return;
+  const wire::ParameterSpec* spec = wire::find_parameter(report.id);
+  if (spec != nullptr && report.value != parameters_.wanted().get(spec->id)) read_back_differ_.push_back(spec->name);
+  if (--read_back_left_ > 0) return;
+  if (read_back_differ_.empty()) {
+    note(Severity::info,
+         std::to_string(wire::kParameterCount) + " parameters read back: the QR has the console's values");
+    return;
+  }
+  std::string names;
+  for (const std::string& n : read_back_differ_) names += (names.empty() ? "" : ", ") + n;
+  note(Severity::warning, "parameters read back: the QR differs in " + names + " (the parameter screen shows them)");
+}
+
 void Console::abort(const std::string& why) {
   // The pilot's inputs are centred too: the QR lands in safe, and leaving safe again needs them
   // neutral anyway; a lift trim left standing would be the first surprise of the next flight.
@@ -329,7 +351,10 @@ void Console::request_mode(wire::Mode mode) {
       return;
     }
   }
-  note(Severity::info, std::string("asking for mode ") + mode_name(mode));
+  const bool flying = telemetry_.attitude && is_flight_mode(telemetry_.attitude->mode);
+  note(Severity::info,
+       std::string("asking for mode ") + mode_name(mode) +
+           (mode == wire::Mode::safe && flying ? " (from flight through panic: the engines ramp down first)" : ""));
   requested_mode_ = mode;
   // The QR judges "neutral" by the last control it received, which may be up to 20 ms old: a
   // pilot who centres the trims and at once asks for a mode would be refused. A control message
@@ -348,7 +373,7 @@ void Console::print_tasks() {
     note(Severity::warning, "no task figures from the QR yet");
     return;
   }
-  note(Severity::info, "QR task cycles     mean    max overruns");
+  note(Severity::info, "QR task   cycles: mean    max overruns  (instructions on the devboard)");
   for (const auto& [number, task] : telemetry_.tasks) {
     char line[64];
     std::snprintf(line, sizeof line, "  %-14s %6u %6u %8u", task_name(number).c_str(), task.mean, task.max,

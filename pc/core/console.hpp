@@ -148,6 +148,8 @@ class Console {
   void on_attitude(const wire::TelemetryAttitude& attitude);
   void on_log_status(const wire::LogStatus& status);
   void on_link_state(LinkState state);
+  // A report of the read-back `p` asked for: once all are in, the log says what came back.
+  void on_read_back(const wire::ParamReport& report);
   // The plot and parameter screens' keys; false when the key is not theirs.
   bool screen_key(Key key);
   void prompt_key(Key key);
@@ -181,6 +183,8 @@ class Console {
   uint32_t invalid_frames_ = 0;
   uint32_t unhandled_frames_ = 0;
   std::set<uint8_t> unhandled_types_;
+  size_t read_back_left_ = 0;  // reports still to come after p
+  std::vector<std::string> read_back_differ_;
   StreamSession streams_;
   ParameterEditor editor_;
   Screen screen_ = Screen::cockpit;

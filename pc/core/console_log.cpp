@@ -16,6 +16,19 @@ std::string format_seconds(uint32_t time_ms) {
 }
 
 void ConsoleLog::add(uint32_t time_ms, Severity severity, std::string text) {
+  // A line the same as the last (a key held at a gain's end of range) is counted on the screen
+  // ("(x23)") instead of filling it; the file keeps every one with its time.
+  if (!lines_.empty() && lines_.back().severity == severity && lines_.back().text == text) {
+    LogLine& last = lines_.back();
+    ++last.repeats;
+    last.time_ms = time_ms;
+    if (file_ != nullptr) {
+      *file_ << format_seconds(time_ms) << ' ' << severity_name(severity) << ": " << text << '\n';
+      file_->flush();
+    }
+    ++total_;
+    return;
+  }
   if (file_ != nullptr) {
     *file_ << format_seconds(time_ms) << ' ' << severity_name(severity) << ": " << text << '\n';
     // Flushed at once: a console log is read after something went wrong, perhaps a crash.

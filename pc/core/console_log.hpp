@@ -17,6 +17,7 @@ struct LogLine {
   uint32_t time_ms = 0;  // since the console started
   Severity severity = Severity::info;
   std::string text;
+  uint32_t repeats = 0;  // the same line again right after: counted, not added (a held key)
 };
 
 class ConsoleLog {

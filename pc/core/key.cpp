@@ -21,7 +21,8 @@ std::string key_name(Key key) {
     if (named.key == key) return named.name;
   }
   if (key > ' ' && key < 0x7F) return std::string(1, static_cast<char>(key));
-  return "key " + std::to_string(key);
+  // "key code 300" in "key code 300 does nothing": a key without a name says what it is.
+  return "code " + std::to_string(key);
 }
 
 }  // namespace qrterm

@@ -276,8 +276,9 @@ void Cockpit::draw_log(const Console& console, int top, int rows, int width) {
   const auto& lines = console.log().lines();
   for (auto it = lines.rbegin(); it != lines.rend() && row >= top; ++it) {
     std::vector<std::string> pieces;
-    for (size_t at = 0; at < it->text.size() || pieces.empty(); at += static_cast<size_t>(room)) {
-      pieces.push_back(it->text.substr(at, static_cast<size_t>(room)));
+    const std::string shown = it->repeats > 0 ? it->text + text(" (x%u)", it->repeats + 1) : it->text;
+    for (size_t at = 0; at < shown.size() || pieces.empty(); at += static_cast<size_t>(room)) {
+      pieces.push_back(shown.substr(at, static_cast<size_t>(room)));
     }
     for (auto piece = pieces.rbegin(); piece != pieces.rend() && row >= top; ++piece, --row) {
       if (piece + 1 == pieces.rend()) put(row, 0, format_seconds(it->time_ms), kDim);

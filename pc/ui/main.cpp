@@ -2,6 +2,7 @@
 // option, a bad file, no joystick, no simulator, a busy port) is checked before the screen opens,
 // so its message lands on an ordinary terminal; after that the terminal is always given back.
 #include <errno.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <clocale>
@@ -54,6 +55,10 @@ struct StartedParams {
 };
 
 StartedParams load_params(const std::string& path) {
+  // A folder would read as nothing and fail only at the save, after the flight.
+  struct stat info {};
+  if (::stat(path.c_str(), &info) == 0 && S_ISDIR(info.st_mode))
+    throw Failure{kUsageError, path + " is a folder: --params names a file (qrterm-params.txt is the default)"};
   std::string text;
   if (!read_file(path, text)) {
     if (errno != ENOENT) throw Failure{kUsageError, "cannot read " + path + ": " + std::strerror(errno)};

@@ -478,6 +478,18 @@ TEST(Console, ReadsParametersBack) {
   b.key('p');
   b.run(50);
   EXPECT_EQ(b.console.reported(wire::ParamId::idle_level), 200);
+  // p says what came back (it used to say nothing): here the QR differs in the one it was given.
+  EXPECT_TRUE(b.run_until([&] { return b.logged("parameters read back"); }, 500));
+  EXPECT_TRUE(b.logged("parameters read back: the QR differs in idle_level"));
+}
+
+TEST(Console, ReadBackThatMatchesSaysSo) {
+  Bench b;
+  b.connect();
+  b.run(200);
+  b.key('p');
+  EXPECT_TRUE(b.run_until([&] { return b.logged("parameters read back"); }, 500));
+  EXPECT_TRUE(b.logged("parameters read back: the QR has the console's values"));
 }
 
 TEST(Console, LogStartAndStopAreAcknowledged) {

@@ -76,7 +76,9 @@ TEST(KeyMap, KeysHaveNamesForTheHelp) {
   EXPECT_EQ(qrterm::key_name(qrterm::kKeyEscape), "ESC");
   EXPECT_EQ(qrterm::key_name(qrterm::kKeyUp), "up");
   EXPECT_EQ(qrterm::key_name('a'), "a");
-  EXPECT_EQ(qrterm::key_name(7), "key 7");
+  EXPECT_EQ(qrterm::key_name(7), "code 7");
+  EXPECT_EQ(qrterm::key_name(qrterm::kKeyEnter), "Enter") << "not \"key 13\"";
+  EXPECT_EQ(qrterm::key_name(qrterm::kKeyTab), "Tab");
 }
 
 TEST(KeyMap, TrimsStepAndStayInRange) {

@@ -100,7 +100,8 @@ TEST_F(StreamFlightTest, TheWholeTableComesOverTheWireWithNamesAndUnits) {
   std::map<uint8_t, std::string> text;
   for (const auto& t : got<wire::ObservableText>()) {
     std::string& s = text[t.id];
-    s.resize(std::max(s.size(), size_t{t.part + 1u} * wire::kObservableTextPartChars), '\0');
+    const size_t needed = size_t{t.part + 1u} * wire::kObservableTextPartChars;
+    if (s.size() < needed) s.resize(needed, '\0');
     for (size_t i = 0; i < wire::kObservableTextPartChars; ++i)
       s[t.part * wire::kObservableTextPartChars + i] = t.text[i];
   }
