@@ -6,7 +6,7 @@
 // (outside what is measured) the board makes the next sensor sample from the synthetic flight
 // and a scripted pilot puts frames on the serial line, as the console would: telemetry at
 // 100 Hz, control at 50 Hz, the mode requests that arm each mode the legal way, the observable
-// table and two observable streams.
+// table and two observable streams in the modes on the ground.
 //
 // Last, the same firmware with the chain in float (soft-float through libgcc) flies full control:
 // the speed comparison the fixed-point design is judged by.
@@ -109,17 +109,20 @@ struct Rig {
   bool arm(Mode mode, bool landing) {
     board.send(wire::ParamSet{++seq, static_cast<uint8_t>(wire::ParamId::telemetry_rate_hz), 100});
     // Observable streams as a plot asks for them (four observables at 200 Hz, the battery at 2 Hz)
-    // and the table being sent: the stream row's cost is measured under load.
-    // One request a control period, as a console's resend queue sends them.
+    // and the table being sent, in the modes on the ground, so the stream row's cost is measured
+    // under load; stopped for yaw and full control, whose tick figures (the summary) stay those of
+    // the flight without a plot. One request a control period, as a console's resend queue sends them.
+    constexpr uint8_t kNone = wire::kNoObservable;
+    const bool plotting = mode != Mode::yaw_control && mode != Mode::full_control;
     step();
-    board.send(wire::ObservableGet{++seq, wire::kAllObservables});
+    if (plotting) board.send(wire::ObservableGet{++seq, wire::kAllObservables});
     step();
-    board.send(wire::StreamRequest{++seq, 0, static_cast<uint16_t>(qr::kControlHz / 200), {0, 1, 6, 10}});
+    board.send(plotting ? wire::StreamRequest{++seq, 0, static_cast<uint16_t>(qr::kControlHz / 200), {0, 1, 6, 10}}
+                        : wire::StreamRequest{++seq, 0, 0, {kNone, kNone, kNone, kNone}});
     step();
-    board.send(wire::StreamRequest{++seq,
-                                   1,
-                                   static_cast<uint16_t>(qr::kControlHz / 2),
-                                   {26, wire::kNoObservable, wire::kNoObservable, wire::kNoObservable}});
+    board.send(plotting
+                   ? wire::StreamRequest{++seq, 1, static_cast<uint16_t>(qr::kControlHz / 2), {26, kNone, kNone, kNone}}
+                   : wire::StreamRequest{++seq, 1, 0, {kNone, kNone, kNone, kNone}});
     step();
     if (mode == Mode::yaw_control || mode == Mode::full_control || landing) {
       if (!request(Mode::calibration)) return false;
