@@ -98,27 +98,28 @@ namespace task_sets {
 // The filter and estimators also run in safe and panic, so the pilot sees attitude and height on
 // the bench and the filters are settled when a flight mode starts. The logger runs in every mode: a log
 // covers the whole flight, panic included.
-inline constexpr uint8_t kSafe[] = {kLinkTask,   kFilterTask, kAccelAnglesTask, kEstimatorTask,
-                                    kHeightTask, kSafetyTask, kStreamTask, kTelemetryTask,   kLoggerTask};
+inline constexpr uint8_t kSafe[] = {kLinkTask,   kFilterTask, kAccelAnglesTask, kEstimatorTask, kHeightTask,
+                                    kSafetyTask, kStreamTask, kTelemetryTask,   kLoggerTask};
 // A panic runs the control tasks: a landing flies on them (the safety machine passes their
 // engines); the cut (hold, ramp) overrides them.
-inline constexpr uint8_t kPanic[] = {kLinkTask,   kFilterTask,   kAccelAnglesTask,     kEstimatorTask,
-                                     kHeightTask, kVerticalTask, kAttitudeControlTask, kYawControlTask,
-                                     kMixerTask,  kSafetyTask, kStreamTask,   kTelemetryTask,       kLoggerTask};
+inline constexpr uint8_t kPanic[] = {kLinkTask,     kFilterTask,          kAccelAnglesTask, kEstimatorTask, kHeightTask,
+                                     kVerticalTask, kAttitudeControlTask, kYawControlTask,  kMixerTask,     kSafetyTask,
+                                     kStreamTask,   kTelemetryTask,       kLoggerTask};
 inline constexpr uint8_t kManual[] = {kLinkTask,        kFilterTask, kAccelAnglesTask, kEstimatorTask, kHeightTask,
-                                      kManualMixerTask, kSafetyTask, kStreamTask, kTelemetryTask,   kLoggerTask};
-inline constexpr uint8_t kCalibration[] = {kLinkTask,   kFilterTask,    kCalibrationTask,
-                                           kSafetyTask, kStreamTask, kTelemetryTask, kLoggerTask};
-inline constexpr uint8_t kYawControl[] = {kLinkTask,       kFilterTask, kAccelAnglesTask, kEstimatorTask, kHeightTask,
-                                          kYawControlTask, kMixerTask,  kSafetyTask, kStreamTask,      kTelemetryTask, kLoggerTask};
+                                      kManualMixerTask, kSafetyTask, kStreamTask,      kTelemetryTask, kLoggerTask};
+inline constexpr uint8_t kCalibration[] = {kLinkTask,   kFilterTask,    kCalibrationTask, kSafetyTask,
+                                           kStreamTask, kTelemetryTask, kLoggerTask};
+inline constexpr uint8_t kYawControl[] = {kLinkTask,   kFilterTask,     kAccelAnglesTask, kEstimatorTask,
+                                          kHeightTask, kYawControlTask, kMixerTask,       kSafetyTask,
+                                          kStreamTask, kTelemetryTask,  kLoggerTask};
 // Full control, height hold and panic fly the same rows, so they share one set (the scheduler
 // compiles each set into code of its own, and the image has to stay within the board's budget, docs/devboard.md):
 // in full control the vertical task returns at once (the lift is the pilot's); in height hold it
 // flies the lift; a panic that lands flies its descent on all of them, and the cut (hold, ramp)
 // overrides their engines.
-inline constexpr uint8_t kFlying[] = {kLinkTask,   kFilterTask,   kAccelAnglesTask,     kEstimatorTask,
-                                      kHeightTask, kVerticalTask, kAttitudeControlTask, kYawControlTask,
-                                      kMixerTask,  kSafetyTask, kStreamTask,   kTelemetryTask,       kLoggerTask};
+inline constexpr uint8_t kFlying[] = {
+    kLinkTask,       kFilterTask, kAccelAnglesTask, kEstimatorTask, kHeightTask,    kVerticalTask, kAttitudeControlTask,
+    kYawControlTask, kMixerTask,  kSafetyTask,      kStreamTask,    kTelemetryTask, kLoggerTask};
 
 template <size_t N>
 constexpr TaskSet set(const uint8_t (&ids)[N]) {
