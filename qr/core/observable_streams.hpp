@@ -15,9 +15,8 @@
 #include <common/stream_budget.hpp>
 #include <qr/core/observable_readers.hpp>
 
-// The flight image of the devboard (qr.elf) leaves streams out: it was within 1 KiB of its 64 KiB
-// limit before them, and they cost about 4 KiB there (docs/devboard.md). Its bench (qr-bench)
-// and every host build carry them.
+// A board short of image can build without streams (QR_OBSERVABLE_STREAMS=0, about 4 KiB on
+// RV32): it answers their requests not_supported. Every image of this project carries them.
 #ifndef QR_OBSERVABLE_STREAMS
 #define QR_OBSERVABLE_STREAMS 1
 #endif
