@@ -10,13 +10,9 @@
 
 #include <qr/host/replay.hpp>
 
-namespace {
+#include "fuzz_checks.hpp"
 
-void require(bool condition) {
-  if (!condition) __builtin_trap();
-}
-
-}  // namespace
+using fuzz::require;
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   std::istringstream in(std::string(reinterpret_cast<const char*>(data), size));

@@ -13,19 +13,10 @@
 #include <qr/boards/sim/scenario_figures.hpp>
 #include <qr/boards/sim/scenario_script.hpp>
 
-namespace {
+#include "fuzz_checks.hpp"
 
-void require(bool condition) {
-  if (!condition) __builtin_trap();
-}
-
-size_t line_count(const std::string& text) {
-  size_t lines = 1;
-  for (char c : text) lines += c == '\n' ? 1 : 0;
-  return lines;
-}
-
-}  // namespace
+using fuzz::require;
+using fuzz::line_count;
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);

@@ -10,13 +10,9 @@
 
 #include <qr/boards/sim/truth_channel.hpp>
 
-namespace {
+#include "fuzz_checks.hpp"
 
-void require(bool condition) {
-  if (!condition) __builtin_trap();
-}
-
-}  // namespace
+using fuzz::require;
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string_view line(reinterpret_cast<const char*>(data), size);

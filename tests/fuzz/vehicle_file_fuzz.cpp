@@ -9,13 +9,9 @@
 
 #include <sim/vehicle.hpp>
 
-namespace {
+#include "fuzz_checks.hpp"
 
-void require(bool condition) {
-  if (!condition) __builtin_trap();
-}
-
-}  // namespace
+using fuzz::require;
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
