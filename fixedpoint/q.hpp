@@ -13,6 +13,7 @@
 //   fails to compile when the value does not fit; other formats through fx::convert.
 #pragma once
 
+#include <fixedpoint/detail/divide.hpp>
 #include <fixedpoint/detail/raw.hpp>
 
 namespace fx {
@@ -111,16 +112,31 @@ class Q {
   friend constexpr Q div_sat(Q a, Q b) {
     using U = typename Traits::UProduct;
     if (b.raw_ == 0) return a.raw_ > 0 ? max() : a.raw_ < 0 ? min() : Q{};
-    // n / d with n = a * 2^Frac, rounded on magnitudes: half up is floor((2|n| + |d|) / 2|d|)
-    // for a positive quotient and -floor((2|n| + |d| - 1) / 2|d|) for a negative one. Both fit:
-    // 2|n| <= 2^(2 bits - 1) and |d| <= 2^(bits - 1).
     const bool negative = (a.raw_ < 0) != (b.raw_ < 0);
-    const U n = detail::magnitude<U>(a.raw_) << Frac;
-    const U d = detail::magnitude<U>(b.raw_);
-    const U q = (2 * n + d - static_cast<U>(negative)) / (2 * d);
     constexpr U kMaxMagnitude = static_cast<U>(Traits::max);
-    if (negative) return q > kMaxMagnitude + 1 ? min() : from_raw(detail::wrap<Raw>(U{0} - q));
-    return q > kMaxMagnitude ? max() : from_raw(static_cast<Raw>(q));
+    if constexpr (sizeof(Raw) == 4) {
+      // On magnitudes, n / d = q + r / d, rounded half up: q + 1 when r >= d / 2 for a positive
+      // quotient, when r > d / 2 for a negative one (away from zero only past the half). A
+      // quotient of 2^32 or more saturates, so the division needs only 32 bits of quotient.
+      const uint64_t n = static_cast<uint64_t>(detail::magnitude<U>(a.raw_)) << Frac;
+      const uint32_t d = static_cast<uint32_t>(detail::magnitude<U>(b.raw_));
+      if ((n >> 32) >= d) return negative ? min() : max();
+      const auto [q, r] = detail::divide_below(n, d);
+      const uint32_t limit = static_cast<uint32_t>(kMaxMagnitude) + (negative ? 1u : 0u);
+      if (q > limit) return negative ? min() : max();
+      const uint32_t rounded = q + ((negative ? r > d - r : r >= d - r) ? 1u : 0u);  // <= 2^31 + 1
+      if (rounded > limit) return negative ? min() : max();
+      return from_raw(detail::wrap<Raw>(negative ? 0u - rounded : rounded));
+    } else {
+      // n / d with n = a * 2^Frac, rounded on magnitudes: half up is floor((2|n| + |d|) / 2|d|)
+      // for a positive quotient and -floor((2|n| + |d| - 1) / 2|d|) for a negative one. Both fit:
+      // 2|n| <= 2^(2 bits - 1) and |d| <= 2^(bits - 1).
+      const U n = detail::magnitude<U>(a.raw_) << Frac;
+      const U d = detail::magnitude<U>(b.raw_);
+      const U q = (2 * n + d - static_cast<U>(negative)) / (2 * d);
+      if (negative) return q > kMaxMagnitude + 1 ? min() : from_raw(detail::wrap<Raw>(U{0} - q));
+      return q > kMaxMagnitude ? max() : from_raw(static_cast<Raw>(q));
+    }
   }
 
   // ---- comparisons ----

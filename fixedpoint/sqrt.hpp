@@ -3,6 +3,7 @@
 // inputs give 0.
 #pragma once
 
+#include <fixedpoint/detail/divide.hpp>
 #include <fixedpoint/detail/raw.hpp>
 #include <fixedpoint/q.hpp>
 
@@ -13,17 +14,6 @@ template <typename U>
 struct RootAndRemainder {
   U root, remainder;  // root = floor(sqrt(n)), remainder = n - root^2
 };
-
-constexpr int bit_length(uint32_t v) {
-  int n = 0;
-  for (int step = 16; step > 0; step >>= 1) {
-    if ((v >> step) != 0) {
-      v >>= step;
-      n += step;
-    }
-  }
-  return n + static_cast<int>(v);
-}
 
 // ceil(16 sqrt(m + 1)) for m = 0..63: a root at or above sqrt(m + 1), in 1/16 units.
 struct RootSeeds {
@@ -66,36 +56,38 @@ constexpr uint32_t root_from_above(uint32_t n, uint32_t x) {
   return {x, n - x * x};
 }
 
-// For n < 2^62 (what Q<F, int32_t> needs). The schoolbook method on 64 bits would cost ~600
-// instructions on RV32, so: the top 32 significant bits m = n / 4^s give the root's top 16
-// bits m0 = isqrt(m) in 32-bit arithmetic, one Newton step r = m0 2^s + (n - m0^2 4^s) / (m0
-// 2^(s+1)) adds the rest with a single 32-bit divide, and a check of r^2 against n corrects
-// the last unit. (The Newton step from below overshoots by less than 2^s / (2 m0) <= 1/2 and
-// the truncations undershoot by less than one, so one correction step each way suffices.)
-// Both roots are out of line: inlined (and unrolled) into each caller they cost the QR's image
-// kilobytes, for the few instructions of a call.
-[[gnu::noinline]] constexpr RootAndRemainder<uint64_t> isqrt(uint64_t n) {
+// floor(sqrt(n)) for n < 2^62 (what Q<F, int32_t> needs). The schoolbook method on 64 bits
+// would cost ~600 instructions on RV32, so: the top 32 significant bits m = n / 4^s give the
+// root's top 16 bits m0 = isqrt(m) in 32-bit arithmetic, one Newton step r = m0 2^s + (n - m0^2
+// 4^s) / (m0 2^(s+1)) adds the rest with a single 32-bit divide, and a check of r^2 against n
+// corrects the last unit. (The Newton step from below overshoots by less than 2^s / (2 m0) <= 1/2
+// and the truncations undershoot by less than one, so one correction step each way suffices.)
+// Everything but that check is 32-bit: the root is below 2^31 and the bits below m, fewer than
+// 2^30.
+constexpr uint32_t root_below_2_pow_62(uint64_t n) {
   const uint32_t high = static_cast<uint32_t>(n >> 32);
-  if (high == 0) {
-    const auto r = isqrt(static_cast<uint32_t>(n));
-    return {r.root, r.remainder};
-  }
+  if (high == 0) return isqrt(static_cast<uint32_t>(n)).root;
   const int s = (bit_length(high) + 1) / 2;  // 1 <= s <= 15 for n < 2^62
   const uint32_t m = static_cast<uint32_t>(n >> (2 * s));
-  const uint64_t low = n - (static_cast<uint64_t>(m) << (2 * s));
+  const uint32_t low = static_cast<uint32_t>(n) & ((1u << (2 * s)) - 1u);
   const auto [m0, rem0] = isqrt(m);  // m in [2^30, 2^32): m0 in [2^15, 2^16), rem0 <= 2 m0
   // (n - (m0 2^s)^2) / (2 m0 2^s) = (rem0 2^s + low / 2^s) / (2 m0); halved to fit 32 bits.
-  const uint32_t numerator = (rem0 << (s - 1)) + static_cast<uint32_t>(low >> (s + 1));
-  uint64_t root = (static_cast<uint64_t>(m0) << s) + numerator / m0;
-  uint64_t square = root * root;
+  const uint32_t numerator = (rem0 << (s - 1)) + (low >> (s + 1));
+  uint32_t root = (m0 << s) + numerator / m0;
+  const uint64_t square = static_cast<uint64_t>(root) * root;
   if (square > n) {
     --root;
-    square = root * root;
-  } else if (n - square > 2 * root) {  // (root + 1)^2 = square + 2 root + 1 <= n
-    square += 2 * root + 1;
+  } else if (n - square > 2 * static_cast<uint64_t>(root)) {  // (root + 1)^2 = square + 2 root + 1 <= n
     ++root;
   }
-  return {root, n - square};
+  return root;
+}
+
+// floor(sqrt(n)) and what remains, for n < 2^62. Out of line: inlined into each caller it costs
+// the QR's image kilobytes, for the few instructions of a call.
+[[gnu::noinline]] constexpr RootAndRemainder<uint64_t> isqrt(uint64_t n) {
+  const uint32_t root = root_below_2_pow_62(n);
+  return {root, n - static_cast<uint64_t>(root) * root};
 }
 
 }  // namespace detail
@@ -104,11 +96,19 @@ template <int F, typename R>
 constexpr Q<F, R> sqrt(Q<F, R> x) {
   using U = typename detail::RawTraits<R>::UProduct;
   if (x.raw() <= 0) return Q<F, R>{};
-  // sqrt(raw / 2^F) * 2^F = sqrt(raw * 2^F): the integer root of a number twice as wide.
-  const auto [root, remainder] = detail::isqrt(static_cast<U>(x.raw()) << F);
-  // n lies between root^2 and (root + 1)^2 and is nearer the upper one when n - root^2
-  // exceeds root + 1/2; both sides are integers.
-  return Q<F, R>::from_raw(static_cast<R>(remainder > root ? root + 1 : root));
+  if constexpr (sizeof(R) == 4 && F <= 29) {
+    // sqrt(raw / 2^F) * 2^F = sqrt(raw 2^F), rounded: with k = floor(sqrt(4 raw 2^F)) =
+    // floor(2 sqrt(raw 2^F)), the rounded root is (k + 1) / 2 (the root's first fractional bit
+    // decides; ties cannot occur), and 4 raw 2^F < 2^62 keeps the whole root in 32 bits.
+    const uint32_t k = detail::root_below_2_pow_62(static_cast<uint64_t>(x.raw()) << (F + 2));
+    return Q<F, R>::from_raw(static_cast<R>((k + 1) >> 1));
+  } else {
+    // sqrt(raw / 2^F) * 2^F = sqrt(raw * 2^F): the integer root of a number twice as wide.
+    const auto [root, remainder] = detail::isqrt(static_cast<U>(x.raw()) << F);
+    // n lies between root^2 and (root + 1)^2 and is nearer the upper one when n - root^2
+    // exceeds root + 1/2; both sides are integers.
+    return Q<F, R>::from_raw(static_cast<R>(remainder > root ? root + 1 : root));
+  }
 }
 
 }  // namespace fx

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <fixedpoint/q.hpp>
 
+#include <cstdio>
 #include <functional>
 
 #include "reference.hpp"
@@ -95,6 +96,34 @@ struct DivideRoundsHalfUpAndSaturatesIncludingByZero {
 };
 TEST(QInt32, DivideRoundsHalfUpAndSaturatesIncludingByZero) {
   for_each_format<DivideRoundsHalfUpAndSaturatesIncludingByZero>();
+}
+
+// Quotients exactly half-way between two raws, where only the rounding rule decides (random
+// pairs almost never land there): a 2^16 = (q + 1/2) d with d = 2^17 t, a = t (2q + 1), of both
+// signs, and the same for whole numbers (Q<0>: a = q d + d / 2). Positive halves go up, negative
+// ones towards zero (half up: -2.5 -> -2).
+TEST(QInt32, DivideRoundsExactHalvesUp) {
+  fxtest::RawSource<int32_t> source(6);
+  int checked = 0;
+  for (int i = 0; i < 200000; ++i) {
+    const uint32_t t = 1u + static_cast<uint32_t>(source.next()) % 16383u;  // d = 2^17 t < 2^31
+    const uint32_t q = static_cast<uint32_t>(source.next()) % (0x7FFFFFFFu / (2 * t + 1) / 2);  // a fits
+    const int32_t a = static_cast<int32_t>(t * (2 * q + 1)), d = static_cast<int32_t>(t << 17);
+    using Q16 = fx::Q<16>;
+    ASSERT_EQ((Q16::from_raw(a) / Q16::from_raw(d)).raw(), static_cast<int32_t>(q + 1)) << a << " / " << d;
+    ASSERT_EQ((Q16::from_raw(-a) / Q16::from_raw(d)).raw(), -static_cast<int32_t>(q)) << -a << " / " << d;
+    ASSERT_EQ((Q16::from_raw(a) / Q16::from_raw(-d)).raw(), -static_cast<int32_t>(q)) << a << " / " << -d;
+    const uint32_t whole_d = 2u * (1u + static_cast<uint32_t>(source.next()) % 0x3FFFFFFEu);
+    const uint32_t whole_q = static_cast<uint32_t>(source.next()) % ((0x7FFFFFFFu - whole_d / 2) / whole_d + 1);
+    const int32_t whole_a = static_cast<int32_t>(whole_q * whole_d + whole_d / 2);
+    using Q0 = fx::Q<0>;
+    ASSERT_EQ((Q0::from_raw(whole_a) / Q0::from_raw(static_cast<int32_t>(whole_d))).raw(),
+              static_cast<int32_t>(whole_q + 1));
+    ASSERT_EQ((Q0::from_raw(-whole_a) / Q0::from_raw(static_cast<int32_t>(whole_d))).raw(),
+              -static_cast<int32_t>(whole_q));
+    checked += 5;
+  }
+  std::printf("  %d exact halves rounded\n", checked);
 }
 
 struct TimesIntegerWrapsOrSaturates {

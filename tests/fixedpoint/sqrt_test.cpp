@@ -111,4 +111,33 @@ TEST(Sqrt, IntegerRootExactAtEveryEdge) {
   std::printf("  integer root exact on %llu inputs\n", static_cast<unsigned long long>(checked));
 }
 
+// The wide root under the Q<F, int32_t> roots: exact at both edges of a root's run of inputs, r^2
+// and (r + 1)^2 - 1, for every r below 2^20, every r around a power of two, and 2^20 spread over
+// the rest of its range (roots below 2^31: inputs below 2^62).
+TEST(Sqrt, WideRootExactAtTheEdges) {
+  uint64_t checked = 0;
+  const auto expect_edges = [&checked](uint64_t r) {
+    const uint64_t square = r * r, next_square = (r + 1) * (r + 1);
+    ASSERT_EQ(fx::detail::root_below_2_pow_62(square), r) << "n = " << square;
+    if (next_square - 1 < (uint64_t{1} << 62)) {
+      ASSERT_EQ(fx::detail::root_below_2_pow_62(next_square - 1), r) << "n = " << next_square - 1;
+      const auto wide = fx::detail::isqrt(next_square - 1);
+      ASSERT_EQ(wide.root, r);
+      ASSERT_EQ(wide.remainder, 2 * r);
+    }
+    checked += 2;
+  };
+  for (uint64_t r = 0; r < (1u << 20); ++r) expect_edges(r);
+  for (int b = 20; b <= 31; ++b) {
+    for (uint64_t d = 0; d < 64; ++d) {
+      expect_edges((uint64_t{1} << b) - 1 - d);
+      if (b < 31) expect_edges((uint64_t{1} << b) + d);
+    }
+  }
+  for (uint64_t r = 1u << 20, step = ((uint64_t{1} << 31) - r) >> 20; r < (uint64_t{1} << 31); r += step + (r & 7)) {
+    expect_edges(r);
+  }
+  std::printf("  wide root exact on %llu inputs\n", static_cast<unsigned long long>(checked));
+}
+
 }  // namespace
