@@ -106,7 +106,7 @@ TEST(QInt32, DivideRoundsExactHalvesUp) {
   fxtest::RawSource<int32_t> source(6);
   int checked = 0;
   for (int i = 0; i < 200000; ++i) {
-    const uint32_t t = 1u + static_cast<uint32_t>(source.next()) % 16383u;  // d = 2^17 t < 2^31
+    const uint32_t t = 1u + static_cast<uint32_t>(source.next()) % 16383u;                      // d = 2^17 t < 2^31
     const uint32_t q = static_cast<uint32_t>(source.next()) % (0x7FFFFFFFu / (2 * t + 1) / 2);  // a fits
     const int32_t a = static_cast<int32_t>(t * (2 * q + 1)), d = static_cast<int32_t>(t << 17);
     using Q16 = fx::Q<16>;
