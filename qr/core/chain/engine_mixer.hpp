@@ -74,23 +74,21 @@ class EngineMixer {
     Thrust base = clamp(per_engine, low, kFullThrust);
 
     Thrust m[4];
-    for (int i = 0; i < 4; ++i) {
-      const Row& row = kRows[i];
-      m[i] = fx::narrow<Thrust>(fx::mul_wide(row.roll, wanted.roll) + fx::mul_wide(row.pitch, wanted.pitch) +
-                                fx::mul_wide(row.yaw, wanted.yaw));
-    }
-    Thrust peak = max_of(max_of(m[0], m[1]), max_of(m[2], m[3]));
-    Thrust trough = min_of(min_of(m[0], m[1]), min_of(m[2], m[3]));
+    moment_parts(wanted, m);
+    // Each pair sorted by one compare, then the larger of the tops and the smaller of the bottoms.
+    const bool front_high = m[2] < m[0], left_high = m[1] < m[3];
+    Thrust peak = max_of(front_high ? m[0] : m[2], left_high ? m[3] : m[1]);
+    Thrust trough = min_of(front_high ? m[2] : m[0], left_high ? m[1] : m[3]);
 
     const Thrust room = kFullThrust - low;
     limited_ = false;
     if (room < peak - trough) {  // 1.
-      scale(m, peak, trough, fraction(room, peak - trough));
+      scale(m, peak, trough, room, peak - trough);
       limited_ = true;
     }
     if (kFullThrust < base + peak) base = kFullThrust - peak;  // 2.
     if (base + trough < low) {                                 // 3.
-      scale(m, peak, trough, fraction(base - low, -trough));
+      scale(m, peak, trough, base - low, -trough);
       limited_ = true;
     }
 
@@ -123,8 +121,9 @@ class EngineMixer {
       static_assert(Thrust::frac_bits == 16, "4000 w = raw x 125 / 2^11 below assumes Q<16>");
       if (w.raw() <= 0) return 0;
       const uint32_t raw = static_cast<uint32_t>(w.raw());
-      // floor(4000 w) = floor(raw x 125 / 2^11), split so that nothing exceeds 32 bits.
-      const uint32_t four_x = (raw >> 11) * 125u + (((raw & 0x7FFu) * 125u) >> 11);
+      // floor(4000 w) = floor(raw x 125 / 2^11) = the high word of raw x (125 x 2^21): one mulhu
+      // (a constant multiplier the compiler would otherwise unfold into shifts and adds).
+      const uint32_t four_x = static_cast<uint32_t>((static_cast<uint64_t>(raw) * (125u << 21)) >> 32);
       return static_cast<int32_t>((isqrt_below_4_pow_11(four_x) + 1) >> 1);
     } else {
       return N::round_to_int(fx::mul_wide(N::sqrt(w), kRootOf1000));
@@ -147,14 +146,56 @@ class EngineMixer {
 
   // floor(sqrt(n)) for n < 4^11 (4000 w <= 4e6: the clamp to [low, 1000] before the call keeps n
   // there). In flight n is at least 2^16 (a thrust of 16.4 units, an engine at 128), and its top
-  // six bits k = n / 2^16 seed the root from above: sqrt(n) < 256 sqrt(k + 1) <= 16 x the general
-  // root's seed for k (fixedpoint/sqrt.hpp), at most 41 % high (k = 1). Two Newton steps and a
-  // check finish it: about a third of the general root's work, which must first find n's bit
-  // length.
+  // eight bits k = n / 2^14 seed the root from above with ceil(sqrt((k + 1) 2^14)) (kRootSeeds
+  // below): at most 12 % high (k = 4), under 1 % from k = 64 (a thrust of 262, about hover). One
+  // Newton step and a check finish it (fixedpoint/sqrt.hpp, root_from_above with one step).
+  struct RootSeeds {
+    uint16_t of[256];
+  };
+  static constexpr RootSeeds make_root_seeds() {
+    RootSeeds t{};
+    for (uint32_t k = 0; k < 256; ++k) {
+      uint32_t r = 0;
+      while (r * r < (k + 1) << 14) ++r;
+      t.of[k] = static_cast<uint16_t>(r);
+    }
+    return t;
+  }
+  static constexpr RootSeeds kRootSeeds = make_root_seeds();
   static constexpr uint32_t isqrt_below_4_pow_11(uint32_t n) {
     if (n < (1u << 16)) return fx::detail::isqrt(n).root;
-    return fx::detail::root_from_above(n, static_cast<uint32_t>(fx::detail::kRootSeeds.of[n >> 16]) << 4);
+    uint32_t x = kRootSeeds.of[n >> 14];
+    x = (x + n / x) >> 1;  // from above, integer Newton never passes the root (fixedpoint/sqrt.hpp)
+    while (x > n / x) --x;
+    return x;
   }
+  // m_i = roll x L + pitch x M + yaw x N of row i. The rows hold halves and quarters, so in the
+  // Q formats each part is (+-2 L or +-2 M +- N) / 4, rounded half up as narrow() rounds the
+  // exact sum of the products: the same value in a few 32-bit operations, where the three
+  // 64-bit products cost the mixer about a quarter of its instructions. The bound keeps
+  // 2 |L| + |N| inside 32 bits; every source of moments clamps far inside it (the controllers at
+  // +-1000, the sticks' open loop below).
+  static void moment_parts(const Moments<Thrust>& wanted, Thrust (&m)[4]) {
+    if constexpr (fx::is_q<Thrust>) {
+      static_assert(Thrust::frac_bits == 16, "the bound below assumes Q<16>");
+      constexpr Thrust kBound = Thrust(8192.0);  // 2^29 raw: 3 x 2^29 < 2^31
+      const int32_t l = clamp(wanted.roll, -kBound, kBound).raw();
+      const int32_t p = clamp(wanted.pitch, -kBound, kBound).raw();
+      const int32_t n = clamp(wanted.yaw, -kBound, kBound).raw();
+      const auto quarter = [](int32_t x) { return Thrust::from_raw((x + 2) >> 2); };
+      m[0] = quarter(2 * p - n);
+      m[1] = quarter(n - 2 * l);
+      m[2] = quarter(-2 * p - n);
+      m[3] = quarter(2 * l + n);
+    } else {
+      for (int i = 0; i < 4; ++i) {
+        const Row& row = kRows[i];
+        m[i] = fx::narrow<Thrust>(fx::mul_wide(row.roll, wanted.roll) + fx::mul_wide(row.pitch, wanted.pitch) +
+                                  fx::mul_wide(row.yaw, wanted.yaw));
+      }
+    }
+  }
+
   // num / den for 0 <= num < den: the saturation's scale factor, in Q<30> (a Thrust quotient
   // would be quantised to 1.5e-5, and the realised moments with it: up to 0.008 thrust units
   // off the ratio asked for). A 64-bit division, taken only when saturating.
@@ -167,7 +208,10 @@ class EngineMixer {
     }
   }
 
-  static void scale(Thrust (&m)[4], Thrust& peak, Thrust& trough, Factor factor) {
+  // Every part, the peak and the trough times num / den. Out of line: it runs only when
+  // saturating, and inlined its registers would cost every mix a longer prologue.
+  [[gnu::noinline]] static void scale(Thrust (&m)[4], Thrust& peak, Thrust& trough, Thrust num, Thrust den) {
+    const Factor factor = fraction(num, den);
     for (Thrust& v : m) v = product<Thrust>(v, factor);
     peak = product<Thrust>(peak, factor);
     trough = product<Thrust>(trough, factor);
