@@ -112,7 +112,7 @@ void Pilot::on_frame(const wire::Frame& frame, uint64_t sent_at_us) {
   };
   Handler handler{*this, sent_at_us};
   wire::dispatch(frame, handler);
-  if (on_every_frame_) on_every_frame_(frame);
+  if (on_every_frame_) on_every_frame_(frame, parser_.counters());
 }
 
 uint16_t lift_for_height(const sim::Quadrotor& plant, double target, double ramp) {

@@ -75,8 +75,9 @@ class Pilot {
   // The line from here on damaged as `faults` say.
   void damage_line(const LineFaults& faults);
   const LineFaultCounts& line_counts() const { return counts_; }
-  // Every frame from the QR, after the pilot's own handling (log parts, status, ...).
-  void on_every_frame(std::function<void(const wire::Frame&)> f) { on_every_frame_ = std::move(f); }
+  // Every frame from the QR, after the pilot's own handling (log parts, status, ...), with what
+  // the pilot's parser has counted so far.
+  void on_every_frame(std::function<void(const wire::Frame&, const wire::LinkCounters&)> f) { on_every_frame_ = std::move(f); }
   // Every byte that went onto the line towards the QR, after the damage: what the QR will read.
   void on_bytes_up(std::function<void(uint8_t)> f) { on_bytes_up_ = std::move(f); }
 
@@ -101,7 +102,7 @@ class Pilot {
   std::mt19937_64 rng_;
   uint64_t next_garbage_us_ = 0;
   LineFaultCounts counts_;
-  std::function<void(const wire::Frame&)> on_every_frame_;
+  std::function<void(const wire::Frame&, const wire::LinkCounters&)> on_every_frame_;
   std::function<void(uint8_t)> on_bytes_up_;
 };
 

@@ -19,6 +19,9 @@ constexpr double kHoverHeight = 1.5;
 constexpr uint16_t kLogDivider = 1000;  // a log line a second at 1 kHz: the log's longest reach
 constexpr double kDownloadLimitS = 3600;  // over a line that loses 5 % of bytes a log takes long (section 9)
 constexpr double kPreflightLimitS = 30;
+// The simulated pack hovers about 12 minutes; the soak is of the software, not of the pack, so
+// its vehicle carries one that lasts the hour and the download (same mass, same voltage curve).
+constexpr double kPackCapacityScale = 8;
 
 // The pilot's script: a slow round of small roll and pitch steps, a yaw now and then, so every
 // loop works all hour. Stick units (full stick 1000).
@@ -54,7 +57,9 @@ enum class Phase : uint8_t { power_up, calibrate, arm, fly, relaunch, stop_log, 
 
 bool run_soak(const SoakOptions& options) {
   const auto wall_start = std::chrono::steady_clock::now();
-  auto qr = make_qr(sim::default_vehicle(), sim::WorldConfig{.seed = options.seed});
+  sim::VehicleParams vehicle = sim::default_vehicle();
+  vehicle.battery_capacity_mah *= kPackCapacityScale;
+  auto qr = make_qr(vehicle, sim::WorldConfig{.seed = options.seed});
   sim::World& world = qr->world;
   Pilot pilot(qr->board);
   LineReferee referee;
@@ -68,16 +73,23 @@ bool run_soak(const SoakOptions& options) {
   constexpr uint64_t kSlackUs = 30000;
 
   wire::LogDownloader<wire::TelemetryLogRecord> downloader;
-  uint32_t log_lines_delivered = 0, log_gaps = 0, log_double = 0;
+  uint32_t log_lines_delivered = 0, log_gaps = 0, log_double = 0, log_altered = 0;
   bool have_previous_line = false;
   uint32_t previous_time_us = 0;
   uint16_t previous_line = 0;
-  pilot.on_every_frame([&](const wire::Frame& frame) {
-    wire::TelemetryLogPart part;
-    if (frame.type != wire::TelemetryLogPart::kType || !wire::decode(frame, part)) return;
-    const auto now_ms = static_cast<uint32_t>(world.now_us() / 1000);
-    downloader.on_part(part, now_ms, [&](const wire::TelemetryLogRecord& r) {
+  const auto on_line = [&](const wire::TelemetryLogRecord& r) {
       ++log_lines_delivered;
+      for (uint8_t p = 0; p < wire::TelemetryLogRecord::kParts; ++p) {
+        if (!(wire::make_log_part(r, p) == qr->firmware.log().telemetry_part(r.line, p))) {
+          ++log_altered;
+          const wire::TelemetryLogPart want = qr->firmware.log().telemetry_part(r.line, p);
+          const wire::TelemetryLogPart got = wire::make_log_part(r, p);
+          std::fprintf(stderr, "soak: log line %u part %u altered:", r.line, p);
+          for (size_t i = 0; i < wire::kLogPartDataBytes; ++i) std::fprintf(stderr, " %02x/%02x", got.data[i], want.data[i]);
+          std::fprintf(stderr, "\n");
+          break;
+        }
+      }
       // Lines come in order on a clean pass; a re-request fills holes later, so judge the time
       // step only between neighbouring line numbers.
       if (have_previous_line && r.line == previous_line + 1 && r.time_us - previous_time_us != kLogDivider * qr::kPeriodUs) {
@@ -87,11 +99,16 @@ bool run_soak(const SoakOptions& options) {
       have_previous_line = true;
       previous_line = r.line;
       previous_time_us = r.time_us;
-    });
+  };
+  pilot.on_every_frame([&](const wire::Frame& frame, const wire::LinkCounters& seen) {
+    downloader.frame_accepted(seen.bytes_skipped + seen.check_failures, on_line);
+    wire::TelemetryLogPart part;
+    if (frame.type != wire::TelemetryLogPart::kType || !wire::decode(frame, part)) return;
+    downloader.on_part(part, static_cast<uint32_t>(world.now_us() / 1000), on_line);
   });
 
   Phase phase = Phase::power_up;
-  double phase_start = 0, flight_start = -1, download_start = 0;
+  double phase_start = 0, flight_start = -1, download_start = 0, flown_s = 0;
   wire::Mode requested = wire::Mode::safe;
   wire::Mode last_mode = qr->firmware.mode();
   uint32_t link_loss_panics = 0, missed_link_losses = 0, unexplained = 0, relaunches = 0, outages = 0;
@@ -120,6 +137,8 @@ bool run_soak(const SoakOptions& options) {
                              (last_mode == wire::Mode::calibration && mode == wire::Mode::safe);
       if (mode == wire::Mode::panic && wire::flies(last_mode) && referee.silence_us(now_us) + kSlackUs >= timeout_us) {
         ++link_loss_panics;
+        std::fprintf(stderr, "soak: at %.3f s a link-loss panic, the line silent %.0f ms (rule 7)\n", t,
+                     static_cast<double>(referee.silence_us(now_us)) * 1e-3);
       } else if (!explained) {
         ++unexplained;
         std::fprintf(stderr, "soak: at %.3f s %s -> %s, not asked for (line silent %.0f ms)\n", t,
@@ -191,6 +210,7 @@ bool run_soak(const SoakOptions& options) {
         }
         pilot.set_sticks(hover(t - phase_start));
         if (flown >= options.seconds) {
+          flown_s = flown;
           pilot.request(wire::LogStop{});
           enter(Phase::stop_log);
         }
@@ -240,23 +260,23 @@ bool run_soak(const SoakOptions& options) {
   const LineFaultCounts& line = pilot.line_counts();
   const uint32_t log_lost = log_lines - downloader.received();
   const bool pass = failure.empty() && deadline_misses == 0 && unexplained == 0 && missed_link_losses == 0 &&
-                    log_lost == 0 && log_gaps == 0 && log_double == 0 && log_lines > 0;
+                    log_lost == 0 && log_gaps == 0 && log_double == 0 && log_altered == 0 && log_lines > 0;
   std::printf(
-      "{\"soak\": %.3f, \"flight_seconds\": %.3f, \"seed\": %llu, \"wall_seconds\": %.2f, \"speedup\": %.1f, "
+      "{\"soak\": %.3f, \"flown_seconds\": %.3f, \"seed\": %llu, \"wall_seconds\": %.2f, \"speedup\": %.1f, "
       "\"byte_loss\": %g, \"bytes_up\": %llu, \"bytes_up_lost\": %llu, \"bytes_down\": %llu, \"bytes_down_lost\": %llu, "
       "\"garbage_bursts\": %llu, \"garbage_bytes\": %llu, \"outages\": %u, \"outage_ms\": %.0f, \"link_timeout_ms\": %llu, "
       "\"deadline_misses\": %u, \"link_loss_panics\": %u, \"missed_link_losses\": %u, \"unexplained_mode_changes\": %u, "
       "\"relaunches\": %u, \"requests_given_up\": %u, \"log_divider\": %u, \"log_lines\": %u, \"log_capacity\": %u, "
-      "\"log_lines_downloaded\": %u, \"log_lines_lost\": %u, \"log_time_gaps\": %u, \"log_rerequests\": %u, "
+      "\"log_lines_downloaded\": %u, \"log_lines_lost\": %u, \"log_lines_altered\": %u, \"log_time_gaps\": %u, \"log_rerequests\": %u, "
       "\"download_seconds\": %.1f, \"error\": %s%s%s, \"pass\": %s}\n",
-      sim_seconds, flight_start < 0 ? 0.0 : sim_seconds - flight_start, static_cast<unsigned long long>(options.seed),
+      sim_seconds, flown_s, static_cast<unsigned long long>(options.seed),
       wall, sim_seconds / wall, options.byte_loss, static_cast<unsigned long long>(line.bytes_up),
       static_cast<unsigned long long>(line.bytes_up_lost), static_cast<unsigned long long>(line.bytes_down),
       static_cast<unsigned long long>(line.bytes_down_lost), static_cast<unsigned long long>(line.garbage_bursts),
       static_cast<unsigned long long>(line.garbage_bytes), outages, options.outage_s * 1e3,
       static_cast<unsigned long long>(timeout_us / 1000), deadline_misses, link_loss_panics, missed_link_losses,
       unexplained, relaunches, pilot.view().requests_given_up, kLogDivider, log_lines, log_capacity,
-      downloader.received(), log_lost, log_gaps, downloader.rerequests(), phase == Phase::done ? sim_seconds - download_start : 0.0,
+      downloader.received(), log_lost, log_altered, log_gaps, downloader.rerequests(), phase == Phase::done ? sim_seconds - download_start : 0.0,
       failure.empty() ? "" : "\"", failure.empty() ? "null" : failure.c_str(), failure.empty() ? "" : "\"",
       pass ? "true" : "false");
   return pass;
