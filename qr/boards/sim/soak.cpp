@@ -1,5 +1,6 @@
 #include <qr/boards/sim/soak.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -34,20 +35,26 @@ wire::Control scripted_sticks(double t, uint16_t lift) {
 
 // What the QR reads: every byte that went up the line after the damage, cut into frames by a
 // parser like the firmware's; a frame that decodes with its fields in range is life (rule 7).
+// The line is mirrored (one byte every 86.8 µs after the one before, serial_line.hpp), so the
+// referee knows the tick that read each frame's last byte: the QR's own clock of life.
 class LineReferee {
  public:
   void byte(uint8_t b, uint64_t now_us) {
+    line_free_ns_ = std::max(line_free_ns_, now_us * 1000) + kByteTimeNs;
     parser_.push(b, [&](const wire::Frame& frame) {
       struct Nothing {};
       Nothing handler;
-      if (wire::dispatch(frame, handler) != wire::DispatchResult::invalid_payload) last_life_us_ = now_us;
+      if (wire::dispatch(frame, handler) == wire::DispatchResult::invalid_payload) return;
+      const uint64_t period_ns = uint64_t{qr::kPeriodUs} * 1000;
+      last_life_us_ = (line_free_ns_ + period_ns - 1) / period_ns * qr::kPeriodUs;  // the tick that reads it
     });
   }
-  uint64_t silence_us(uint64_t now_us) const { return now_us - last_life_us_; }
-  void reset(uint64_t now_us) { last_life_us_ = now_us; }
+  // Silence as the QR sees it at tick `now_us`: since the tick that read the last good frame.
+  uint64_t silence_us(uint64_t now_us) const { return now_us > last_life_us_ ? now_us - last_life_us_ : 0; }
 
  private:
   wire::FrameParser parser_{wire::Listen::pc_to_qr};
+  uint64_t line_free_ns_ = 0;
   uint64_t last_life_us_ = 0;
 };
 
@@ -68,9 +75,9 @@ bool run_soak(const SoakOptions& options) {
                                options.seed * 7919 + 1});
 
   const uint64_t timeout_us = static_cast<uint64_t>(qr->firmware.parameters().get(wire::ParamId::link_timeout_ms)) * 1000;
-  // The QR reads a byte up to a few ms after it went on the line (a garbage burst ahead of it):
-  // silences this close to the timeout may go either way.
-  constexpr uint64_t kSlackUs = 30000;
+  // The referee knows the tick a frame was read in; a tick either side of the timeout is the
+  // only doubt (the order of the link task and the watchdog within one tick).
+  constexpr uint64_t kSlackUs = 2 * qr::kPeriodUs;
 
   wire::LogDownloader<wire::TelemetryLogRecord> downloader;
   uint32_t log_lines_delivered = 0, log_gaps = 0, log_double = 0, log_altered = 0;
