@@ -421,6 +421,9 @@ void Console::receive(const uint8_t* data, size_t count, uint32_t now_ms) {
 }
 
 void Console::on_frame(const wire::Frame& frame) {
+  // Before the frame is handled: a log part is kept only when no damage surrounds it.
+  const wire::LinkCounters& seen = link_.counters();
+  downloader_.frame_accepted(seen.bytes_skipped + seen.check_failures, now_ms_);
   Receiver receiver{*this};
   const wire::DispatchResult result = wire::dispatch(frame, receiver);
   if (result == wire::DispatchResult::invalid_payload) ++invalid_frames_;

@@ -57,6 +57,17 @@ void LogDownloader::take(Download<Record>& download, const wire::LogPart<Record>
   });
 }
 
+void LogDownloader::frame_accepted(uint32_t damage, uint32_t now_ms) {
+  const auto keep = [&](auto& download) {
+    download.lines.frame_accepted(damage, [&](const auto& record) {
+      download.records.emplace(record.line, record);
+      last_progress_ms_ = now_ms;
+    });
+  };
+  if (sensor_) keep(*sensor_);
+  if (telemetry_) keep(*telemetry_);
+}
+
 void LogDownloader::on_part(const wire::SensorLogPart& part, uint32_t now_ms) {
   if (sensor_) take(*sensor_, part, Kind::sensor, now_ms);
 }

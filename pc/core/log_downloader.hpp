@@ -45,6 +45,11 @@ class LogDownloader {
   // The QR refused our log_download (matched by the caller on type and seq).
   void on_nack(wire::NackReason reason);
 
+  // Every frame the console accepts, before it is handled, with its parser's damage count
+  // (bytes skipped and checks failed so far): parts next to damage are not kept (a lost byte can
+  // splice a part that passes the 8-bit check, wire::LogDownloader).
+  void frame_accepted(uint32_t damage, uint32_t now_ms);
+
   void on_part(const wire::SensorLogPart& part, uint32_t now_ms);
   void on_part(const wire::TelemetryLogPart& part, uint32_t now_ms);
 
