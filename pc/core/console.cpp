@@ -107,7 +107,10 @@ Console::Console(ConsoleLog& log, ConsoleFiles files, const Setup& setup, uint32
       downloader_(
           LogDownloader::Hooks{[this](const wire::LogDownload& request) { link_.request(request, now_ms_); },
                                [this](Severity severity, const std::string& text) { note(severity, text); },
-                               [this](const std::string& name) { return files_.open ? files_.open(name) : nullptr; }}),
+                               [this](const std::string& name) { return files_.open ? files_.open(name) : nullptr; },
+                               [this](const std::string& from, const std::string& to) {
+                                 return files_.rename && files_.rename(from, to);
+                               }}),
       joystick_(setup.joystick ? JoystickState::ok : JoystickState::none), simulator_(setup.simulator),
       streams_(
           StreamSession::Hooks{[this](Severity severity, const std::string& text) { note(severity, text); },
@@ -416,7 +419,10 @@ void Console::joystick_back(uint32_t now_ms) {
 
 void Console::receive(const uint8_t* data, size_t count, uint32_t now_ms) {
   set_time(now_ms);
-  if (files_.rx_hex != nullptr && count > 0) *files_.rx_hex << hex_line(now_ms - start_ms_, data, count);
+  if (files_.rx_hex != nullptr && count > 0) {
+    *files_.rx_hex << hex_line(now_ms - start_ms_, data, count);
+    if (!files_.rx_hex->good()) file_failed(files_.rx_hex, "rx.hex", "rx.partial.hex");
+  }
   link_.receive(data, count, now_ms, [this](const wire::Frame& frame) { on_frame(frame); });
 }
 
@@ -446,7 +452,20 @@ void Console::on_attitude(const wire::TelemetryAttitude& attitude) {
   const auto rose = [&](uint8_t bit) { return (attitude.flags & bit) != 0 && (!before || (before->flags & bit) == 0); };
   if (rose(wire::kFlagCalibrated)) note(Severity::info, "QR calibrated");
   if (rose(wire::kFlagBatteryWarning)) note(Severity::warning, "QR battery low");
-  if (telemetry_csv_) telemetry_csv_->write(telemetry_csv_row(now_ms_ - start_ms_, telemetry_, last_control_));
+  if (telemetry_csv_) {
+    telemetry_csv_->write(telemetry_csv_row(now_ms_ - start_ms_, telemetry_, last_control_));
+    if (!files_.telemetry_csv->good()) {
+      telemetry_csv_.reset();
+      file_failed(files_.telemetry_csv, "telemetry.csv", "telemetry.partial.csv");
+    }
+  }
+}
+
+void Console::file_failed(std::ostream*& file, const char* name, const char* partial_name) {
+  file = nullptr;
+  const bool renamed = files_.rename && files_.rename(name, partial_name);
+  note(Severity::error, std::string("cannot write ") + name + " (disk full or log folder read-only): it ends here" +
+                            (renamed ? std::string(", renamed ") + partial_name : std::string(", and is partial")));
 }
 
 void Console::on_log_status(const wire::LogStatus& status) {

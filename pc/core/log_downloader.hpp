@@ -31,6 +31,7 @@ class LogDownloader {
     std::function<void(const wire::LogDownload&)> request;                       // send it (acked)
     std::function<void(Severity, const std::string&)> note;                      // tell the pilot
     std::function<std::unique_ptr<std::ostream>(const std::string& name)> open;  // a file in the log folder
+    std::function<bool(const std::string& from, const std::string& to)> rename;  // a file of the log folder
   };
 
   explicit LogDownloader(Hooks hooks);
