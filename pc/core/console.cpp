@@ -330,6 +330,12 @@ void Console::abort(const std::string& why) {
   // neutral anyway; a lift trim left standing would be the first surprise of the next flight.
   const bool trimmed = controls_.trims() != Sticks{};
   controls_.apply(Action::trims_center);
+  if (link_state_ == LinkState::closed) {
+    // Nothing can reach the QR: say what it does on its own instead of promising a request.
+    note(Severity::error, "ABORT (" + why + "): the line is gone, nothing can be sent; the QR panics by itself " +
+                              "after the link timeout without a frame (safety rule 7)");
+    return;
+  }
   note(Severity::error, "ABORT (" + why + "): panic requested" + (trimmed ? ", trims centred" : ""));
   requested_mode_ = wire::Mode::panic;
   link_.request(wire::ModeChange{0, wire::Mode::panic}, now_ms_);
@@ -536,10 +542,20 @@ void Console::on_link_state(LinkState state) {
 
 void Console::line_closed(const std::string& why, uint32_t now_ms) {
   set_time(now_ms);
-  if (link_state_ == LinkState::closed) return;
+  if (link_state_ == LinkState::closed) {
+    if (why != closed_because_) note(Severity::error, "and: " + why);  // the simulator's end after its line's
+    closed_because_ = why;
+    return;
+  }
   link_.close();
   link_state_ = LinkState::closed;
-  note(Severity::error, "LINK LOST: " + why);
+  closed_because_ = why;
+  // A QR that was flying is on its own now: tell the pilot what it does.
+  const bool flying = telemetry_.attitude && wire::flies(telemetry_.attitude->mode);
+  note(Severity::error, "LINK LOST: " + why +
+                            (flying ? std::string("; the QR was in ") + mode_name(telemetry_.attitude->mode) +
+                                          ": it panics by itself after the link timeout (safety rule 7)"
+                                    : std::string()));
   if (exit_ == ExitState::waiting_for_qr) finish_exit(Severity::warning, "exit not confirmed: the line is gone", false);
 }
 

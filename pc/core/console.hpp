@@ -167,6 +167,7 @@ class Console {
   uint32_t now_ms_;
   LinkSession link_;
   LinkState link_state_ = LinkState::waiting;
+  std::string closed_because_;  // why the line closed, as first said
   TelemetryModel telemetry_;
   DebugTextAssembler debug_text_;
   PilotControls controls_;

@@ -92,6 +92,19 @@ TEST(Console, ClosedLineIsLinkLostAtOnce) {
   EXPECT_TRUE(b.logged("LINK LOST: simulator exited with status 1"));
 }
 
+TEST(Console, ALineClosedInFlightSaysTheQrPanicsByItselfAndAbortDoesNotPretend) {
+  Bench b;
+  enter_manual(b);
+  b.console.line_closed("/dev/pts/9 was closed at the other end", b.now);
+  b.console.line_closed("simulator killed by signal 9 (Killed)", b.now);
+  EXPECT_TRUE(b.logged("LINK LOST: /dev/pts/9 was closed at the other end; the QR was in manual: it panics by itself "
+                       "after the link timeout (safety rule 7)"));
+  EXPECT_TRUE(b.logged("and: simulator killed by signal 9 (Killed)"));
+  b.key(qrterm::kKeyEscape);
+  EXPECT_TRUE(b.logged("ABORT (ESC): the line is gone, nothing can be sent"));
+  EXPECT_FALSE(b.logged("panic requested"));
+}
+
 TEST(Console, SendsEveryParameterAtConnectOneAtATime) {
   Console::Setup setup;
   setup.params.set(static_cast<uint8_t>(wire::ParamId::roll_pitch_p1), 1088);
