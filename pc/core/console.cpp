@@ -104,13 +104,11 @@ struct Console::Receiver {
 Console::Console(ConsoleLog& log, ConsoleFiles files, const Setup& setup, uint32_t now_ms)
     : log_(log), files_(std::move(files)), start_ms_(now_ms), now_ms_(now_ms), link_(now_ms, setup.first_seq),
       parameters_(setup.params, [this](Severity severity, const std::string& text) { note(severity, text); }),
-      downloader_(
-          LogDownloader::Hooks{[this](const wire::LogDownload& request) { link_.request(request, now_ms_); },
-                               [this](Severity severity, const std::string& text) { note(severity, text); },
-                               [this](const std::string& name) { return files_.open ? files_.open(name) : nullptr; },
-                               [this](const std::string& from, const std::string& to) {
-                                 return files_.rename && files_.rename(from, to);
-                               }}),
+      downloader_(LogDownloader::Hooks{
+          [this](const wire::LogDownload& request) { link_.request(request, now_ms_); },
+          [this](Severity severity, const std::string& text) { note(severity, text); },
+          [this](const std::string& name) { return files_.open ? files_.open(name) : nullptr; },
+          [this](const std::string& from, const std::string& to) { return files_.rename && files_.rename(from, to); }}),
       joystick_(setup.joystick ? JoystickState::ok : JoystickState::none), simulator_(setup.simulator),
       streams_(
           StreamSession::Hooks{[this](Severity severity, const std::string& text) { note(severity, text); },

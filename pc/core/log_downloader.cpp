@@ -139,8 +139,8 @@ void LogDownloader::write(Download<Record>& download, const char* name) {
     return;
   }
   if (!hooks_.rename || !hooks_.rename(partial, file)) {
-    hooks_.note(Severity::error, std::string(name) + " log: all " + std::to_string(written) + " lines are in " + partial +
-                                     ", but it could not be renamed " + file);
+    hooks_.note(Severity::error, std::string(name) + " log: all " + std::to_string(written) + " lines are in " +
+                                     partial + ", but it could not be renamed " + file);
     return;
   }
   const uint32_t asked_again = download.lines.rerequests();

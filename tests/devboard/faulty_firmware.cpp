@@ -65,7 +65,8 @@ struct FaultyFlight {
     for (;;) {
     }
 #else
-#error "say which fault: FAULT_ILLEGAL_INSTRUCTION, FAULT_STALLED_TASK, FAULT_STACK_OVERFLOW or FAULT_UNEXPECTED_INTERRUPT"
+#error \
+    "say which fault: FAULT_ILLEGAL_INSTRUCTION, FAULT_STALLED_TASK, FAULT_STACK_OVERFLOW or FAULT_UNEXPECTED_INTERRUPT"
 #endif
   }
 };

@@ -21,7 +21,8 @@ namespace qrterm_test {
 // `room` it is on a disk that fills up after that many bytes: then every write fails.
 class CapturedFile : public std::ostream {
  public:
-  explicit CapturedFile(std::string& sink, size_t room = SIZE_MAX) : std::ostream(&buffer_), buffer_(room), sink_(sink) {}
+  explicit CapturedFile(std::string& sink, size_t room = SIZE_MAX)
+      : std::ostream(&buffer_), buffer_(room), sink_(sink) {}
   ~CapturedFile() override { sink_ = buffer_.text; }
 
  private:
@@ -105,7 +106,7 @@ struct Bench {
   std::ostringstream telemetry_csv;
   std::map<std::string, std::string> written;
   std::vector<std::pair<std::string, std::string>> renamed;
-  size_t disk_room = SIZE_MAX;   // bytes a new file may take before the disk is full
+  size_t disk_room = SIZE_MAX;  // bytes a new file may take before the disk is full
   bool folder_read_only = false;
   qrterm::Console console;
   FakeQr qr;

@@ -97,8 +97,9 @@ TEST(Console, ALineClosedInFlightSaysTheQrPanicsByItselfAndAbortDoesNotPretend) 
   enter_manual(b);
   b.console.line_closed("/dev/pts/9 was closed at the other end", b.now);
   b.console.line_closed("simulator killed by signal 9 (Killed)", b.now);
-  EXPECT_TRUE(b.logged("LINK LOST: /dev/pts/9 was closed at the other end; the QR was in manual: it panics by itself "
-                       "after the link timeout (safety rule 7)"));
+  EXPECT_TRUE(
+      b.logged("LINK LOST: /dev/pts/9 was closed at the other end; the QR was in manual: it panics by itself "
+               "after the link timeout (safety rule 7)"));
   EXPECT_TRUE(b.logged("and: simulator killed by signal 9 (Killed)"));
   b.key(qrterm::kKeyEscape);
   EXPECT_TRUE(b.logged("ABORT (ESC): the line is gone, nothing can be sent"));
@@ -654,7 +655,8 @@ TEST(Console, ADownloadIntoAReadOnlyFolderSaysItWasNotSaved) {
   b.key('g');
   ASSERT_TRUE(b.run_until([&] { return b.console.download_status().empty(); }, 10000));
   EXPECT_TRUE(b.written.empty());
-  EXPECT_TRUE(b.logged("sensor log not saved: cannot create sensor_log_1.partial.csv (log folder read-only or disk full)"));
+  EXPECT_TRUE(
+      b.logged("sensor log not saved: cannot create sensor_log_1.partial.csv (log folder read-only or disk full)"));
 }
 
 TEST(Console, AWholeDownloadIsWrittenPartialThenRenamed) {
@@ -674,8 +676,8 @@ TEST(Console, TelemetryCsvCutShortIsNamedPartialAndTheAbortKeyStillWorks) {
   enter_manual(b);
   b.telemetry_csv.setstate(std::ios::badbit);  // the disk filled up under it
   b.run(100);
-  const qrterm::LogLine* line =
-      b.log.find_last("cannot write telemetry.csv (disk full or log folder read-only): it ends here, renamed telemetry.partial.csv");
+  const qrterm::LogLine* line = b.log.find_last(
+      "cannot write telemetry.csv (disk full or log folder read-only): it ends here, renamed telemetry.partial.csv");
   ASSERT_NE(line, nullptr);
   EXPECT_EQ(line->severity, Severity::error);
   EXPECT_EQ(b.renamed, (std::vector<std::pair<std::string, std::string>>{{"telemetry.csv", "telemetry.partial.csv"}}));
@@ -691,7 +693,8 @@ TEST(Console, HexLogCutShortIsNamedPartial) {
   b.connect();
   b.hex.setstate(std::ios::badbit);
   b.run(100);
-  EXPECT_TRUE(b.logged("cannot write rx.hex (disk full or log folder read-only): it ends here, renamed rx.partial.hex"));
+  EXPECT_TRUE(
+      b.logged("cannot write rx.hex (disk full or log folder read-only): it ends here, renamed rx.partial.hex"));
 }
 
 TEST(Console, TelemetryCsvGetsARowPerAttitudeFrame) {

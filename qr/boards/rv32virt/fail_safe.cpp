@@ -19,10 +19,18 @@ constexpr uint8_t kNoTask = 0xFF;  // qr::kNoTask; the runtime does not include 
 // Exception codes of the RISC-V privileged spec (vol. II, table "machine cause register values
 // after trap"), the ones an RV32IM core in machine mode can raise.
 constexpr const char* kExceptionNames[] = {
-    "instruction address misaligned", "instruction access fault", "illegal instruction", "breakpoint",
-    "load address misaligned",        "load access fault",        "store address misaligned",
-    "store access fault",             "ecall from U-mode",        "ecall from S-mode",
-    "reserved",                       "ecall from M-mode",
+    "instruction address misaligned",
+    "instruction access fault",
+    "illegal instruction",
+    "breakpoint",
+    "load address misaligned",
+    "load access fault",
+    "store address misaligned",
+    "store access fault",
+    "ecall from U-mode",
+    "ecall from S-mode",
+    "reserved",
+    "ecall from M-mode",
 };
 constexpr uint32_t kExceptionNameCount = sizeof(kExceptionNames) / sizeof(kExceptionNames[0]);
 
@@ -40,14 +48,10 @@ void put_engines(const uint16_t e[4]) {
 
 const char* what(Fault fault, uint32_t mcause) {
   switch (fault) {
-    case Fault::exception:
-      return mcause < kExceptionNameCount ? kExceptionNames[mcause] : "exception";
-    case Fault::unexpected_interrupt:
-      return "unexpected interrupt";
-    case Fault::stalled:
-      return "stalled (no tick completed)";
-    case Fault::stack_overflow:
-      return "stack overflow";
+    case Fault::exception: return mcause < kExceptionNameCount ? kExceptionNames[mcause] : "exception";
+    case Fault::unexpected_interrupt: return "unexpected interrupt";
+    case Fault::stalled: return "stalled (no tick completed)";
+    case Fault::stack_overflow: return "stack overflow";
   }
   return "fault";
 }

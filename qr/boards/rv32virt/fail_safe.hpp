@@ -17,9 +17,7 @@ enum class Fault : uint8_t {
 };
 
 // The exit status of each fault (0 is success, 1 a failed program, 124/125 the runner's own).
-constexpr int exit_status(Fault fault) {
-  return fault == Fault::stalled ? 4 : fault == Fault::stack_overflow ? 3 : 2;
-}
+constexpr int exit_status(Fault fault) { return fault == Fault::stalled ? 4 : fault == Fault::stack_overflow ? 3 : 2; }
 
 // Where the scheduler keeps the index of the task running now (qr::kNoTask between tasks) and
 // the names of its rows, so a fault report can name the task it stopped.

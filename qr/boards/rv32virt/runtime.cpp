@@ -33,7 +33,7 @@ uint32_t read_mepc() {
 // entry stays until reset: nothing the firmware does later can open the guard.
 void guard_the_stack(uint32_t guard, uint32_t size) {
   const uint32_t napot = (guard >> 2) | ((size >> 3) - 1u);  // base | (size/8 - 1): a NAPOT range
-  constexpr uint32_t kLocked = 0x80, kNapot = 0x18;         // pmpcfg: L, A = NAPOT, R = W = X = 0
+  constexpr uint32_t kLocked = 0x80, kNapot = 0x18;          // pmpcfg: L, A = NAPOT, R = W = X = 0
   asm volatile("csrw pmpaddr0, %0" ::"r"(napot));
   asm volatile("csrw pmpcfg0, %0" ::"r"(kLocked | kNapot));
 }

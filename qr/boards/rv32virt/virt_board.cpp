@@ -38,7 +38,7 @@ volatile uint32_t g_alive_kick = 0;  // the kick the main loop last came to wait
 volatile bool g_watching = false;    // from the first wait: start-up may take longer
 
 VirtBoard* g_board = nullptr;  // the one board, for the fail-safe's cut
-SensorLinkPort g_link;  // the sensor link, when QEMU has it
+SensorLinkPort g_link;         // the sensor link, when QEMU has it
 PacedTransmitter g_ground_tx;
 
 // 256 KiB: 3640 lines in each log, 36 s of flight at the default 100 lines a second.

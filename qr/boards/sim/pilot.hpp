@@ -77,7 +77,9 @@ class Pilot {
   const LineFaultCounts& line_counts() const { return counts_; }
   // Every frame from the QR, after the pilot's own handling (log parts, status, ...), with what
   // the pilot's parser has counted so far.
-  void on_every_frame(std::function<void(const wire::Frame&, const wire::LinkCounters&)> f) { on_every_frame_ = std::move(f); }
+  void on_every_frame(std::function<void(const wire::Frame&, const wire::LinkCounters&)> f) {
+    on_every_frame_ = std::move(f);
+  }
   // Every byte that went onto the line towards the QR, after the damage: what the QR will read.
   void on_bytes_up(std::function<void(uint8_t)> f) { on_bytes_up_ = std::move(f); }
 

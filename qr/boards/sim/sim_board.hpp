@@ -33,7 +33,7 @@ struct HostTiming {
   uint64_t late_wakeups = 0;       // sleeps for a kick that ended a period or more after it
   uint64_t caught_up_periods = 0;  // periods run back to back, behind the wall clock
   uint64_t max_late_us = 0;        // the furthest behind the wall clock a period began
-  uint64_t skipped_periods = 0;  // periods never simulated: the host fell kMaxLagUs behind
+  uint64_t skipped_periods = 0;    // periods never simulated: the host fell kMaxLagUs behind
 };
 
 class SimBoard {

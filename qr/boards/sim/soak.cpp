@@ -17,7 +17,7 @@ namespace qrsim {
 namespace {
 
 constexpr double kHoverHeight = 1.5;
-constexpr uint16_t kLogDivider = 1000;  // a log line a second at 1 kHz: the log's longest reach
+constexpr uint16_t kLogDivider = 1000;    // a log line a second at 1 kHz: the log's longest reach
 constexpr double kDownloadLimitS = 3600;  // over a line that loses 5 % of bytes a log takes long (section 9)
 constexpr double kPreflightLimitS = 30;
 // The simulated pack hovers about 12 minutes; the soak is of the software, not of the pack, so
@@ -71,10 +71,11 @@ bool run_soak(const SoakOptions& options) {
   Pilot pilot(qr->board);
   LineReferee referee;
   pilot.on_bytes_up([&](uint8_t b) { referee.byte(b, world.now_us()); });
-  pilot.damage_line(LineFaults{options.byte_loss, static_cast<uint64_t>(options.garbage_every_s * 1e6), 64,
-                               options.seed * 7919 + 1});
+  pilot.damage_line(
+      LineFaults{options.byte_loss, static_cast<uint64_t>(options.garbage_every_s * 1e6), 64, options.seed * 7919 + 1});
 
-  const uint64_t timeout_us = static_cast<uint64_t>(qr->firmware.parameters().get(wire::ParamId::link_timeout_ms)) * 1000;
+  const uint64_t timeout_us = static_cast<uint64_t>(qr->firmware.parameters().get(wire::ParamId::link_timeout_ms)) *
+                              1000;
   // The referee knows the tick a frame was read in; a tick either side of the timeout is the
   // only doubt (the order of the link task and the watchdog within one tick).
   constexpr uint64_t kSlackUs = 2 * qr::kPeriodUs;
@@ -85,27 +86,29 @@ bool run_soak(const SoakOptions& options) {
   uint32_t previous_time_us = 0;
   uint16_t previous_line = 0;
   const auto on_line = [&](const wire::TelemetryLogRecord& r) {
-      ++log_lines_delivered;
-      for (uint8_t p = 0; p < wire::TelemetryLogRecord::kParts; ++p) {
-        if (!(wire::make_log_part(r, p) == qr->firmware.log().telemetry_part(r.line, p))) {
-          ++log_altered;
-          const wire::TelemetryLogPart want = qr->firmware.log().telemetry_part(r.line, p);
-          const wire::TelemetryLogPart got = wire::make_log_part(r, p);
-          std::fprintf(stderr, "soak: log line %u part %u altered:", r.line, p);
-          for (size_t i = 0; i < wire::kLogPartDataBytes; ++i) std::fprintf(stderr, " %02x/%02x", got.data[i], want.data[i]);
-          std::fprintf(stderr, "\n");
-          break;
-        }
+    ++log_lines_delivered;
+    for (uint8_t p = 0; p < wire::TelemetryLogRecord::kParts; ++p) {
+      if (!(wire::make_log_part(r, p) == qr->firmware.log().telemetry_part(r.line, p))) {
+        ++log_altered;
+        const wire::TelemetryLogPart want = qr->firmware.log().telemetry_part(r.line, p);
+        const wire::TelemetryLogPart got = wire::make_log_part(r, p);
+        std::fprintf(stderr, "soak: log line %u part %u altered:", r.line, p);
+        for (size_t i = 0; i < wire::kLogPartDataBytes; ++i)
+          std::fprintf(stderr, " %02x/%02x", got.data[i], want.data[i]);
+        std::fprintf(stderr, "\n");
+        break;
       }
-      // Lines come in order on a clean pass; a re-request fills holes later, so judge the time
-      // step only between neighbouring line numbers.
-      if (have_previous_line && r.line == previous_line + 1 && r.time_us - previous_time_us != kLogDivider * qr::kPeriodUs) {
-        ++log_gaps;
-      }
-      if (have_previous_line && r.line == previous_line) ++log_double;
-      have_previous_line = true;
-      previous_line = r.line;
-      previous_time_us = r.time_us;
+    }
+    // Lines come in order on a clean pass; a re-request fills holes later, so judge the time
+    // step only between neighbouring line numbers.
+    if (have_previous_line && r.line == previous_line + 1 &&
+        r.time_us - previous_time_us != kLogDivider * qr::kPeriodUs) {
+      ++log_gaps;
+    }
+    if (have_previous_line && r.line == previous_line) ++log_double;
+    have_previous_line = true;
+    previous_line = r.line;
+    previous_time_us = r.time_us;
   };
   pilot.on_every_frame([&](const wire::Frame& frame, const wire::LinkCounters& seen) {
     downloader.frame_accepted(seen.bytes_skipped + seen.check_failures, on_line);
@@ -149,7 +152,8 @@ bool run_soak(const SoakOptions& options) {
       } else if (!explained) {
         ++unexplained;
         std::fprintf(stderr, "soak: at %.3f s %s -> %s, not asked for (line silent %.0f ms)\n", t,
-                     wire::mode_key(last_mode), wire::mode_key(mode), static_cast<double>(referee.silence_us(now_us)) * 1e-3);
+                     wire::mode_key(last_mode), wire::mode_key(mode),
+                     static_cast<double>(referee.silence_us(now_us)) * 1e-3);
       }
       last_mode = mode;
     }
@@ -158,8 +162,8 @@ bool run_soak(const SoakOptions& options) {
     if (!silence_judged && wire::flies(mode) && silence > timeout_us + kSlackUs) {
       silence_judged = true;
       ++missed_link_losses;
-      std::fprintf(stderr, "soak: at %.3f s the line was silent %.0f ms and the QR flies on in %s\n", t, static_cast<double>(silence) * 1e-3,
-                   wire::mode_key(mode));
+      std::fprintf(stderr, "soak: at %.3f s the line was silent %.0f ms and the QR flies on in %s\n", t,
+                   static_cast<double>(silence) * 1e-3, wire::mode_key(mode));
     }
 
     // ---- the line's outages ----
@@ -189,7 +193,8 @@ bool run_soak(const SoakOptions& options) {
         break;
       case Phase::calibrate:
         if (view.heard && (view.flags & wire::kFlagCalibrated) != 0 && mode == wire::Mode::safe &&
-            !pilot.request_pending(wire::MessageType::param_set) && !pilot.request_pending(wire::MessageType::mode_change)) {
+            !pilot.request_pending(wire::MessageType::param_set) &&
+            !pilot.request_pending(wire::MessageType::mode_change)) {
           pilot.request(wire::LogStart{0, wire::kLogTelemetry});
           request(wire::Mode::full_control);
           enter(Phase::arm);
@@ -270,22 +275,25 @@ bool run_soak(const SoakOptions& options) {
                     log_lost == 0 && log_gaps == 0 && log_double == 0 && log_altered == 0 && log_lines > 0;
   std::printf(
       "{\"soak\": %.3f, \"flown_seconds\": %.3f, \"seed\": %llu, \"wall_seconds\": %.2f, \"speedup\": %.1f, "
-      "\"byte_loss\": %g, \"bytes_up\": %llu, \"bytes_up_lost\": %llu, \"bytes_down\": %llu, \"bytes_down_lost\": %llu, "
-      "\"garbage_bursts\": %llu, \"garbage_bytes\": %llu, \"outages\": %u, \"outage_ms\": %.0f, \"link_timeout_ms\": %llu, "
-      "\"deadline_misses\": %u, \"link_loss_panics\": %u, \"missed_link_losses\": %u, \"unexplained_mode_changes\": %u, "
+      "\"byte_loss\": %g, \"bytes_up\": %llu, \"bytes_up_lost\": %llu, \"bytes_down\": %llu, \"bytes_down_lost\": "
+      "%llu, "
+      "\"garbage_bursts\": %llu, \"garbage_bytes\": %llu, \"outages\": %u, \"outage_ms\": %.0f, \"link_timeout_ms\": "
+      "%llu, "
+      "\"deadline_misses\": %u, \"link_loss_panics\": %u, \"missed_link_losses\": %u, \"unexplained_mode_changes\": "
+      "%u, "
       "\"relaunches\": %u, \"requests_given_up\": %u, \"log_divider\": %u, \"log_lines\": %u, \"log_capacity\": %u, "
-      "\"log_lines_downloaded\": %u, \"log_lines_lost\": %u, \"log_lines_altered\": %u, \"log_time_gaps\": %u, \"log_rerequests\": %u, "
+      "\"log_lines_downloaded\": %u, \"log_lines_lost\": %u, \"log_lines_altered\": %u, \"log_time_gaps\": %u, "
+      "\"log_rerequests\": %u, "
       "\"download_seconds\": %.1f, \"error\": %s%s%s, \"pass\": %s}\n",
-      sim_seconds, flown_s, static_cast<unsigned long long>(options.seed),
-      wall, sim_seconds / wall, options.byte_loss, static_cast<unsigned long long>(line.bytes_up),
-      static_cast<unsigned long long>(line.bytes_up_lost), static_cast<unsigned long long>(line.bytes_down),
-      static_cast<unsigned long long>(line.bytes_down_lost), static_cast<unsigned long long>(line.garbage_bursts),
-      static_cast<unsigned long long>(line.garbage_bytes), outages, options.outage_s * 1e3,
-      static_cast<unsigned long long>(timeout_us / 1000), deadline_misses, link_loss_panics, missed_link_losses,
-      unexplained, relaunches, pilot.view().requests_given_up, kLogDivider, log_lines, log_capacity,
-      downloader.received(), log_lost, log_altered, log_gaps, downloader.rerequests(), phase == Phase::done ? sim_seconds - download_start : 0.0,
-      failure.empty() ? "" : "\"", failure.empty() ? "null" : failure.c_str(), failure.empty() ? "" : "\"",
-      pass ? "true" : "false");
+      sim_seconds, flown_s, static_cast<unsigned long long>(options.seed), wall, sim_seconds / wall, options.byte_loss,
+      static_cast<unsigned long long>(line.bytes_up), static_cast<unsigned long long>(line.bytes_up_lost),
+      static_cast<unsigned long long>(line.bytes_down), static_cast<unsigned long long>(line.bytes_down_lost),
+      static_cast<unsigned long long>(line.garbage_bursts), static_cast<unsigned long long>(line.garbage_bytes),
+      outages, options.outage_s * 1e3, static_cast<unsigned long long>(timeout_us / 1000), deadline_misses,
+      link_loss_panics, missed_link_losses, unexplained, relaunches, pilot.view().requests_given_up, kLogDivider,
+      log_lines, log_capacity, downloader.received(), log_lost, log_altered, log_gaps, downloader.rerequests(),
+      phase == Phase::done ? sim_seconds - download_start : 0.0, failure.empty() ? "" : "\"",
+      failure.empty() ? "null" : failure.c_str(), failure.empty() ? "" : "\"", pass ? "true" : "false");
   return pass;
 }
 
