@@ -49,6 +49,17 @@ struct FaultyFlight {
   void account(const qr::TickReport&, const Stats&) {}
 
   void fly() { out = kFlying; }
+
+  // What the board's lock-step answer reads (qrsim --devboard): a flight with nothing to score.
+  struct Chain {
+    int16_t roll_e4() const { return 0; }
+    int16_t pitch_e4() const { return 0; }
+    int16_t roll_setpoint_e4() const { return 0; }
+    int16_t pitch_setpoint_e4() const { return 0; }
+    int16_t yaw_rate_setpoint_e3() const { return 0; }
+  };
+  uint8_t mode() const { return 2; }  // manual: the engines are the flight's
+  Chain chain() const { return {}; }
   void fail() {
     if (ticks < kFaultTick) return;
 #if defined(FAULT_ILLEGAL_INSTRUCTION)
@@ -85,6 +96,7 @@ int main() {
   static FaultyFlight flight;
   static qr::Scheduler<rv32virt::VirtBoard, FaultyFlight> scheduler(board, flight);
   rv32virt::watch_running_task(scheduler.running_task_cell(), kNames, FaultyFlight::kTaskCount);
-  scheduler.run_until_stopped();
+  // On the sensor link (qrsim --devboard) every tick is answered, as the flight firmware does.
+  while (scheduler.tick()) board.answer(flight, scheduler.stats().deadline_misses);
   return 0;  // never: running() stays true
 }
