@@ -83,7 +83,8 @@ class LogDownloader {
   wire::LogStatus status_;
   uint32_t last_progress_ms_ = 0;
   uint32_t downloads_ = 0;  // numbers the files of each download: sensor_log_1.csv, ...
-  // Each holds an 8 KiB map of the lines received: on the heap, and only while downloading.
+  // Each holds an 8 KiB map of the lines received and 24 KiB of lines being collected: on the heap,
+  // and only while downloading.
   std::unique_ptr<Download<wire::SensorLogRecord>> sensor_;
   std::unique_ptr<Download<wire::TelemetryLogRecord>> telemetry_;
 };
