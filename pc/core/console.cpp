@@ -104,10 +104,11 @@ struct Console::Receiver {
 Console::Console(ConsoleLog& log, ConsoleFiles files, const Setup& setup, uint32_t now_ms)
     : log_(log), files_(std::move(files)), start_ms_(now_ms), now_ms_(now_ms), link_(now_ms, setup.first_seq),
       parameters_(setup.params, [this](Severity severity, const std::string& text) { note(severity, text); }),
-      downloader_(
-          LogDownloader::Hooks{[this](const wire::LogDownload& request) { link_.request(request, now_ms_); },
-                               [this](Severity severity, const std::string& text) { note(severity, text); },
-                               [this](const std::string& name) { return files_.open ? files_.open(name) : nullptr; }}),
+      downloader_(LogDownloader::Hooks{
+          [this](const wire::LogDownload& request) { link_.request(request, now_ms_); },
+          [this](Severity severity, const std::string& text) { note(severity, text); },
+          [this](const std::string& name) { return files_.open ? files_.open(name) : nullptr; },
+          [this](const std::string& from, const std::string& to) { return files_.rename && files_.rename(from, to); }}),
       joystick_(setup.joystick ? JoystickState::ok : JoystickState::none), simulator_(setup.simulator),
       streams_(
           StreamSession::Hooks{[this](Severity severity, const std::string& text) { note(severity, text); },
@@ -327,6 +328,12 @@ void Console::abort(const std::string& why) {
   // neutral anyway; a lift trim left standing would be the first surprise of the next flight.
   const bool trimmed = controls_.trims() != Sticks{};
   controls_.apply(Action::trims_center);
+  if (link_state_ == LinkState::closed) {
+    // Nothing can reach the QR: say what it does on its own instead of promising a request.
+    note(Severity::error, "ABORT (" + why + "): the line is gone, nothing can be sent; the QR panics by itself " +
+                              "after the link timeout without a frame (safety rule 7)");
+    return;
+  }
   note(Severity::error, "ABORT (" + why + "): panic requested" + (trimmed ? ", trims centred" : ""));
   requested_mode_ = wire::Mode::panic;
   link_.request(wire::ModeChange{0, wire::Mode::panic}, now_ms_);
@@ -416,11 +423,17 @@ void Console::joystick_back(uint32_t now_ms) {
 
 void Console::receive(const uint8_t* data, size_t count, uint32_t now_ms) {
   set_time(now_ms);
-  if (files_.rx_hex != nullptr && count > 0) *files_.rx_hex << hex_line(now_ms - start_ms_, data, count);
+  if (files_.rx_hex != nullptr && count > 0) {
+    *files_.rx_hex << hex_line(now_ms - start_ms_, data, count);
+    if (!files_.rx_hex->good()) file_failed(files_.rx_hex, "rx.hex", "rx.partial.hex");
+  }
   link_.receive(data, count, now_ms, [this](const wire::Frame& frame) { on_frame(frame); });
 }
 
 void Console::on_frame(const wire::Frame& frame) {
+  // Before the frame is handled: a log part is kept only when no damage surrounds it.
+  const wire::LinkCounters& seen = link_.counters();
+  downloader_.frame_accepted(seen.bytes_skipped + seen.check_failures, now_ms_);
   Receiver receiver{*this};
   const wire::DispatchResult result = wire::dispatch(frame, receiver);
   if (result == wire::DispatchResult::invalid_payload) ++invalid_frames_;
@@ -443,7 +456,20 @@ void Console::on_attitude(const wire::TelemetryAttitude& attitude) {
   const auto rose = [&](uint8_t bit) { return (attitude.flags & bit) != 0 && (!before || (before->flags & bit) == 0); };
   if (rose(wire::kFlagCalibrated)) note(Severity::info, "QR calibrated");
   if (rose(wire::kFlagBatteryWarning)) note(Severity::warning, "QR battery low");
-  if (telemetry_csv_) telemetry_csv_->write(telemetry_csv_row(now_ms_ - start_ms_, telemetry_, last_control_));
+  if (telemetry_csv_) {
+    telemetry_csv_->write(telemetry_csv_row(now_ms_ - start_ms_, telemetry_, last_control_));
+    if (!files_.telemetry_csv->good()) {
+      telemetry_csv_.reset();
+      file_failed(files_.telemetry_csv, "telemetry.csv", "telemetry.partial.csv");
+    }
+  }
+}
+
+void Console::file_failed(std::ostream*& file, const char* name, const char* partial_name) {
+  file = nullptr;
+  const bool renamed = files_.rename && files_.rename(name, partial_name);
+  note(Severity::error, std::string("cannot write ") + name + " (disk full or log folder read-only): it ends here" +
+                            (renamed ? std::string(", renamed ") + partial_name : std::string(", and is partial")));
 }
 
 void Console::on_log_status(const wire::LogStatus& status) {
@@ -514,10 +540,20 @@ void Console::on_link_state(LinkState state) {
 
 void Console::line_closed(const std::string& why, uint32_t now_ms) {
   set_time(now_ms);
-  if (link_state_ == LinkState::closed) return;
+  if (link_state_ == LinkState::closed) {
+    if (why != closed_because_) note(Severity::error, "and: " + why);  // the simulator's end after its line's
+    closed_because_ = why;
+    return;
+  }
   link_.close();
   link_state_ = LinkState::closed;
-  note(Severity::error, "LINK LOST: " + why);
+  closed_because_ = why;
+  // A QR that was flying is on its own now: tell the pilot what it does.
+  const bool flying = telemetry_.attitude && wire::flies(telemetry_.attitude->mode);
+  note(Severity::error, "LINK LOST: " + why +
+                            (flying ? std::string("; the QR was in ") + mode_name(telemetry_.attitude->mode) +
+                                          ": it panics by itself after the link timeout (safety rule 7)"
+                                    : std::string()));
   if (exit_ == ExitState::waiting_for_qr) finish_exit(Severity::warning, "exit not confirmed: the line is gone", false);
 }
 

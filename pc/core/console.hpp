@@ -41,6 +41,9 @@ struct ConsoleFiles {
   std::ostream* rx_hex = nullptr;
   std::ostream* telemetry_csv = nullptr;
   std::function<std::unique_ptr<std::ostream>(const std::string& name)> open;  // a new file in the log folder
+  // Renames a file of the log folder (false when it could not): a file cut short by a full disk
+  // or a folder gone read-only is named partial, never left to pass for whole.
+  std::function<bool(const std::string& from, const std::string& to)> rename;
 };
 
 enum class JoystickState : uint8_t {
@@ -158,10 +161,13 @@ class Console {
   ConsoleLog& log_;
   ConsoleFiles files_;
   std::optional<CsvWriter> telemetry_csv_;
+  // A session file that failed to write: written no more, named partial, said once.
+  void file_failed(std::ostream*& file, const char* name, const char* partial_name);
   uint32_t start_ms_;
   uint32_t now_ms_;
   LinkSession link_;
   LinkState link_state_ = LinkState::waiting;
+  std::string closed_because_;  // why the line closed, as first said
   TelemetryModel telemetry_;
   DebugTextAssembler debug_text_;
   PilotControls controls_;

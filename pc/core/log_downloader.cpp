@@ -57,6 +57,17 @@ void LogDownloader::take(Download<Record>& download, const wire::LogPart<Record>
   });
 }
 
+void LogDownloader::frame_accepted(uint32_t damage, uint32_t now_ms) {
+  const auto keep = [&](auto& download) {
+    download.lines.frame_accepted(damage, [&](const auto& record) {
+      download.records.emplace(record.line, record);
+      last_progress_ms_ = now_ms;
+    });
+  };
+  if (sensor_) keep(*sensor_);
+  if (telemetry_) keep(*telemetry_);
+}
+
 void LogDownloader::on_part(const wire::SensorLogPart& part, uint32_t now_ms) {
   if (sensor_) take(*sensor_, part, Kind::sensor, now_ms);
 }
@@ -99,17 +110,39 @@ void LogDownloader::tick(uint32_t now_ms) {
   }
 }
 
+// Written under a partial name first and renamed when every line is on the disk: a full disk, a
+// folder gone read-only or a console killed part-way leaves a file that says it is partial.
 template <class Record>
 void LogDownloader::write(Download<Record>& download, const char* name) {
-  const std::string file = std::string(name) + "_log_" + std::to_string(downloads_) + ".csv";
-  std::unique_ptr<std::ostream> out = hooks_.open ? hooks_.open(file) : nullptr;
-  if (!out) {
-    hooks_.note(Severity::error, "cannot write " + file);
+  const std::string stem = std::string(name) + "_log_" + std::to_string(downloads_);
+  const std::string file = stem + ".csv", partial = stem + ".partial.csv";
+  std::unique_ptr<std::ostream> out = hooks_.open ? hooks_.open(partial) : nullptr;
+  if (!out || !out->good()) {
+    hooks_.note(Severity::error, std::string(name) + " log not saved: cannot create " + partial +
+                                     " (log folder read-only or disk full)");
     return;
   }
   CsvWriter csv(*out, log_header(Record{}));
-  for (const auto& [line, record] : download.records) csv.write(log_row(record));
+  size_t written = 0;
+  for (const auto& [line, record] : download.records) {
+    csv.write(log_row(record));
+    if (!out->good()) break;
+    ++written;
+  }
   out->flush();
+  const bool whole = out->good() && written == download.records.size();
+  out.reset();  // closed before it is renamed
+  if (!whole) {
+    hooks_.note(Severity::error, std::string(name) + " log: writing " + partial + " failed after " +
+                                     std::to_string(written) + " of " + std::to_string(download.records.size()) +
+                                     " lines (disk full or log folder read-only): the file is partial");
+    return;
+  }
+  if (!hooks_.rename || !hooks_.rename(partial, file)) {
+    hooks_.note(Severity::error, std::string(name) + " log: all " + std::to_string(written) + " lines are in " +
+                                     partial + ", but it could not be renamed " + file);
+    return;
+  }
   const uint32_t asked_again = download.lines.rerequests();
   hooks_.note(Severity::info, std::string(name) + " log: " + std::to_string(download.records.size()) + " lines -> " +
                                   file + (asked_again > 0 ? " (" + std::to_string(asked_again) + " re-requests)" : ""));

@@ -31,6 +31,7 @@ class LogDownloader {
     std::function<void(const wire::LogDownload&)> request;                       // send it (acked)
     std::function<void(Severity, const std::string&)> note;                      // tell the pilot
     std::function<std::unique_ptr<std::ostream>(const std::string& name)> open;  // a file in the log folder
+    std::function<bool(const std::string& from, const std::string& to)> rename;  // a file of the log folder
   };
 
   explicit LogDownloader(Hooks hooks);
@@ -44,6 +45,11 @@ class LogDownloader {
 
   // The QR refused our log_download (matched by the caller on type and seq).
   void on_nack(wire::NackReason reason);
+
+  // Every frame the console accepts, before it is handled, with its parser's damage count
+  // (bytes skipped and checks failed so far): parts next to damage are not kept (a lost byte can
+  // splice a part that passes the 8-bit check, wire::LogDownloader).
+  void frame_accepted(uint32_t damage, uint32_t now_ms);
 
   void on_part(const wire::SensorLogPart& part, uint32_t now_ms);
   void on_part(const wire::TelemetryLogPart& part, uint32_t now_ms);
@@ -77,7 +83,8 @@ class LogDownloader {
   wire::LogStatus status_;
   uint32_t last_progress_ms_ = 0;
   uint32_t downloads_ = 0;  // numbers the files of each download: sensor_log_1.csv, ...
-  // Each holds an 8 KiB map of the lines received: on the heap, and only while downloading.
+  // Each holds an 8 KiB map of the lines received and 24 KiB of lines being collected: on the heap,
+  // and only while downloading.
   std::unique_ptr<Download<wire::SensorLogRecord>> sensor_;
   std::unique_ptr<Download<wire::TelemetryLogRecord>> telemetry_;
 };

@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 #include <time.h>
 
+#include <cstdio>
 #include <cstring>
 #include <ctime>
 
@@ -35,6 +36,10 @@ std::unique_ptr<std::ofstream> open_in(const std::string& folder, const std::str
   auto file = std::make_unique<std::ofstream>(folder + "/" + name, std::ios::binary | std::ios::trunc);
   if (!*file) return nullptr;
   return file;
+}
+
+bool rename_in(const std::string& folder, const std::string& from, const std::string& to) {
+  return std::rename((folder + "/" + from).c_str(), (folder + "/" + to).c_str()) == 0;
 }
 
 }  // namespace qrterm

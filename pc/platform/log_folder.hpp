@@ -22,4 +22,7 @@ void make_folders(const std::string& path);
 // A new file in the folder; null when it cannot be created.
 std::unique_ptr<std::ofstream> open_in(const std::string& folder, const std::string& name);
 
+// Renames a file in the folder; false when it could not.
+bool rename_in(const std::string& folder, const std::string& from, const std::string& to);
+
 }  // namespace qrterm

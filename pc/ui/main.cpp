@@ -163,6 +163,9 @@ int run(int argc, char** argv) {
   files.open = [log_folder](const std::string& name) -> std::unique_ptr<std::ostream> {
     return open_in(log_folder, name);
   };
+  files.rename = [log_folder](const std::string& from, const std::string& to) {
+    return rename_in(log_folder, from, to);
+  };
   Console::Setup setup;
   setup.params = params.values;
   setup.joystick = joystick != nullptr;

@@ -90,6 +90,8 @@ class FlightLog {
     return {flags, sensor_.lines(), telemetry_.lines(), sensor_.capacity()};
   }
   bool full() const { return full_; }
+  // A part of a telemetry line as a download sends it: what a line that came whole must equal.
+  wire::TelemetryLogPart telemetry_part(uint16_t line, uint8_t part) const { return telemetry_.part(line, part); }
   bool downloading() const { return downloading_; }
 
  private:

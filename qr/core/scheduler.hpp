@@ -100,6 +100,8 @@ class Scheduler {
   void reset_stats() { stats_ = Stats{}; }
   // The row running now, kNoTask between tasks: what a fault handler reports.
   uint8_t running_task() const { return running_; }
+  // Where that index lives: a fault handler, which cannot be handed the scheduler, reads it there.
+  const volatile uint8_t* running_task_cell() const { return &running_; }
   uint16_t divider(uint8_t id) const { return slots_[id].divider; }
 
  private:

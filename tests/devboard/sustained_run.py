@@ -100,7 +100,11 @@ def main():
         "loop_time_us_max": max(s[2] for s in systems),
     }))
     if modes and modes[-1] != 5:
-        fail("the firmware left full control during the run")
+        # Say why: a fail-safe report (the board halted), or the mode telemetry last showed.
+        text = board.snapshot().decode("latin-1")
+        report = text[text.find("rv32virt: fail-safe"):].split("\n")[0] if "rv32virt: fail-safe" in text else None
+        fail(f"the firmware left full control during the run (last mode {modes[-1]}, "
+             f"{report or 'no fail-safe report'})")
 
 
 if __name__ == "__main__":

@@ -8,6 +8,8 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <pc/core/console.hpp>
 
@@ -15,13 +17,27 @@
 
 namespace qrterm_test {
 
-// A file the console opens in its log folder; what was written is kept when it is closed.
-class CapturedFile : public std::ostringstream {
+// A file the console opens in its log folder; what was written is kept when it is closed. With
+// `room` it is on a disk that fills up after that many bytes: then every write fails.
+class CapturedFile : public std::ostream {
  public:
-  explicit CapturedFile(std::string& sink) : sink_(sink) {}
-  ~CapturedFile() override { sink_ = str(); }
+  explicit CapturedFile(std::string& sink, size_t room = SIZE_MAX)
+      : std::ostream(&buffer_), buffer_(room), sink_(sink) {}
+  ~CapturedFile() override { sink_ = buffer_.text; }
 
  private:
+  struct Disk : std::streambuf {
+    explicit Disk(size_t room) : room(room) {}
+    int_type overflow(int_type c) override {
+      if (traits_type::eq_int_type(c, traits_type::eof())) return traits_type::not_eof(c);
+      if (text.size() >= room) return traits_type::eof();  // No space left on device
+      text.push_back(traits_type::to_char_type(c));
+      return c;
+    }
+    size_t room;
+    std::string text;
+  };
+  Disk buffer_;
   std::string& sink_;
 };
 
@@ -34,7 +50,17 @@ struct Bench {
     f.rx_hex = &hex;
     f.telemetry_csv = &telemetry_csv;
     f.open = [this](const std::string& name) -> std::unique_ptr<std::ostream> {
-      return std::make_unique<CapturedFile>(written[name]);
+      if (folder_read_only) return nullptr;
+      return std::make_unique<CapturedFile>(written[name], disk_room);
+    };
+    f.rename = [this](const std::string& from, const std::string& to) {
+      if (folder_read_only) return false;
+      if (written.count(from) != 0) {  // the session files are the bench's own streams
+        written[to] = written[from];
+        written.erase(from);
+      }
+      renamed.emplace_back(from, to);
+      return true;
     };
     return f;
   }
@@ -79,6 +105,9 @@ struct Bench {
   std::ostringstream hex;
   std::ostringstream telemetry_csv;
   std::map<std::string, std::string> written;
+  std::vector<std::pair<std::string, std::string>> renamed;
+  size_t disk_room = SIZE_MAX;  // bytes a new file may take before the disk is full
+  bool folder_read_only = false;
   qrterm::Console console;
   FakeQr qr;
 };

@@ -92,6 +92,20 @@ TEST(Console, ClosedLineIsLinkLostAtOnce) {
   EXPECT_TRUE(b.logged("LINK LOST: simulator exited with status 1"));
 }
 
+TEST(Console, ALineClosedInFlightSaysTheQrPanicsByItselfAndAbortDoesNotPretend) {
+  Bench b;
+  enter_manual(b);
+  b.console.line_closed("/dev/pts/9 was closed at the other end", b.now);
+  b.console.line_closed("simulator killed by signal 9 (Killed)", b.now);
+  EXPECT_TRUE(
+      b.logged("LINK LOST: /dev/pts/9 was closed at the other end; the QR was in manual: it panics by itself "
+               "after the link timeout (safety rule 7)"));
+  EXPECT_TRUE(b.logged("and: simulator killed by signal 9 (Killed)"));
+  b.key(qrterm::kKeyEscape);
+  EXPECT_TRUE(b.logged("ABORT (ESC): the line is gone, nothing can be sent"));
+  EXPECT_FALSE(b.logged("panic requested"));
+}
+
 TEST(Console, SendsEveryParameterAtConnectOneAtATime) {
   Console::Setup setup;
   setup.params.set(static_cast<uint8_t>(wire::ParamId::roll_pitch_p1), 1088);
@@ -610,6 +624,77 @@ TEST(Console, LogDownloadWhileLoggingIsRefusedWithWhatToDo) {
   b.key('g');
   EXPECT_TRUE(b.logged("stop the logs first"));
   EXPECT_EQ(b.console.download_status(), "");
+}
+
+// The log folder under faults: nothing half-written passes for whole, the pilot is told, and the
+// console flies on (the abort key still works).
+TEST(Console, ADownloadOntoAFullDiskIsNamedPartialNeverWhole) {
+  Bench b;
+  b.connect();
+  for (uint16_t line = 0; line < 40; ++line) b.qr.sensor_log[line] = sensor_line(line);
+  b.run(200);
+  b.disk_room = 600;  // the header and a few lines
+  b.key('g');
+  ASSERT_TRUE(b.run_until([&] { return b.console.download_status().empty(); }, 10000));
+  EXPECT_EQ(b.written.count("sensor_log_1.csv"), 0u) << "a cut-short file must not have the whole file's name";
+  ASSERT_EQ(b.written.count("sensor_log_1.partial.csv"), 1u);
+  EXPECT_LE(b.written["sensor_log_1.partial.csv"].size(), 600u);
+  const qrterm::LogLine* line = b.log.find_last("sensor log: writing sensor_log_1.partial.csv failed after ");
+  ASSERT_NE(line, nullptr);
+  EXPECT_EQ(line->severity, Severity::error);
+  EXPECT_NE(line->text.find("of 40 lines (disk full or log folder read-only): the file is partial"), std::string::npos)
+      << line->text;
+}
+
+TEST(Console, ADownloadIntoAReadOnlyFolderSaysItWasNotSaved) {
+  Bench b;
+  b.connect();
+  for (uint16_t line = 0; line < 10; ++line) b.qr.sensor_log[line] = sensor_line(line);
+  b.run(200);
+  b.folder_read_only = true;
+  b.key('g');
+  ASSERT_TRUE(b.run_until([&] { return b.console.download_status().empty(); }, 10000));
+  EXPECT_TRUE(b.written.empty());
+  EXPECT_TRUE(
+      b.logged("sensor log not saved: cannot create sensor_log_1.partial.csv (log folder read-only or disk full)"));
+}
+
+TEST(Console, AWholeDownloadIsWrittenPartialThenRenamed) {
+  Bench b;
+  b.connect();
+  for (uint16_t line = 0; line < 10; ++line) b.qr.sensor_log[line] = sensor_line(line);
+  b.run(200);
+  b.key('g');
+  ASSERT_TRUE(b.run_until([&] { return b.console.download_status().empty(); }, 10000));
+  ASSERT_EQ(b.renamed.size(), 1u);
+  EXPECT_EQ(b.renamed[0], std::make_pair(std::string("sensor_log_1.partial.csv"), std::string("sensor_log_1.csv")));
+  EXPECT_EQ(b.written.count("sensor_log_1.partial.csv"), 0u);
+}
+
+TEST(Console, TelemetryCsvCutShortIsNamedPartialAndTheAbortKeyStillWorks) {
+  Bench b;
+  enter_manual(b);
+  b.telemetry_csv.setstate(std::ios::badbit);  // the disk filled up under it
+  b.run(100);
+  const qrterm::LogLine* line = b.log.find_last(
+      "cannot write telemetry.csv (disk full or log folder read-only): it ends here, renamed telemetry.partial.csv");
+  ASSERT_NE(line, nullptr);
+  EXPECT_EQ(line->severity, Severity::error);
+  EXPECT_EQ(b.renamed, (std::vector<std::pair<std::string, std::string>>{{"telemetry.csv", "telemetry.partial.csv"}}));
+  b.run(500);
+  EXPECT_EQ(b.renamed.size(), 1u) << "said and renamed once";
+  b.key(qrterm::kKeyEscape);
+  b.run(50);
+  EXPECT_EQ(b.qr.mode, wire::Mode::panic);
+}
+
+TEST(Console, HexLogCutShortIsNamedPartial) {
+  Bench b;
+  b.connect();
+  b.hex.setstate(std::ios::badbit);
+  b.run(100);
+  EXPECT_TRUE(
+      b.logged("cannot write rx.hex (disk full or log folder read-only): it ends here, renamed rx.partial.hex"));
 }
 
 TEST(Console, TelemetryCsvGetsARowPerAttitudeFrame) {

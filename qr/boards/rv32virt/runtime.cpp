@@ -1,5 +1,6 @@
 // Start-up, console and exit for the QEMU `virt` devboard.
 #include <qr/boards/rv32virt/devboard.hpp>
+#include <qr/boards/rv32virt/fail_safe.hpp>
 
 namespace {
 
@@ -16,11 +17,32 @@ constexpr uint32_t kFinisherFail = 0x3333;
 
 constexpr uint32_t kStackCanary = 0xC0DEF00Du;
 
+constexpr uint32_t kInterrupt = 0x80000000u;  // mcause bit 31
+constexpr uint32_t kMachineTimer = 7;
+constexpr uint32_t kMachineExternal = 11;
+
+uint32_t read_mepc() {
+  uint32_t v;
+  asm volatile("csrr %0, mepc" : "=r"(v));
+  return v;
+}
+
+// The stack guard (link.ld): PMP entry 0 covers it as one NAPOT region with no access, locked,
+// because only a locked entry binds machine mode (RISC-V privileged spec, "Physical Memory
+// Protection"). Every other address matches no entry, which machine mode may access. Locked, the
+// entry stays until reset: nothing the firmware does later can open the guard.
+void guard_the_stack(uint32_t guard, uint32_t size) {
+  const uint32_t napot = (guard >> 2) | ((size >> 3) - 1u);  // base | (size/8 - 1): a NAPOT range
+  constexpr uint32_t kLocked = 0x80, kNapot = 0x18;          // pmpcfg: L, A = NAPOT, R = W = X = 0
+  asm volatile("csrw pmpaddr0, %0" ::"r"(napot));
+  asm volatile("csrw pmpcfg0, %0" ::"r"(kLocked | kNapot));
+}
+
 }  // namespace
 
 extern "C" {
 extern uint32_t __bss_start[], __bss_end[];
-extern uint32_t __stack_limit[];
+extern uint32_t __stack_guard[], __stack_limit[];
 using InitFn = void (*)();
 extern InitFn __init_array_start[], __init_array_end[];
 }
@@ -80,25 +102,23 @@ void exit(int code) {
 extern "C" [[noreturn]] void rv32virt_start() {
   for (uint32_t* p = __bss_start; p < __bss_end; ++p) *p = 0;
   __stack_limit[0] = kStackCanary;
+  guard_the_stack(reinterpret_cast<uint32_t>(__stack_guard),
+                  reinterpret_cast<uint32_t>(__stack_limit) - reinterpret_cast<uint32_t>(__stack_guard));
   for (InitFn* f = __init_array_start; f < __init_array_end; ++f) (*f)();
   rv32virt::exit(main());
 }
 
 // Interrupt handlers a program may define; without one, that interrupt is a fault.
 extern "C" [[gnu::weak]] void rv32virt_timer_interrupt() {
-  rv32virt::puts("\nrv32virt: unexpected timer interrupt\n");
-  rv32virt::exit(2);
+  rv32virt::fail_safe(rv32virt::Fault::unexpected_interrupt, kInterrupt | kMachineTimer, read_mepc(), 0);
 }
 extern "C" [[gnu::weak]] void rv32virt_external_interrupt() {
-  rv32virt::puts("\nrv32virt: unexpected external interrupt\n");
-  rv32virt::exit(2);
+  rv32virt::fail_safe(rv32virt::Fault::unexpected_interrupt, kInterrupt | kMachineExternal, read_mepc(), 0);
 }
 
-// Called from the trap entry. Interrupts return to the interrupted code; exceptions end the run.
-extern "C" void rv32virt_trap(uint32_t mcause, uint32_t mepc, uint32_t mtval) {
-  constexpr uint32_t kInterrupt = 0x80000000u;
-  constexpr uint32_t kMachineTimer = 7;
-  constexpr uint32_t kMachineExternal = 11;
+// Called from the trap entry for every interrupt (exceptions go to fail_safe.cpp on their own
+// stack). The two the board uses return to the interrupted code; any other is a fault.
+extern "C" void rv32virt_interrupt(uint32_t mcause) {
   if (mcause == (kInterrupt | kMachineTimer)) {
     rv32virt_timer_interrupt();
     return;
@@ -107,12 +127,5 @@ extern "C" void rv32virt_trap(uint32_t mcause, uint32_t mepc, uint32_t mtval) {
     rv32virt_external_interrupt();
     return;
   }
-  rv32virt::puts("\nrv32virt: trap mcause=");
-  rv32virt::put_u32(mcause);
-  rv32virt::puts(" mepc=");
-  rv32virt::put_u32(mepc);
-  rv32virt::puts(" mtval=");
-  rv32virt::put_u32(mtval);
-  rv32virt::putc('\n');
-  rv32virt::exit(2);
+  rv32virt::fail_safe(rv32virt::Fault::unexpected_interrupt, mcause, read_mepc(), 0);
 }

@@ -12,11 +12,17 @@ _start:
   call rv32virt_start
 1:j 1b
 
-/* Traps: save the caller-saved registers, let C++ handle it (interrupts return, exceptions end
-   the run), restore, return. The callee-saved ones are kept by the C++ code itself. */
+/* Traps. An exception never returns (fail_safe.cpp) and may be the stack running into its guard,
+   so it leaves the stack it came on for the fault stack (link.ld) before touching memory.
+   Interrupts save the caller-saved registers on the stack they interrupted, let C++ handle them,
+   restore and return; the callee-saved ones are kept by the C++ code itself. */
   .align 4
   .globl rv32virt_trap_entry
 rv32virt_trap_entry:
+  csrw mscratch, t0
+  csrr t0, mcause
+  bgez t0, rv32virt_exception_entry  /* mcause bit 31 clear: an exception */
+  csrr t0, mscratch
   addi sp, sp, -64
   sw ra, 0(sp)
   sw t0, 4(sp)
@@ -35,9 +41,7 @@ rv32virt_trap_entry:
   sw t5, 56(sp)
   sw t6, 60(sp)
   csrr a0, mcause
-  csrr a1, mepc
-  csrr a2, mtval
-  call rv32virt_trap
+  call rv32virt_interrupt
   lw ra, 0(sp)
   lw t0, 4(sp)
   lw t1, 8(sp)
@@ -56,3 +60,11 @@ rv32virt_trap_entry:
   lw t6, 60(sp)
   addi sp, sp, 64
   mret
+
+rv32virt_exception_entry:
+  la sp, __fault_stack_top
+  csrr a0, mcause
+  csrr a1, mepc
+  csrr a2, mtval
+  call rv32virt_exception
+2:j 2b

@@ -1,6 +1,7 @@
 #include <qr/boards/rv32virt/virt_board.hpp>
 
 #include <common/byte_ring.hpp>
+#include <qr/boards/rv32virt/fail_safe.hpp>
 #include <qr/boards/rv32virt/paced_transmitter.hpp>
 #include <qr/boards/rv32virt/sensor_link_port.hpp>
 #include <qr/boards/rv32virt/virt_map.hpp>
@@ -26,7 +27,18 @@ uint64_t g_next_kick_mtime = 0;
 uint32_t g_period_ticks = 0;
 uint32_t g_period_us = 0;
 
-SensorLinkPort g_link;  // the sensor link, when QEMU has it
+// The watchdog (docs/devboard.md "Faults"): a tick that has not completed this many periods after
+// it began is stalled, and the timer interrupt cuts the engines. A tick of the flight firmware
+// takes at most about 8000 instructions (half a period on a 16 MHz core), and a late one is a
+// deadline miss the scheduler counts and skips; ten periods is none of those. Like Crazyflie's
+// rate supervisor it judges the main loop from outside it, so a loop stuck in a task cannot
+// silence it.
+constexpr uint32_t kStallPeriods = 10;
+volatile uint32_t g_alive_kick = 0;  // the kick the main loop last came to wait on
+volatile bool g_watching = false;    // from the first wait: start-up may take longer
+
+VirtBoard* g_board = nullptr;  // the one board, for the fail-safe's cut
+SensorLinkPort g_link;         // the sensor link, when QEMU has it
 PacedTransmitter g_ground_tx;
 
 // 256 KiB: 3640 lines in each log, 36 s of flight at the default 100 lines a second.
@@ -49,6 +61,17 @@ void write_mtimecmp(uint64_t t) {
   reg<uint32_t>(map::kMtimecmp + 4) = static_cast<uint32_t>(t >> 32);
 }
 
+uint32_t read_mepc() {
+  uint32_t v;
+  asm volatile("csrr %0, mepc" : "=r"(v));
+  return v;
+}
+
+[[noreturn]] void stalled() {
+  constexpr uint32_t kMachineTimerInterrupt = 0x80000007u;
+  fail_safe(Fault::stalled, kMachineTimerInterrupt, read_mepc(), 0);
+}
+
 void set_csr_mie(uint32_t bits) { asm volatile("csrs mie, %0" ::"r"(bits)); }
 void enable_interrupts() { asm volatile("csrs mstatus, %0" ::"r"(kMstatusMie)); }
 void disable_interrupts() { asm volatile("csrc mstatus, %0" ::"r"(kMstatusMie)); }
@@ -57,7 +80,11 @@ void disable_interrupts() { asm volatile("csrc mstatus, %0" ::"r"(kMstatusMie));
 
 using namespace rv32virt;
 
+// On its own the board's timer is the kick, and the watchdog looks at every one. On the sensor link
+// the timer is only the watchdog, armed for each tick: any interrupt is a stall.
 extern "C" void rv32virt_timer_interrupt() {
+  if (g_board != nullptr && g_board->on_sensor_link()) stalled();
+  if (g_watching && g_kicks - g_alive_kick >= kStallPeriods) stalled();
   g_kick_mtime_lo = static_cast<uint32_t>(g_next_kick_mtime);
   g_next_kick_mtime += g_period_ticks;
   write_mtimecmp(g_next_kick_mtime);
@@ -91,12 +118,13 @@ VirtBoard::VirtBoard(uint32_t control_hz) : recording_(reinterpret_cast<const ui
   reg<uint32_t>(map::kPlicEnable) = 1u << map::kUartIrq;
   reg<uint32_t>(map::kPlicThreshold) = 0;
 
+  g_board = this;
   linked_ = g_link.start();
   if (linked_) {
-    // The simulator's frames are the kick: no timer (and no timer deadline for QEMU's -icount
-    // to jump to while the board waits).
+    // The simulator's frames are the kick: the timer is only the watchdog, armed while a tick
+    // runs (no timer deadline for QEMU's -icount to jump to while the board waits).
     write_mtimecmp(0xFFFFFFFFFFFFFFFFull);
-    set_csr_mie(kMieExternal);
+    set_csr_mie(kMieTimer | kMieExternal);
     enable_interrupts();
     // Ready: an engines frame for kick 0 tells the simulator that the UART is set up, so the
     // ground bytes it sends from now on are all counted.
@@ -115,6 +143,7 @@ VirtBoard::VirtBoard(uint32_t control_hz) : recording_(reinterpret_cast<const ui
 
 uint32_t VirtBoard::wait_kick([[maybe_unused]] uint32_t seen) {
   if (linked_) {
+    write_mtimecmp(0xFFFFFFFFFFFFFFFFull);  // the watchdog rests while the simulator computes
     // Lock-step: wait for the simulator's next sensors frame and the ground bytes it counts. The
     // link is polled, not interrupt-driven: with its virtio interrupt and wfi, a frame QEMU had
     // delivered now and then left the board asleep (a lost wake-up, about once in a few hundred
@@ -134,12 +163,17 @@ uint32_t VirtBoard::wait_kick([[maybe_unused]] uint32_t seen) {
         }
         sample_.battery_mv = frame->battery_mv;
         sample_.pressure_pa = frame->pressure_pa;
+        // The watchdog for this tick, on the virtual clock (instructions under -icount).
+        write_mtimecmp(read_mtime() + static_cast<uint64_t>(kStallPeriods) * g_period_ticks);
         return kick_;
       }
       g_link.poll();
       enable_interrupts();  // the ground UART's bytes come in meanwhile
     }
   }
+  // The main loop is here, so the tick before has completed: the watchdog's sign of life.
+  g_alive_kick = g_kicks;
+  g_watching = true;
   // Spin rather than wfi: under QEMU -icount an idle CPU's time is taken from the host clock, so
   // a host that wakes QEMU late hands the firmware a late kick (the 60 s run saw ~1.5 deadline
   // misses a second that way, with no tick longer than half a period). Spinning keeps the board's
@@ -218,6 +252,25 @@ void VirtBoard::send_engines(simlink::EngineFrame& frame) {
     frame.stats[frame.sum_low] = s.sum_low, frame.stats[frame.sum_high] = s.sum_high;
   }
   g_link.send_engines(frame);
+}
+
+void VirtBoard::cut_engines() {
+  engines_ = qr::EngineCommand{};
+  if (!linked_) return;
+  // The plant's engines are the ones in the engines frame: answer the kick flown now with zero.
+  simlink::EngineFrame f;
+  f.kick = kick_;
+  f.ground_bytes = ground_sent_;
+  g_link.send_engines(f);
+}
+
+void cut_engines() {
+  if (g_board != nullptr) g_board->cut_engines();
+}
+
+void read_engines(uint16_t out[4]) {
+  const qr::EngineCommand e = g_board != nullptr ? g_board->engines() : qr::EngineCommand{};
+  for (int i = 0; i < 4; ++i) out[i] = e.value[i];
 }
 
 static_assert(qr::Board<VirtBoard>);

@@ -7,6 +7,7 @@
 //     tick with its engines (answer()): lock-step with the simulated plant.
 // Either way the ground link is the 16550 UART: received by interrupt into a ring, transmitted a
 // bounded number of bytes per tick (on the link, at the line's pace, PacedTransmitter).
+// Either way a watchdog on the timer interrupt cuts the engines when a tick stalls (fail_safe.hpp).
 #pragma once
 
 #include <stdint.h>
@@ -33,6 +34,8 @@ class VirtBoard {
   bool recording_ended() const;
   void set_engines(qr::EngineCommand engines) { engines_ = engines; }
   qr::EngineCommand engines() const { return engines_; }
+  // The fail-safe's cut (fail_safe.hpp): zero to every engine, and to the plant on the link.
+  void cut_engines();
   bool serial_read(uint8_t& byte);
   bool serial_write(uint8_t byte);
   void set_leds(uint8_t leds) { leds_ = leds; }

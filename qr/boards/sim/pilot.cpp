@@ -1,5 +1,8 @@
 #include <qr/boards/sim/pilot.hpp>
 
+#include <algorithm>
+#include <cmath>
+
 #include <common/link_timing.hpp>
 
 namespace qrsim {
@@ -8,7 +11,26 @@ Pilot::Pilot(SimBoard& board, uint8_t first_seq) : board_(board), resend_(first_
 
 void Pilot::send(const wire::FrameBytes& frame) {
   if (silent_) return;
-  for (uint8_t i = 0; i < frame.size; ++i) board_.pc_send(frame.bytes[i]);
+  for (uint8_t i = 0; i < frame.size; ++i) put(frame.bytes[i]);
+}
+
+void Pilot::damage_line(const LineFaults& faults) {
+  faults_ = faults;
+  damaged_ = true;
+  rng_.seed(faults.seed);
+  next_garbage_us_ = board_.world().now_us() + faults.garbage_every_us;
+}
+
+bool Pilot::lost() { return damaged_ && std::uniform_real_distribution<double>(0, 1)(rng_) < faults_.byte_loss; }
+
+void Pilot::put(uint8_t byte) {
+  ++counts_.bytes_up;
+  if (lost()) {
+    ++counts_.bytes_up_lost;
+    return;
+  }
+  board_.pc_send(byte);
+  if (on_bytes_up_) on_bytes_up_(byte);
 }
 
 void Pilot::request_mode(wire::Mode mode) {
@@ -30,6 +52,11 @@ void Pilot::step() {
     uint64_t at = 0;
     const bool has = board_.pc_next_sent_at_us(at);
     if (!board_.pc_receive(byte)) break;
+    ++counts_.bytes_down;
+    if (lost()) {
+      ++counts_.bytes_down_lost;
+      continue;
+    }
     // A frame's start byte carries the time of the tick that sent it.
     if (has && parser_.buffered() == 0) sent_at_us = at;
     parser_.push(byte, [&](const wire::Frame& frame) { on_frame(frame, sent_at_us); });
@@ -43,6 +70,14 @@ void Pilot::step() {
     } else {
       ++view_.requests_given_up;
     }
+  }
+
+  if (damaged_ && faults_.garbage_every_us != 0 && now_us >= next_garbage_us_) {
+    next_garbage_us_ = now_us + faults_.garbage_every_us;
+    const uint32_t n = std::uniform_int_distribution<uint32_t>(1, faults_.garbage_max_bytes)(rng_);
+    ++counts_.garbage_bursts;
+    counts_.garbage_bytes += n;
+    for (uint32_t i = 0; i < n; ++i) put(static_cast<uint8_t>(rng_()));
   }
 
   if (now_us >= next_control_us_) {
@@ -77,6 +112,18 @@ void Pilot::on_frame(const wire::Frame& frame, uint64_t sent_at_us) {
   };
   Handler handler{*this, sent_at_us};
   wire::dispatch(frame, handler);
+  if (on_every_frame_) on_every_frame_(frame, parser_.counters());
+}
+
+uint16_t lift_for_height(const sim::Quadrotor& plant, double target, double ramp) {
+  const sim::PlantState& s = plant.state();
+  const double height = -s.position.z, climb = -s.velocity.z;
+  const double accel = std::clamp(2.0 * (target - height) - 2.5 * climb, -3.0, 3.0);
+  const sim::Vec3 body_down = sim::rotate(s.attitude, {0, 0, 1});
+  const double cos_tilt = std::max(0.5, body_down.z);
+  const double thrust_ratio = std::max(0.0, (sim::kGravity + accel) / (sim::kGravity * cos_tilt));
+  const double lift = plant.hover_command() * std::sqrt(thrust_ratio) * std::clamp(ramp, 0.0, 1.0);
+  return static_cast<uint16_t>(std::clamp(std::lround(lift), 0L, 1000L));
 }
 
 }  // namespace qrsim

@@ -5,13 +5,17 @@
 
 #include <stdint.h>
 
+#include <functional>
+#include <random>
 #include <string>
+#include <vector>
 
 #include <common/frame_parser.hpp>
 #include <common/messages.hpp>
 #include <common/parameter_table.hpp>
 #include <common/resend_queue.hpp>
 #include <qr/boards/sim/sim_board.hpp>
+#include <sim/quadrotor.hpp>
 
 namespace qrsim {
 
@@ -32,6 +36,22 @@ struct ConsoleView {
   std::string debug_text;  // everything the QR said, lines joined
 };
 
+// A damaged line between the pilot and the QR (the soak, soak.hpp): each byte either way is lost
+// with `byte_loss`, and bursts of random bytes go up the line every `garbage_every_us`. Seeded:
+// a run is repeatable.
+struct LineFaults {
+  double byte_loss = 0;
+  uint64_t garbage_every_us = 0;  // 0: no garbage
+  uint32_t garbage_max_bytes = 64;
+  uint64_t seed = 1;
+};
+
+struct LineFaultCounts {
+  uint64_t bytes_up = 0, bytes_up_lost = 0;
+  uint64_t bytes_down = 0, bytes_down_lost = 0;
+  uint64_t garbage_bursts = 0, garbage_bytes = 0;
+};
+
 class Pilot {
  public:
   explicit Pilot(SimBoard& board, uint8_t first_seq = 0x40);
@@ -43,14 +63,33 @@ class Pilot {
   // Stops sending anything at all (the cable is pulled) or resumes.
   void go_silent(bool silent) { silent_ = silent; }
 
+  // Any request through the resend queue (log start, stop, download, ...).
+  template <class Request>
+  void request(Request r) {
+    send(resend_.submit(r, static_cast<uint32_t>(board_.world().now_us() / 1000)));
+  }
+
   // Once per control period, between ticks: takes what the QR sent, sends what is due.
   void step();
+
+  // The line from here on damaged as `faults` say.
+  void damage_line(const LineFaults& faults);
+  const LineFaultCounts& line_counts() const { return counts_; }
+  // Every frame from the QR, after the pilot's own handling (log parts, status, ...), with what
+  // the pilot's parser has counted so far.
+  void on_every_frame(std::function<void(const wire::Frame&, const wire::LinkCounters&)> f) {
+    on_every_frame_ = std::move(f);
+  }
+  // Every byte that went onto the line towards the QR, after the damage: what the QR will read.
+  void on_bytes_up(std::function<void(uint8_t)> f) { on_bytes_up_ = std::move(f); }
 
   bool request_pending(wire::MessageType type) const { return resend_.pending(type); }
   const ConsoleView& view() const { return view_; }
 
  private:
   void send(const wire::FrameBytes& frame);
+  void put(uint8_t byte);
+  bool lost();
   void on_frame(const wire::Frame& frame, uint64_t sent_at_us);
 
   SimBoard& board_;
@@ -60,6 +99,19 @@ class Pilot {
   bool silent_ = false;
   uint64_t next_control_us_ = 0;
   ConsoleView view_;
+  LineFaults faults_;
+  bool damaged_ = false;
+  std::mt19937_64 rng_;
+  uint64_t next_garbage_us_ = 0;
+  LineFaultCounts counts_;
+  std::function<void(const wire::Frame&, const wire::LinkCounters&)> on_every_frame_;
+  std::function<void(uint8_t)> on_bytes_up_;
 };
+
+// The pilot's thumb on the lift stick, watching the vehicle: lift for the weight (what the pilot
+// knows this vehicle hovers at, for its battery now) corrected for the height and climb rate
+// the pilot sees and for the tilt, `ramp` (0-1) of it. Slow next to the attitude loops, as a
+// person is.
+uint16_t lift_for_height(const sim::Quadrotor& plant, double target, double ramp);
 
 }  // namespace qrsim

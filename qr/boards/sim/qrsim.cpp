@@ -2,6 +2,7 @@
 //   qrsim --serve [--stdio]        real time, the QR's serial line on a pseudo terminal or stdio
 //   qrsim --scenario NAME --json   headless, faster than real time, one JSON object of figures
 //   qrsim --sweep NAME --seeds N   the scenario over N seeds and drawn vehicles, band summaries
+//   qrsim --soak                   an hour over a damaged line, judged; one JSON line
 //   qrsim --replay IN --out OUT    a recording through the flight chain (qr/host/replay.hpp)
 // Run `qrsim --help` for everything; docs/simulator.md describes the model and the scenarios.
 #include <fcntl.h>
@@ -18,6 +19,7 @@
 #include <qr/boards/sim/builtin_scenarios.hpp>
 #include <qr/boards/sim/scenario.hpp>
 #include <qr/boards/sim/serve.hpp>
+#include <qr/boards/sim/soak.hpp>
 #include <qr/boards/sim/sweep.hpp>
 #include <qr/boards/sim/text_fields.hpp>
 #include <qr/core/rate.hpp>
@@ -32,6 +34,7 @@ constexpr const char* kUsage = R"(usage:
         [--no-noise] [--trace FILE.csv] [--record FILE.csv] [--json] [--devboard [ELF]]
   qrsim --sweep NAME|FILE [--seeds N] [--no-draw] [--seed N] [--seconds S] [--vehicle FILE]
         [--param NAME=VALUE]...
+  qrsim --soak [--seconds S] [--seed N]
   qrsim --replay IN.csv --out OUT.csv [--double]
   qrsim --list
   qrsim --help
@@ -73,6 +76,9 @@ rate) flying in a simulated IN4073-class quadrotor.
                    on the emulated devboard (QEMU virt, riscv32) instead of the host build, in
                    lock-step over the sensor link (docs/devboard.md); a scenario's figures add
                    "firmware": "rv32" and the binary's instructions per tick and task (instr_*)
+  --soak           an hour (--seconds S of flight) of full control over a damaged line, logging,
+                   the log downloaded at the end, judged by a referee; one JSON line {"soak": ...}
+                   (docs/simulator.md section 9); exit status 1 when it failed
   --replay IN      run a recording through the flight chain tick by tick (test mode) and write
                    every tick's estimates, controller outputs and engines to --out OUT
                    (docs/replay.md); --double runs the double-precision reference chain
@@ -89,7 +95,7 @@ int usage_error(const std::string& message) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  enum class Command { none, serve, scenario, sweep, replay, list, help } command = Command::none;
+  enum class Command { none, serve, scenario, sweep, soak, replay, list, help } command = Command::none;
   std::string replay_in, replay_out;
   qr::host::ReplayOptions replay_options;
   qrsim::RunOptions scenario;
@@ -117,6 +123,8 @@ int main(int argc, char** argv) {
       command = Command::help;
     } else if (arg == "--list") {
       command = Command::list;
+    } else if (arg == "--soak") {
+      command = Command::soak;
     } else if (arg == "--serve") {
       command = Command::serve;
     } else if (arg == "--stdio") {
@@ -221,6 +229,12 @@ int main(int argc, char** argv) {
                     script.known_failure.empty() ? "" : " [known failure]");
       }
       return 0;
+    case Command::soak: {
+      qrsim::SoakOptions soak;
+      if (seconds > 0) soak.seconds = seconds;
+      soak.seed = seed;
+      return qrsim::run_soak(soak) ? 0 : 1;
+    }
     case Command::serve:
       serve.stdio = stdio;
       serve.status = status;

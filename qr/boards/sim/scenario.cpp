@@ -33,20 +33,6 @@ constexpr double kHoverHeight = 1.5;    // m, centre of mass above the ground
 constexpr double kSettleSeconds = 1.5;  // steady hover before the manoeuvre
 constexpr double kPreflightLimit = 20;  // s
 
-// The pilot's thumb on the lift stick, watching the vehicle: lift for the weight (what the pilot
-// knows this vehicle hovers at, for its battery now) corrected for the height and climb rate
-// the pilot sees and for the tilt. Slow next to the attitude loops, as a person is.
-uint16_t lift_for_height(const sim::Quadrotor& plant, double target, double ramp) {
-  const sim::PlantState& s = plant.state();
-  const double height = -s.position.z, climb = -s.velocity.z;
-  const double accel = std::clamp(2.0 * (target - height) - 2.5 * climb, -3.0, 3.0);
-  const sim::Vec3 body_down = sim::rotate(s.attitude, {0, 0, 1});
-  const double cos_tilt = std::max(0.5, body_down.z);
-  const double thrust_ratio = std::max(0.0, (sim::kGravity + accel) / (sim::kGravity * cos_tilt));
-  const double lift = plant.hover_command() * std::sqrt(thrust_ratio) * std::clamp(ramp, 0.0, 1.0);
-  return static_cast<uint16_t>(std::clamp(std::lround(lift), 0L, 1000L));
-}
-
 int16_t stick(double value) { return static_cast<int16_t>(std::clamp(std::lround(value), -1000L, 1000L)); }
 
 // What the pilot's hands hold after t0, changed by the script's events.

@@ -182,10 +182,15 @@ int serve(const ServeOptions& options) {
       const sim::PlantState& s = qr->world().plant().state();
       const sim::Euler e = sim::to_euler(s.attitude);
       std::fprintf(stderr,
-                   "qrsim: t=%.0fs mode=%u height=%.2fm roll=%.1f pitch=%.1f yaw=%.1f deg battery=%.2fV misses=%u\n",
+                   "qrsim: t=%.0fs mode=%u height=%.2fm roll=%.1f pitch=%.1f yaw=%.1f deg battery=%.2fV misses=%u "
+                   "host: late_wakeups=%llu caught_up=%llu max_late_ms=%.1f skipped=%llu\n",
                    static_cast<double>(now) * 1e-6, static_cast<unsigned>(qr->view().mode), -s.position.z,
                    e.roll * 57.29578, e.pitch * 57.29578, e.yaw * 57.29578, qr->world().plant().battery_volts(),
-                   static_cast<unsigned>(qr->view().deadline_misses));
+                   static_cast<unsigned>(qr->view().deadline_misses),
+                   static_cast<unsigned long long>(qr->board().host_timing().late_wakeups),
+                   static_cast<unsigned long long>(qr->board().host_timing().caught_up_periods),
+                   static_cast<double>(qr->board().host_timing().max_late_us) * 1e-3,
+                   static_cast<unsigned long long>(qr->board().host_timing().skipped_periods));
     }
     if (stop_us != 0 && now >= stop_us) break;
   }

@@ -2,10 +2,11 @@
 //
 //   wait_kick   advances the physics to the next control period boundary and samples the
 //               sensors there (the MPU's data-ready is the kick, as on the IN4073 board);
-//   now_us      simulated time; it stands still while a tick runs, so in headless runs a tick
-//               takes no simulated time and no deadline is ever missed. In real time (serve
-//               mode) the kick count follows the wall clock, and a tick the host ran late on is
-//               a deadline miss as on hardware;
+//   now_us      simulated time; it stands still while a tick runs, so a tick takes no
+//               simulated time and no deadline is ever missed. In real time (serve mode) the
+//               kicks follow the wall clock; a host that wakes the simulator late gets the
+//               periods it missed run back to back (host_timing() counts them), not counted as
+//               the firmware's misses (docs/simulator.md section 5, "Serve mode on a loaded host");
 //   cycles      the host's nanosecond clock: what the tasks really cost on this machine (a
 //               benchmark figure; nothing in the flight depends on it);
 //   set_engines the motor commands of the plant;
@@ -27,8 +28,18 @@
 
 namespace qrsim {
 
+// How the host kept real time in serve mode (the simulator's figures, not the firmware's).
+struct HostTiming {
+  uint64_t late_wakeups = 0;       // sleeps for a kick that ended a period or more after it
+  uint64_t caught_up_periods = 0;  // periods run back to back, behind the wall clock
+  uint64_t max_late_us = 0;        // the furthest behind the wall clock a period began
+  uint64_t skipped_periods = 0;    // periods never simulated: the host fell kMaxLagUs behind
+};
+
 class SimBoard {
  public:
+  // Behind the wall clock by more than this, serve mode gives up catching up and skips ahead.
+  static constexpr uint64_t kMaxLagUs = 200000;
   static constexpr size_t kTransmitBuffer = 32;
   static constexpr size_t kLogBytes = 128 * 1024;
 
@@ -55,6 +66,7 @@ class SimBoard {
   // Real time: from now on the kick count follows the wall clock (serve mode).
   void follow_wall_clock();
   bool real_time() const { return real_time_; }
+  const HostTiming& host_timing() const { return host_; }
   // Simulated µs of the next kick after `seen`.
   uint64_t kick_time_us(uint32_t seen) const { return (static_cast<uint64_t>(seen) + 1) * qr::kPeriodUs; }
 
@@ -75,6 +87,7 @@ class SimBoard {
   uint8_t leds_ = 0;
   std::vector<uint8_t> log_ = std::vector<uint8_t>(kLogBytes);
   bool real_time_ = false;
+  HostTiming host_;
   std::chrono::steady_clock::time_point wall_start_{};
   uint64_t sim_at_wall_start_us_ = 0;
 };
