@@ -51,9 +51,9 @@ DownloadRun download(const wire_test::ChannelFaults& faults) {
   for (int i = 0; i < 10; ++i) scheduler.tick();
   EXPECT_EQ(flight.log().status().telemetry_lines, kLines);
   board.tx.clear();
-  // The UART: a byte leaves every 86.8 µs; the board takes what its small FIFO has room for.
+  // The UART: a byte leaves every 86.8 µs; the board takes what its FIFO has room for.
   constexpr double kBytesPerMs = 115200.0 / 10 / 1000;
-  board.tx_capacity = 16;
+  board.tx_capacity = 32;  // the sim board's transmit FIFO (docs/simulator.md section 4)
   double line_budget = 0;
 
   wire_test::SimChannel down(faults, 11), up(faults, 12);
