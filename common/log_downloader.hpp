@@ -1,18 +1,19 @@
 // The console's side of a log download: asks for the lines the QR has, collects their parts, asks
-// again for the lines that did not come whole, and hands each line on exactly once.
+// again for the parts that did not come while the stream goes on, and hands each line on exactly
+// once.
 //
-//   downloader.begin(status.sensor_lines);             // from log_status
-//   each pass:  if (downloader.next_request(now_ms, first, count)) queue LogDownload{first, count}
+//   downloader.begin(status.sensor_lines);                       // from log_status
+//   each pass:  if (downloader.next_download(now_ms, first, count)) queue LogDownload{first, count}
+//               if (log_resend not pending && downloader.next_resend(now_ms, resend)) queue resend
 //               for each sensor_log_part:  downloader.on_part(part, now_ms, store_line)
 //   until downloader.done()
 //
-// One request is out at a time: a new log_download replaces the QR's current one. After the
-// parts stop coming (kQuietMs), the missing lines are asked for again (next_request).
-//
-// A line's parts are kept until it is whole, over as many passes as it takes (a line never
-// changes once written): over a line losing 5 % of its bytes a 7-part line comes whole in one
-// pass about once in 70, and the soak's download took 421 passes for 120 lines when a line had
-// to come whole in one (docs/simulator.md section 9).
+// The QR streams the log once (log_download). A line behind the newest one seen that is not
+// whole has lost parts on the way: they are asked for again at once, by part (log_resend), and
+// the QR sends them before the stream's next parts. Parts of a line that is not whole are kept
+// (kPartialLines of them), so a line lost one part needs one part again, not the whole line. When
+// the line is quiet (kQuietMs: the stream has ended, or a request or its parts were lost),
+// whatever is still missing is asked for again from the first missing line on.
 //
 // Over a line that loses bytes, a receiver that says what its parser saw (frame_accepted, with
 // every frame it accepts) gets only parts it can trust: a lost byte inside a part splices it
@@ -26,24 +27,35 @@
 #include <stdint.h>
 
 #include <common/log_records.hpp>
+#include <common/payload_codec.hpp>
+#include <common/requests.hpp>
 
 namespace wire {
 
 template <LogRecord Record, size_t MaxLines = 65536>
 class LogDownloader {
  public:
-  // Parts stop for this long: the QR has sent what it was asked for (or the request was lost).
+  // Parts stop for this long: the QR has sent what it was asked for (or a request was lost).
   static constexpr uint32_t kQuietMs = 250;
-  // The widest span one re-request covers.
-  static constexpr uint16_t kMaxRerequestLines = 512;
+  // Lines not whole whose parts are kept; a line beyond them is asked for whole again.
+  static constexpr size_t kPartialLines = 64;
+  // Whole lines one log_resend covers: its mask holds their parts.
+  static constexpr uint16_t kResendLines = kLogResendMaskBytes * 8 / Record::kParts;
+  static constexpr LogKind kLog = Record::kPartType == MessageType::sensor_log_part ? LogKind::sensor
+                                                                                    : LogKind::telemetry;
 
   void begin(uint16_t lines) {
     lines_ = lines;
     received_ = 0;
     requests_ = 0;
+    resends_ = 0;
     asked_ = false;
+    stream_over_ = false;
+    newest_ = 0;
+    cursor_ = 0;
+    first_missing_ = 0;
     for (uint8_t& b : have_) b = 0;
-    for (Partial& p : partial_) p = Partial{};
+    for (Partial& p : partial_) p.parts = 0;
     pending_ = false;
   }
 
@@ -73,72 +85,112 @@ class LogDownloader {
     pending_clean_ = frame_clean_;
   }
 
-  // The request to make now, if one is due: everything at first, then, each time the line has
-  // been quiet for kQuietMs, the span from the first missing line to the last missing line within
-  // kMaxRerequestLines of it. Losses are scattered, so a span brings back every gap in it in one
-  // pass, at the price of re-sending the lines between them that did arrive.
-  bool next_request(uint32_t now_ms, uint16_t& first, uint16_t& count) {
-    if (done()) return false;
-    if (asked_ && now_ms - last_activity_ms_ < kQuietMs) return false;
-    uint32_t line = 0;
-    while (line < lines_ && have(static_cast<uint16_t>(line))) ++line;
-    uint32_t last = line;
-    for (uint32_t l = line; l < lines_ && l - line < kMaxRerequestLines; ++l) {
-      if (!have(static_cast<uint16_t>(l))) last = l;
-    }
-    first = static_cast<uint16_t>(line);
-    count = asked_ ? static_cast<uint16_t>(last - line + 1) : 0;  // the first request: to the end
+  // The stream request, once: every line from the first on.
+  bool next_download(uint32_t now_ms, uint16_t& first, uint16_t& count) {
+    if (asked_ || done()) return false;
     asked_ = true;
+    first = 0;
+    count = 0;  // to the end
     last_activity_ms_ = now_ms;
     ++requests_;
+    return true;
+  }
+
+  // Parts to ask for again now, if any: the missing parts of the next kResendLines lines behind
+  // the stream from where the last request ended; once the line is quiet, from the first line
+  // still missing. The caller sends one at a time (a new log_resend replaces a pending one).
+  bool next_resend(uint32_t now_ms, LogResend& out) {
+    if (!asked_ || done()) return false;
+    const bool quiet = now_ms - last_activity_ms_ >= kQuietMs;
+    if (quiet) stream_over_ = true;
+    // Lines the stream has passed; once it has been quiet, every line (the stream is over or lost).
+    const uint32_t behind = stream_over_ ? lines_ : (newest_ > 0 ? newest_ - 1 : 0);
+    while (first_missing_ < lines_ && have(static_cast<uint16_t>(first_missing_))) ++first_missing_;
+    // Quiet, and nothing asked for lately: what is still missing was lost again, or its request.
+    if (quiet && now_ms - last_resend_ms_ >= kQuietMs) cursor_ = first_missing_;
+    uint32_t line = cursor_ > first_missing_ ? cursor_ : first_missing_;
+    while (line < behind && have(static_cast<uint16_t>(line))) ++line;
+    if (line >= behind) return false;
+
+    out = LogResend{0, kLog, static_cast<uint16_t>(line), {}};
+    for (uint16_t n = 0; n < kResendLines && line + n < behind; ++n) {
+      const uint16_t l = static_cast<uint16_t>(line + n);
+      if (have(l)) continue;
+      const uint8_t parts = parts_of(l);
+      for (uint8_t k = 0; k < Record::kParts; ++k) {
+        if ((parts >> k & 1u) == 0) out.want(size_t{n} * Record::kParts + k);
+      }
+    }
+    // Lines the stream has not passed yet are looked at again when it has.
+    cursor_ = line + kResendLines < behind ? line + kResendLines : behind;
+    last_resend_ms_ = now_ms;
+    ++resends_;
     return true;
   }
 
   bool done() const { return received_ == lines_; }
   uint16_t lines() const { return lines_; }
   uint16_t received() const { return received_; }
-  uint32_t requests() const { return requests_; }
-  uint32_t rerequests() const { return requests_ == 0 ? 0 : requests_ - 1; }
+  uint32_t requests() const { return requests_ + resends_; }
+  // Requests after the stream request: every log_resend.
+  uint32_t rerequests() const { return resends_; }
 
  private:
   static_assert(MaxLines <= 65536, "line numbers are u16");
+  static_assert(Record::kParts <= 8, "a line's parts are one byte of bits");
+  static_assert(kResendLines >= 1, "a log_resend covers a whole line at least");
+  static constexpr uint8_t kAllParts = static_cast<uint8_t>((1u << Record::kParts) - 1u);
+
+  struct Partial {
+    uint16_t line = 0;
+    uint8_t parts = 0;  // 0: free
+    uint8_t flat[size_t{Record::kParts} * kLogPartDataBytes] = {};
+  };
+
   bool have(uint16_t line) const { return (have_[line / 8] >> (line % 8) & 1u) != 0; }
 
+  // A part to keep: its line's slot gathers it; on_line gets the line the first time it is whole.
   template <class OnLine>
   void keep(const LogPart<Record>& part, OnLine& on_line) {
-    if (part.part >= Record::kParts || part.line >= lines_ || have(part.line)) return;
-    Partial& slot = partial_[part.line % kPartialLines];
-    if (!slot.used || slot.line != part.line) {
-      slot = Partial{};
-      slot.used = true;
-      slot.line = part.line;
-    }
-    for (size_t i = 0; i < kLogPartDataBytes; ++i) slot.data[size_t{part.part} * kLogPartDataBytes + i] = part.data[i];
-    slot.parts = static_cast<uint8_t>(slot.parts | (1u << part.part));
-    if (slot.parts != kAllParts) return;
-
+    if (part.line >= lines_ || part.part >= Record::kParts) return;
+    if (uint32_t{part.line} + 1 > newest_) newest_ = uint32_t{part.line} + 1;
+    if (have(part.line)) return;
+    Partial& p = partial_for(part.line);
+    for (size_t i = 0; i < kLogPartDataBytes; ++i) p.flat[size_t{part.part} * kLogPartDataBytes + i] = part.data[i];
+    p.parts = static_cast<uint8_t>(p.parts | (1u << part.part));
+    if (p.parts != kAllParts) return;
+    p.parts = 0;  // the slot is free again, whatever the record says
     Record record;
-    const bool valid = read_fields(slot.data, sizeof slot.data, record);
-    slot = Partial{};
-    if (!valid) return;  // a field out of range: the line is asked for again
+    if (!read_fields(p.flat, sizeof p.flat, record)) return;  // a field out of range: asked again
     record.line = part.line;
-    have_[record.line / 8] = static_cast<uint8_t>(have_[record.line / 8] | (1u << (record.line % 8)));
+    have_[part.line / 8] = static_cast<uint8_t>(have_[part.line / 8] | (1u << (part.line % 8)));
     ++received_;
     on_line(static_cast<const Record&>(record));
   }
 
-  // Lines being collected, by line number modulo the widest re-request: one pass never has two
-  // lines in one slot, except the first (then a slot's earlier line starts over).
-  static constexpr uint16_t kPartialLines = kMaxRerequestLines;
-  static_assert(Record::kParts <= 8, "the parts mask is one byte");
-  static constexpr uint8_t kAllParts = static_cast<uint8_t>((1u << Record::kParts) - 1u);
-  struct Partial {
-    bool used = false;
-    uint16_t line = 0;
-    uint8_t parts = 0;  // one bit per part kept
-    uint8_t data[size_t{Record::kParts} * kLogPartDataBytes] = {};
-  };
-  Partial partial_[kPartialLines];
+  // The parts of `line` kept so far (0 when it has no slot).
+  uint8_t parts_of(uint16_t line) const {
+    for (const Partial& p : partial_) {
+      if (p.parts != 0 && p.line == line) return p.parts;
+    }
+    return 0;
+  }
+
+  // The line's slot; else a free one; else the slot of the line farthest behind, whose parts are
+  // then asked for whole.
+  Partial& partial_for(uint16_t line) {
+    Partial* free_slot = nullptr;
+    Partial* oldest = &partial_[0];
+    for (Partial& p : partial_) {
+      if (p.parts != 0 && p.line == line) return p;
+      if (p.parts == 0 && free_slot == nullptr) free_slot = &p;
+      if (p.parts != 0 && p.line < oldest->line) oldest = &p;
+    }
+    Partial& slot = free_slot != nullptr ? *free_slot : *oldest;
+    slot.line = line;
+    slot.parts = 0;
+    return slot;
+  }
 
   bool watching_ = false;  // the receiver reports its damage count
   uint32_t damage_ = 0;
@@ -147,11 +199,18 @@ class LogDownloader {
   bool pending_clean_ = false;
   LogPart<Record> pending_part_;
   uint8_t have_[MaxLines / 8] = {};
+  Partial partial_[kPartialLines] = {};
   uint16_t lines_ = 0;
   uint16_t received_ = 0;
   uint32_t requests_ = 0;
+  uint32_t resends_ = 0;
   bool asked_ = false;
+  bool stream_over_ = false;    // the line has been quiet since the stream request
+  uint32_t newest_ = 0;         // one past the highest line a part came for
+  uint32_t cursor_ = 0;         // where the next log_resend starts looking
+  uint32_t first_missing_ = 0;  // no line before it is missing
   uint32_t last_activity_ms_ = 0;
+  uint32_t last_resend_ms_ = 0;
 };
 
 }  // namespace wire

@@ -34,6 +34,8 @@ enum class MessageType : uint8_t {
   // accepts these, and nothing it receives is text (docs/protocol.md section 3).
   observable_get = 0x22,
   stream_request = 0x41,
+  // Four bits from every other PC -> QR type: no two-bit change makes it one of them.
+  log_resend = 0x6C,
   // QR -> PC
   ack = 0x81,
   nack = 0x82,
@@ -89,6 +91,7 @@ inline constexpr MessageSpec kMessageTable[] = {
     {MessageType::exit, 1, true, Direction::pc_to_qr, "exit", true},
     {MessageType::observable_get, 2, true, Direction::pc_to_qr, "observable_get", false},
     {MessageType::stream_request, 8, true, Direction::pc_to_qr, "stream_request", false},
+    {MessageType::log_resend, 9, true, Direction::pc_to_qr, "log_resend", false},
     {MessageType::ack, 2, false, Direction::qr_to_pc, "ack", false},
     {MessageType::nack, 3, false, Direction::qr_to_pc, "nack", false},
     {MessageType::param_report, 5, false, Direction::qr_to_pc, "param_report", false},

@@ -23,11 +23,11 @@ using AllMessages =
     MessageList<Control, ModeChange, ParamSet, ParamGet, LogStart, LogStop, LogDownload, Exit, Ack, Nack, ParamReport,
                 DebugText, TelemetryAttitude, TelemetryRates, TelemetryEngines, TelemetrySetpoints, TelemetrySystem,
                 TelemetryLink, SensorLogPart, TelemetryLogPart, TelemetryTask, LogStatus, TelemetryHeight,
-                ObservableGet, StreamRequest, ObservableInfo, ObservableText, ObservableSamples>;
+                ObservableGet, StreamRequest, ObservableInfo, ObservableText, ObservableSamples, LogResend>;
 
 // What the QR receives: it never decodes a message of the other direction (its parser drops them).
 using PcToQrMessages = MessageList<Control, ModeChange, ParamSet, ParamGet, LogStart, LogStop, LogDownload, Exit,
-                                   ObservableGet, StreamRequest>;
+                                   ObservableGet, StreamRequest, LogResend>;
 
 template <class... Msgs>
 constexpr bool covers_table(MessageList<Msgs...>) {

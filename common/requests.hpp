@@ -140,6 +140,33 @@ struct LogDownload {
   constexpr bool valid() const { return log == LogKind::sensor || log == LogKind::telemetry; }
 };
 
+// Asks the QR to send again the parts a download lost, while the download goes on: bit k of
+// `parts` (byte k / 8, bit k % 8) is part k % P of line first_line + k / P, P the log's parts per
+// line (5 sensor, 7 telemetry). The QR sends them before the next parts of the stream, so a lost
+// part costs one part, not a line and not a wait for the stream's end (docs/protocol.md section 8).
+inline constexpr size_t kLogResendMaskBytes = 5;
+
+struct LogResend {
+  static constexpr MessageType kType = MessageType::log_resend;
+  uint8_t seq = 0;
+  LogKind log = LogKind::sensor;
+  uint16_t first_line = 0;
+  uint8_t parts[kLogResendMaskBytes] = {};
+
+  constexpr bool operator==(const LogResend&) const = default;
+
+  template <class Self, class Visit>
+  static constexpr void fields(Self& m, Visit& v) {
+    v(m.seq);
+    v(m.log);
+    v(m.first_line);
+    v(m.parts);
+  }
+  constexpr bool valid() const { return log == LogKind::sensor || log == LogKind::telemetry; }
+  constexpr bool wants(size_t bit) const { return (parts[bit / 8] >> (bit % 8) & 1u) != 0; }
+  constexpr void want(size_t bit) { parts[bit / 8] = static_cast<uint8_t>(parts[bit / 8] | (1u << (bit % 8))); }
+};
+
 // The console is closing: the QR goes to safe (through panic if flying) and stops.
 struct Exit {
   static constexpr MessageType kType = MessageType::exit;

@@ -63,6 +63,9 @@ class Barometer {
   // Where in its cycle the barometer started (drawn from the seed): readings are published at
   // phase + k * kPeriodUs.
   uint64_t phase_us() const { return phase_us_; }
+  // The next instant step() does something (takes or publishes a reading): a coarse physics
+  // step must not stride across it, or the reading would be taken at the wrong altitude/time.
+  uint64_t next_event_us() const { return next_sample_us_ < next_publish_us_ ? next_sample_us_ : next_publish_us_; }
 
  private:
   Random random_;

@@ -33,14 +33,9 @@ GroundContact::GroundContact(const VehicleParams& v)
   for (const Vec3& point : points_) reach_ = std::max(reach_, norm(point));
 }
 
-ContactResult GroundContact::at(const Vec3& position, const Vec3& velocity, const Quat& attitude,
-                                const Vec3& body_rate) const {
+ContactResult GroundContact::near(const Vec3& position, const Vec3& velocity, const Quat& attitude,
+                                  const Vec3& body_rate) const {
   ContactResult result;
-  // Above this height nothing can touch, and the nine rotations are skipped (most of a flight).
-  if (position.z + reach_ < 0) {
-    result.deepest_m = position.z + reach_;
-    return result;
-  }
   result.deepest_m = -1e9;
   for (const Vec3& point : points_) {
     const Vec3 world_point = position + rotate(attitude, point);

@@ -28,11 +28,23 @@ class GroundContact {
  public:
   explicit GroundContact(const VehicleParams& vehicle);
 
-  ContactResult at(const Vec3& position, const Vec3& velocity, const Quat& attitude, const Vec3& body_rate) const;
+  ContactResult at(const Vec3& position, const Vec3& velocity, const Quat& attitude, const Vec3& body_rate) const {
+    // Above this height nothing can touch, and the nine rotations are skipped (most of a flight).
+    if (position.z + reach_ < 0) {
+      ContactResult far;
+      far.deepest_m = position.z + reach_;
+      return far;
+    }
+    return near(position, velocity, attitude, body_rate);
+  }
 
   const std::array<Vec3, kContactPoints>& points() const { return points_; }
+  // The farthest contact point from the centre of mass: below this height nothing can touch.
+  double reach() const { return reach_; }
 
  private:
+  ContactResult near(const Vec3& position, const Vec3& velocity, const Quat& attitude, const Vec3& body_rate) const;
+
   double stiffness_, damping_, friction_;
   std::array<Vec3, kContactPoints> points_;  // body frame, from the centre of mass
   double reach_ = 0;                         // farthest point from the centre of mass

@@ -50,7 +50,7 @@ void Quadrotor::rest_on_ground(double north, double east) {
   state_ = s;
 }
 
-Quadrotor::Derivative Quadrotor::evaluate(const PlantState& s) const {
+Quadrotor::Derivative Quadrotor::evaluate(const PlantState& s, Vec3* specific_force) const {
   const VehicleParams& v = vehicle_;
   Derivative d;
   // The vehicle's velocity through the air, which moves at the wind's velocity.
@@ -66,7 +66,8 @@ Quadrotor::Derivative Quadrotor::evaluate(const PlantState& s) const {
   body.torque += disturbance_torque_;
 
   const Vec3 force_world = rotate(s.attitude, body.force) + disturbance_force_;
-  d.specific_force = rotate_inverse(s.attitude, force_world) * (1 / v.mass_kg);
+  // Only the accelerometer wants it, once a kick; the four RK4 stages of a step do not.
+  if (specific_force != nullptr) *specific_force = rotate_inverse(s.attitude, force_world) * (1 / v.mass_kg);
   d.velocity = s.velocity;
   d.acceleration = force_world * (1 / v.mass_kg) + Vec3{0, 0, kGravity};
   d.attitude_rate = sim::derivative(s.attitude, s.rate);
@@ -115,7 +116,9 @@ void Quadrotor::step(double dt) {
   constexpr double kTwoPi = 2 * std::numbers::pi;
   for (size_t i = 0; i < kRotorCount; ++i) {
     state_.rotor_speed[i] = std::max(0.0, state_.rotor_speed[i]);
-    phase_[i] = std::fmod(phase_[i] + 0.5 * (speed_before[i] + state_.rotor_speed[i]) * dt, kTwoPi);
+    // Less than a turn per step: one exact subtraction (Sterbenz) gives fmod's result, bit for bit.
+    const double phase = phase_[i] + 0.5 * (speed_before[i] + state_.rotor_speed[i]) * dt;
+    phase_[i] = phase < kTwoPi ? phase : phase < 2 * kTwoPi ? phase - kTwoPi : std::fmod(phase, kTwoPi);
   }
 
   current_ = current_draw(state_.rotor_speed, volts_);
@@ -123,10 +126,21 @@ void Quadrotor::step(double dt) {
   volts_ = battery_.terminal_volts(current_);
 }
 
-Vec3 Quadrotor::specific_force() const { return evaluate(state_).specific_force; }
+Vec3 Quadrotor::specific_force() const {
+  Vec3 out;
+  evaluate(state_, &out);
+  return out;
+}
 
 double Quadrotor::deepest_contact() const {
   return ground_.at(state_.position, state_.velocity, state_.attitude, state_.rate).deepest_m;
+}
+
+bool Quadrotor::clear_of_ground_for(double seconds) const {
+  // Sinking at today's speed plus a 100 m/s² (10 g) push for the whole time, and a millimetre.
+  constexpr double kWorstAcceleration = 100, kMargin = 1e-3;
+  const double sink = std::max(0.0, state_.velocity.z) * seconds + 0.5 * kWorstAcceleration * seconds * seconds;
+  return state_.position.z + ground_.reach() + sink + kMargin < 0;
 }
 
 double Quadrotor::steady_command(double w) const {

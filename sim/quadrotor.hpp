@@ -63,6 +63,10 @@ class Quadrotor {
   double battery_current() const { return current_; }
   // How far the lowest contact point is below the ground (negative: airborne).
   double deepest_contact() const;
+  // True when no contact point can reach the ground within the next `seconds`, whatever the
+  // attitude does meanwhile: the centre is higher than the farthest point's reach plus the
+  // distance it can sink. In that time the contact term is zero and the plant has no stiff part.
+  bool clear_of_ground_for(double seconds) const;
   const VehicleParams& vehicle() const { return vehicle_; }
   const std::array<uint16_t, kRotorCount>& engines() const { return commands_; }
 
@@ -80,10 +84,10 @@ class Quadrotor {
     Quat attitude_rate;
     Vec3 angular_acceleration;
     std::array<double, kRotorCount> rotor_acceleration{};
-    Vec3 specific_force;  // body axes, not integrated
   };
 
-  Derivative evaluate(const PlantState& s) const;
+  // The state's derivative; with `specific_force`, also what an accelerometer feels (body axes).
+  Derivative evaluate(const PlantState& s, Vec3* specific_force = nullptr) const;
   double current_draw(const std::array<double, kRotorCount>& speeds, double volts) const;
 
   VehicleParams vehicle_;

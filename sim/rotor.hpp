@@ -4,6 +4,7 @@
 // velocity points along body +z, down), left and right counter-clockwise.
 #pragma once
 
+#include <algorithm>
 #include <array>
 
 #include <sim/vehicle.hpp>
@@ -23,14 +24,19 @@ std::array<RotorGeometry, kRotorCount> rotor_geometry(const VehicleParams& vehic
 // The speed the motor settles at for `command` (0..1000) with `volts` across the ESC: the
 // command is a share of full speed, full speed is proportional to the voltage (docs/conventions.md:
 // commands are proportional to rotor speed).
-double motor_target_speed(const VehicleParams& vehicle, double command, double volts);
+inline double motor_target_speed(const VehicleParams& v, double command, double volts) {
+  return std::clamp(command, 0.0, 1000.0) / 1000.0 * v.speed_per_volt() * std::max(0.0, volts);
+}
 
 // First-order lag toward the target, with its own time constant each way (vehicle file). Down is
 // the ESC braking the motor as multirotor ESC firmware does by default (BLHeli's "damped light",
 // regenerative braking), not the prop coasting: drag alone decelerates at k_m w^2 / J_r, about
 // 880 rad/s^2 at this vehicle's hover speed, while a 50 ms lag takes 8000 rad/s^2 from hover to
 // stop.
-double motor_acceleration(const VehicleParams& vehicle, double speed, double target);
+inline double motor_acceleration(const VehicleParams& v, double speed, double target) {
+  const double tau = target > speed ? v.motor_tau_up_s : v.motor_tau_down_s;
+  return (target - speed) / tau;
+}
 
 // Everything one rotor does to the airframe at rotor speed `speed` (rad/s, >= 0), changing at
 // `speed_rate`, with the airframe turning at `body_rate` and the hub moving through the air at
@@ -40,10 +46,20 @@ double motor_acceleration(const VehicleParams& vehicle, double speed, double tar
 //   reaction to the motor accelerating the rotor, -spin J dω/dt about z;
 //   gyroscopic torque of the rotor's angular momentum, -body_rate x (spin J ω z);
 //   in-plane rotor drag -c ω v_inplane at the hub (induced drag and blade flapping).
-Wrench rotor_wrench(const VehicleParams& vehicle, const RotorGeometry& rotor, double speed, double speed_rate,
-                    const Vec3& body_rate, const Vec3& hub_air_velocity);
+// Inline, as the two above: the plant calls them four times per evaluation, 16 times a step.
+inline Wrench rotor_wrench(const VehicleParams& v, const RotorGeometry& rotor, double speed, double speed_rate,
+                           const Vec3& body_rate, const Vec3& hub_air_velocity) {
+  const double w2 = speed * speed;
+  const Vec3 inplane_drag{-v.rotor_drag_coeff * speed * hub_air_velocity.x,
+                          -v.rotor_drag_coeff * speed * hub_air_velocity.y, 0};
+  Wrench w = at_point(rotor.hub, Vec3{0, 0, -v.thrust_coeff * w2} + inplane_drag);
+  const Vec3 momentum{0, 0, rotor.spin * v.rotor_inertia * speed};
+  w.torque += Vec3{0, 0, -rotor.spin * (v.torque_coeff * w2 + v.rotor_inertia * speed_rate)};
+  w.torque -= cross(body_rate, momentum);
+  return w;
+}
 
 // Shaft power the motor delivers to the rotor in steady rotation, W.
-double rotor_shaft_power(const VehicleParams& vehicle, double speed);
+inline double rotor_shaft_power(const VehicleParams& v, double speed) { return v.torque_coeff * speed * speed * speed; }
 
 }  // namespace sim

@@ -4,7 +4,6 @@
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
-#include <numbers>
 #include <sstream>
 
 namespace sim {
@@ -115,10 +114,6 @@ bool check(const VehicleParams& v, std::string& error) {
 }
 
 }  // namespace
-
-double VehicleParams::speed_per_volt() const {
-  return motor_kv_rpm_per_v * motor_load_factor * 2 * std::numbers::pi / 60;
-}
 
 double VehicleParams::hover_speed() const { return std::sqrt(mass_kg * 9.80665 / (4 * thrust_coeff)); }
 

@@ -4,6 +4,7 @@
 // must be given, so a file describes its vehicle completely and a typo is an error, not a default.
 #pragma once
 
+#include <numbers>
 #include <string>
 
 #include <sim/vec3.hpp>
@@ -73,8 +74,9 @@ struct VehicleParams {
   double baro_warmup_tau_s = 120.0;       // ... and its time constant
 
   // Derived
-  double speed_per_volt() const;  // rad/s per volt at full command
-  double hover_speed() const;     // rad/s per rotor for thrust = weight
+  // rad/s per volt at full command
+  double speed_per_volt() const { return motor_kv_rpm_per_v * motor_load_factor * 2 * std::numbers::pi / 60; }
+  double hover_speed() const;  // rad/s per rotor for thrust = weight
 };
 
 // The default vehicle, an IN4073-class quadrotor (sim/vehicles/in4073.txt, compiled in).

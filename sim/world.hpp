@@ -1,6 +1,7 @@
 // The world the host firmware flies in: the plant, its sensors and a clock in whole
-// microseconds. Time only moves through advance_to(), in fixed physics steps, so the same seed
-// and the same engine commands at the same times give the same flight, bit for bit.
+// microseconds. Time only moves through advance_to(), in physics steps chosen from the state
+// alone, so the same seed and the same engine commands at the same times give the same flight,
+// bit for bit.
 #pragma once
 
 #include <stdint.h>
@@ -16,6 +17,11 @@ namespace sim {
 struct WorldConfig {
   uint64_t seed = 1;
   uint32_t step_us = 125;  // 8 kHz; must divide the control period
+  // The step in free flight, where no contact point can reach the ground within it: the contact
+  // (the plant's only stiff part) is zero there, and the slowest-to-fastest dynamics left are the
+  // motor lag (30 ms) and the body's rates. 0: always step_us. Shortened so that it stays within
+  // kMotorLagPerStep of the vehicle's faster motor time constant (docs/simulator.md section 1).
+  uint32_t free_flight_step_us = 500;
 };
 
 struct SensorReading {
@@ -32,6 +38,9 @@ class World {
   void advance_to(uint64_t time_us);
   uint64_t now_us() const { return now_us_; }
   uint32_t step_us() const { return step_us_; }
+  uint32_t free_flight_step_us() const { return free_flight_step_us_; }
+  // Physics steps taken so far, fine and coarse (for the benchmark and the tests).
+  uint64_t steps_taken() const { return steps_taken_; }
 
   // What the sensors read at this instant.
   SensorReading sample();
@@ -51,8 +60,13 @@ class World {
   Imu imu_;
   BatterySensor battery_sensor_;
   Barometer barometer_;
+  // The step that may be taken from now towards `time_us`.
+  uint32_t next_step_us(uint64_t time_us) const;
+
   uint32_t step_us_;
+  uint32_t free_flight_step_us_;
   uint64_t now_us_ = 0;
+  uint64_t steps_taken_ = 0;
 };
 
 }  // namespace sim

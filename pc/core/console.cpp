@@ -43,6 +43,7 @@ constexpr RequestText kRequestTexts[] = {
     {wire::MessageType::log_start, "QR logging (sensor + telemetry)", "log start"},
     {wire::MessageType::log_stop, "QR logs stopped", "log stop"},
     {wire::MessageType::log_download, nullptr, "log download"},
+    {wire::MessageType::log_resend, nullptr, "log part resend"},
     {wire::MessageType::exit, nullptr, "exit"},
     {wire::MessageType::observable_get, nullptr, "observable table request"},
     {wire::MessageType::stream_request, nullptr, "stream request"},
@@ -106,6 +107,8 @@ Console::Console(ConsoleLog& log, ConsoleFiles files, const Setup& setup, uint32
       parameters_(setup.params, [this](Severity severity, const std::string& text) { note(severity, text); }),
       downloader_(LogDownloader::Hooks{
           [this](const wire::LogDownload& request) { link_.request(request, now_ms_); },
+          [this](const wire::LogResend& request) { link_.request(request, now_ms_); },
+          [this] { return link_.pending(wire::MessageType::log_resend); },
           [this](Severity severity, const std::string& text) { note(severity, text); },
           [this](const std::string& name) { return files_.open ? files_.open(name) : nullptr; },
           [this](const std::string& from, const std::string& to) { return files_.rename && files_.rename(from, to); }}),
@@ -212,7 +215,7 @@ void Console::act(Action action, uint32_t now_ms) {
     case Action::log_stop: link_.request(wire::LogStop{}, now_ms_); break;
     case Action::log_download:
       if (downloader_.active()) {
-        note(Severity::warning, "a log download is running already (" + downloader_.status() + ")");
+        note(Severity::warning, "a log download is running already (" + downloader_.status(now_ms_) + ")");
       } else if (!telemetry_.log_status) {
         note(Severity::warning, "the QR has not said yet what its logs hold (no log_status): try again");
       } else {
@@ -494,6 +497,8 @@ void Console::on_answer(wire::MessageType type, wire::NackReason reason, const A
     if (refused) downloader_.on_nack(reason);
     return;  // accepted: the parts say the rest
   }
+  // Refused (the QR's queue of parts to resend was full): the parts are asked for again later.
+  if (type == wire::MessageType::log_resend) return;
   if (type == wire::MessageType::stream_request || type == wire::MessageType::observable_get) {
     return streams_.on_answer(type, reason, telemetry_hz());
   }
@@ -517,7 +522,7 @@ void Console::on_gave_up(const wire::ResendEvent& event) {
   }
   // A log_download that went unanswered is asked for again by the downloader once the line is
   // quiet; it gives up by itself when nothing comes.
-  if (event.type == wire::MessageType::log_download) return;
+  if (event.type == wire::MessageType::log_download || event.type == wire::MessageType::log_resend) return;
   if (event.type == wire::MessageType::observable_get) return streams_.table_unanswered();
   note(Severity::error, std::string("no answer from the QR to the ") + text.what + " request (" +
                             std::to_string(wire::kMaxSends) + " sends)");

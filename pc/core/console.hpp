@@ -125,7 +125,7 @@ class Console {
   // smallest difference seen, so the one that waited least on its way. Empty without truth lines.
   std::optional<int64_t> sim_clock_offset_ms() const { return sim_clock_offset_ms_; }
   bool exiting() const { return exit_ != ExitState::running; }
-  std::string download_status() const { return downloader_.status(); }
+  std::string download_status() const { return downloader_.status(now_ms_); }
   size_t parameters_to_send() const { return parameters_.to_send(); }
   const ConsoleLog& log() const { return log_; }
   // Frames with a good check whose fields were out of range, and frames of types the console has

@@ -26,6 +26,7 @@ void LogDownloader::start(const wire::LogStatus& status, uint32_t now_ms) {
 void LogDownloader::begin(Kind kind, uint32_t now_ms) {
   kind_ = kind;
   last_progress_ms_ = now_ms;
+  began_ms_ = now_ms;
   const bool sensor = kind == Kind::sensor;
   const uint16_t lines = sensor ? status_.sensor_lines : status_.telemetry_lines;
   if (sensor) {
@@ -80,7 +81,12 @@ template <class Record>
 void LogDownloader::step(Download<Record>& download, wire::LogKind log, uint32_t now_ms) {
   uint16_t first = 0;
   uint16_t count = 0;
-  if (download.lines.next_request(now_ms, first, count)) hooks_.request(wire::LogDownload{0, log, first, count});
+  if (download.lines.next_download(now_ms, first, count)) hooks_.request(wire::LogDownload{0, log, first, count});
+  // Only when the last one was answered: the downloader counts what it hands out as asked.
+  if (!hooks_.resend || (hooks_.resend_pending && hooks_.resend_pending())) return;
+  wire::LogResend resend;
+  resend.log = log;
+  if (download.lines.next_resend(now_ms, resend)) hooks_.resend(resend);
 }
 
 void LogDownloader::tick(uint32_t now_ms) {
@@ -100,8 +106,8 @@ void LogDownloader::tick(uint32_t now_ms) {
     return;
   }
   if (now_ms - last_progress_ms_ >= kGiveUpMs) {
-    return stop(Severity::error,
-                "log download: no new line for " + std::to_string(kGiveUpMs / 1000) + " s, given up at " + status());
+    return stop(Severity::error, "log download: no new line for " + std::to_string(kGiveUpMs / 1000) +
+                                     " s, given up at " + status(now_ms));
   }
   if (sensor) {
     step(*sensor_, wire::LogKind::sensor, now_ms);
@@ -155,16 +161,29 @@ void LogDownloader::stop(Severity severity, const std::string& why) {
   telemetry_.reset();
 }
 
-std::string LogDownloader::status() const {
+std::string LogDownloader::status(uint32_t now_ms) const {
+  uint32_t received = 0;
+  uint32_t lines = 0;
+  const char* name = "";
   if (kind_ == Kind::sensor && sensor_) {
-    return "sensor log: " + std::to_string(sensor_->lines.received()) + " of " +
-           std::to_string(sensor_->lines.lines()) + " lines";
+    received = sensor_->lines.received();
+    lines = sensor_->lines.lines();
+    name = "sensor";
+  } else if (kind_ == Kind::telemetry && telemetry_) {
+    received = telemetry_->lines.received();
+    lines = telemetry_->lines.lines();
+    name = "telemetry";
+  } else {
+    return "";
   }
-  if (kind_ == Kind::telemetry && telemetry_) {
-    return "telemetry log: " + std::to_string(telemetry_->lines.received()) + " of " +
-           std::to_string(telemetry_->lines.lines()) + " lines";
+  std::string text = std::string(name) + " log: " + std::to_string(received) + " of " + std::to_string(lines) +
+                     " lines, " + std::to_string(lines == 0 ? 100 : received * 100 / lines) + " %";
+  const uint32_t elapsed_ms = now_ms - began_ms_;
+  if (received > 0 && elapsed_ms > 0) {
+    const uint64_t left_ms = uint64_t{lines - received} * elapsed_ms / received;
+    text += ", " + std::to_string((left_ms + 999) / 1000) + " s left";
   }
-  return "";
+  return text;
 }
 
 }  // namespace qrterm

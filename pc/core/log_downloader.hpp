@@ -1,8 +1,8 @@
 // Downloads the QR's two logs into CSV files: the sensor log, then the telemetry log. How many
 // lines each has comes from the QR's log_status; which lines are in and what to ask for next is
-// the wire library's wire::LogDownloader (one request out at a time, the missing lines asked for
-// again in spans once the parts stop coming). This class runs the two downloads one after the
-// other, gives up when nothing new arrives for a while, and writes the files.
+// the wire library's wire::LogDownloader (the log streamed once, the lost parts asked for again
+// by part while it goes on). This class runs the two downloads one after the other, gives up when
+// nothing new arrives for a while, says how far it is, and writes the files.
 #pragma once
 
 #include <stddef.h>
@@ -28,7 +28,10 @@ class LogDownloader {
   static constexpr uint32_t kGiveUpMs = 5000;
 
   struct Hooks {
-    std::function<void(const wire::LogDownload&)> request;                       // send it (acked)
+    std::function<void(const wire::LogDownload&)> request;  // send it (acked)
+    std::function<void(const wire::LogResend&)> resend;     // send it (acked)
+    // A log_resend is still unanswered: a new one would replace it, so none is made meanwhile.
+    std::function<bool()> resend_pending;
     std::function<void(Severity, const std::string&)> note;                      // tell the pilot
     std::function<std::unique_ptr<std::ostream>(const std::string& name)> open;  // a file in the log folder
     std::function<bool(const std::string& from, const std::string& to)> rename;  // a file of the log folder
@@ -57,8 +60,9 @@ class LogDownloader {
   // Asks for what is due, finishes a log when it is whole, gives up when nothing comes.
   void tick(uint32_t now_ms);
 
-  // "sensor log: 812 of 1200 lines" while running; empty when idle.
-  std::string status() const;
+  // "sensor log: 812 of 1200 lines, 67 %, 4 s left" while running (the time left at the rate
+  // so far, once there is one); empty when idle.
+  std::string status(uint32_t now_ms) const;
 
  private:
   enum class Kind : uint8_t { idle, sensor, telemetry };
@@ -82,6 +86,7 @@ class LogDownloader {
   Kind kind_ = Kind::idle;
   wire::LogStatus status_;
   uint32_t last_progress_ms_ = 0;
+  uint32_t began_ms_ = 0;   // this log's download started
   uint32_t downloads_ = 0;  // numbers the files of each download: sensor_log_1.csv, ...
   // Each holds an 8 KiB map of the lines received and 24 KiB of lines being collected: on the heap,
   // and only while downloading.

@@ -113,10 +113,13 @@ void Flight<Chain>::run_stream() {
 template <SignalChain Chain>
 void Flight<Chain>::send_download_parts() {
   if (!log_.downloading()) return;
-  // Room is kept for a telemetry period (attitude, rates, a slow group, a task figure) and a reply.
-  constexpr size_t kTxReserve = 64;
+  // Parts queue only this deep: more than the line sends in a period (11.5 bytes at 1 kHz, 23 at
+  // 500 Hz), so it never idles, but an ack queued behind them leaves within a few ms. A deeper
+  // queue (the whole ring) held acks 20 ms, and a bad line's log_resend requests, one out at a
+  // time, could not keep up with the parts it lost.
+  constexpr size_t kPartBacklog = 48;
   log_.send_parts(4, [this](const wire::FrameBytes& frame) {
-    if (tx_.space() < size_t{frame.size} + kTxReserve) return false;
+    if (tx_.size() + size_t{frame.size} > kPartBacklog) return false;
     send(frame);
     return true;
   });

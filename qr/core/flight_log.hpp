@@ -11,6 +11,7 @@
 #include <common/nack_reason.hpp>
 #include <common/requests.hpp>
 #include <qr/core/board.hpp>
+#include <qr/core/log_repairs.hpp>
 #include <qr/core/record_log.hpp>
 
 namespace qr {
@@ -31,6 +32,7 @@ class FlightLog {
   wire::NackReason start(uint8_t logs) {
     if (sensor_.capacity() == 0) return wire::NackReason::not_supported;  // no log memory
     downloading_ = false;
+    repairs_.clear();
     full_ = false;
     if ((logs & wire::kLogSensor) != 0) {
       sensor_.clear();
@@ -59,6 +61,13 @@ class FlightLog {
     return wire::NackReason::none;
   }
 
+  // Parts asked for again: sent before the stream's next parts (log_repairs.hpp).
+  wire::NackReason resend(const wire::LogResend& r) {
+    if (logging()) return wire::NackReason::busy;
+    if (r.first_line >= lines(r.log)) return wire::NackReason::bad_value;
+    return repairs_.add(r) ? wire::NackReason::none : wire::NackReason::busy;
+  }
+
   bool logging() const { return sensor_on_ || telemetry_on_; }
   void write(const wire::SensorLogRecord& s, const wire::TelemetryLogRecord& t) {
     if (sensor_on_ && !sensor_.append(s)) full_ = true;
@@ -69,7 +78,17 @@ class FlightLog {
   // link has no room), at most `max_parts` this call.
   template <class Send>
   void send_parts(uint8_t max_parts, Send&& send) {
-    for (uint8_t n = 0; n < max_parts && downloading_; ++n) {
+    uint8_t n = 0;
+    LogRepairs::Part repair{};
+    const auto lines_of = [this](wire::LogKind log) { return lines(log); };
+    for (; n < max_parts && repairs_.next(parts_per_line, lines_of, repair); ++n) {
+      const wire::FrameBytes frame = repair.log == wire::LogKind::sensor
+                                         ? wire::encode(sensor_.part(repair.line, repair.part))
+                                         : wire::encode(telemetry_.part(repair.line, repair.part));
+      if (!send(frame)) return;
+      repairs_.sent();
+    }
+    for (; n < max_parts && downloading_; ++n) {
       const bool sensor = kind_ == wire::LogKind::sensor;
       const uint8_t parts = sensor ? wire::SensorLogRecord::kParts : wire::TelemetryLogRecord::kParts;
       const wire::FrameBytes frame = sensor ? wire::encode(sensor_.part(next_line_, next_part_))
@@ -92,9 +111,17 @@ class FlightLog {
   bool full() const { return full_; }
   // A part of a telemetry line as a download sends it: what a line that came whole must equal.
   wire::TelemetryLogPart telemetry_part(uint16_t line, uint8_t part) const { return telemetry_.part(line, part); }
-  bool downloading() const { return downloading_; }
+  // A stream or parts asked for again are still to send.
+  bool downloading() const { return downloading_ || !repairs_.empty(); }
 
  private:
+  uint16_t lines(wire::LogKind log) const {
+    return log == wire::LogKind::sensor ? sensor_.lines() : telemetry_.lines();
+  }
+  static uint8_t parts_per_line(wire::LogKind log) {
+    return log == wire::LogKind::sensor ? wire::SensorLogRecord::kParts : wire::TelemetryLogRecord::kParts;
+  }
+
   RecordLog<wire::SensorLogRecord> sensor_;
   RecordLog<wire::TelemetryLogRecord> telemetry_;
   bool sensor_on_ = false;
@@ -106,6 +133,7 @@ class FlightLog {
   uint16_t next_line_ = 0;
   uint16_t end_line_ = 0;
   uint8_t next_part_ = 0;
+  LogRepairs repairs_;
 };
 
 }  // namespace qr

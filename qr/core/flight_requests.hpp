@@ -72,6 +72,8 @@ struct FlightRequests {
   void operator()(const wire::LogStart& l) { log(f.log_.start(l.logs)); }
   void operator()(const wire::LogStop&) { log(f.log_.stop()); }
   void operator()(const wire::LogDownload& d) { log(f.log_.download(d)); }
+  // No log_status after it: a bad line brings many, and the logs' sizes have not changed.
+  void operator()(const wire::LogResend& r) { answer = f.log_.resend(r); }
 
  private:
   void log(NackReason reason) {

@@ -11,8 +11,10 @@
 
 #include <chrono>
 #include <cstdio>
+#include <fstream>
 #include <functional>
 #include <map>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -360,6 +362,41 @@ TEST(FaultInjection, AtMostOneGoodFrameIsLostAfterAGarbageBurst) {
   // bursts here are cut-off frames, so about 1 in 512 bursts may give a false frame; more would
   // mean the parser reads garbage worse than the check allows.
   EXPECT_LT(link.uplink.accepted_false() + link.downlink.accepted_false(), bursts / 256);
+}
+
+// A count as docs/protocol.md writes it: thousands apart by a space ("245 440").
+std::string grouped(const std::string& digits) {
+  std::string out;
+  for (size_t i = 0; i < digits.size(); ++i) {
+    if (i > 0 && (digits.size() - i) % 3 == 0) out += ' ';
+    out += digits[i];
+  }
+  return out;
+}
+
+// Runs last (tests run in the order they are written): the figures section 10 quotes are the ones
+// the runs above measured, so the document never keeps a figure the test no longer gets.
+TEST(FaultInjection, TheProtocolDocumentQuotesTheseFigures) {
+  for (const char* key : {"corrupted_on_line", "acked_requests", "garbage_bursts", "garbage_frames_accepted"}) {
+    if (figures.values.count(key) == 0) GTEST_SKIP() << "the runs above were filtered out";
+  }
+  std::ifstream in(QR_PROTOCOL_DOC);
+  ASSERT_TRUE(in.good()) << QR_PROTOCOL_DOC;
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string doc = text.str();
+  const size_t at = doc.find("Measured by the fault-injection test");
+  ASSERT_NE(at, std::string::npos);
+  std::string section = doc.substr(at, doc.find("\n## ", at) - at);
+  for (char& c : section) c = c == '\n' ? ' ' : c;
+  const auto quoted = [&](const std::string& key, const std::string& after) {
+    const std::string phrase = grouped(figures.values.at(key)) + " " + after;
+    EXPECT_NE(section.find(phrase), std::string::npos) << "docs/protocol.md section 10 should say \"" << phrase << "\"";
+  };
+  quoted("corrupted_on_line", "frames damaged");
+  quoted("acked_requests", "requests");
+  quoted("garbage_bursts", "garbage bursts");
+  quoted("garbage_frames_accepted", "false frames");
 }
 
 int main(int argc, char** argv) {

@@ -4,12 +4,17 @@
 #include <stdint.h>
 
 #include <common/frame_parser.hpp>
+#include <common/log_downloader.hpp>
 #include <common/messages.hpp>
 #include <common/parameter_table.hpp>
 #include <common/request_dedup.hpp>
 #include <common/resend_queue.hpp>
 
 namespace {
+
+// The console's download logic is common/ too: it must build freestanding (8 KiB of line bits,
+// so not on the stack).
+wire::LogDownloader<wire::SensorLogRecord, 1024> download;
 
 struct EveryMessage {
   uint32_t handled = 0;
@@ -38,6 +43,7 @@ uint32_t wire_freestanding_check(const uint8_t* bytes, size_t length, uint32_t n
   wire::RequestDedup dedup;
   wire::LogLineAssembler<wire::SensorLogRecord> sensor;
   wire::LogLineAssembler<wire::TelemetryLogRecord> telemetry;
+  download.begin(100);
   EveryMessage handler;
   uint32_t total = 0;
   for (size_t i = 0; i < length; ++i) {
@@ -52,8 +58,11 @@ uint32_t wire_freestanding_check(const uint8_t* bytes, size_t length, uint32_t n
       wire::TelemetryLogPart tp;
       wire::TelemetryLogRecord tr;
       if (wire::decode(frame, tp)) telemetry.add(tp, tr);
+      if (wire::decode(frame, sp)) download.on_part(sp, now_ms, [&](const wire::SensorLogRecord&) { ++total; });
     });
   }
+  wire::LogResend resend;
+  if (download.next_resend(now_ms, resend)) total += queue.submit(resend, now_ms).size;
   const wire::FrameBytes sent[] = {queue.submit(wire::ModeChange{}, now_ms), queue.submit(wire::ParamSet{}, now_ms),
                                    queue.submit(wire::ParamGet{}, now_ms),   queue.submit(wire::LogStart{}, now_ms),
                                    queue.submit(wire::LogStop{}, now_ms),    queue.submit(wire::LogDownload{}, now_ms),

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <functional>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -55,6 +56,14 @@ inline wire::TelemetryLogRecord golden_telemetry_record() {
   return r;
 }
 
+// G35's request: the parts named by their bit numbers (docs/protocol.md, log_resend).
+inline wire::LogResend log_resend(uint8_t seq, wire::LogKind log, uint16_t first_line,
+                                  std::initializer_list<size_t> bits) {
+  wire::LogResend r{seq, log, first_line, {}};
+  for (size_t bit : bits) r.want(bit);
+  return r;
+}
+
 inline std::vector<GoldenFrame> golden_frames() {
   using namespace wire;
   DebugText text;
@@ -98,6 +107,7 @@ inline std::vector<GoldenFrame> golden_frames() {
       golden("G33", ObservableSamples{sample_header(0, 5), {1234, 1500, 1250, 1500}},
              "4D E8 05 D2 04 DC 05 E2 04 DC 05 1B"),
       golden("G34", Nack{MessageType::stream_request, 9, NackReason::over_budget}, "4D 82 41 09 0C B2"),
+      golden("G35", log_resend(6, LogKind::telemetry, 120, {3, 9, 34}), "4D 6C 06 01 78 00 08 02 00 00 04 F3"),
   };
 }
 

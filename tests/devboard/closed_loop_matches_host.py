@@ -22,7 +22,7 @@ import subprocess
 import sys
 import tempfile
 
-NOT_FLIGHT = {"wall_seconds", "speedup", "cpu_seconds"}
+NOT_FLIGHT = {"wall_seconds", "speedup", "cpu_seconds", "speedup_cpu"}
 
 
 def fly(qrsim, scenario, trace, elf=None):

@@ -30,6 +30,7 @@ wire::FrameBytes submit(wire::ResendQueue& queue, uint8_t which, uint8_t value, 
                                               value,
                                               {value, wire::kNoObservable, wire::kNoObservable, wire::kNoObservable}},
                           now);
+    case 8: return queue.submit(wire::LogResend{0, wire::LogKind::telemetry, value, {value, value, 0, 0, value}}, now);
     default: return queue.submit(wire::Exit{}, now);
   }
 }

@@ -549,14 +549,36 @@ TEST(Console, LogDownloadWritesBothLogsAsCsvAndAsksAgainForLostLines) {
   EXPECT_EQ(sensor.rfind("line,time_us,gyro_x", 0), 0u);
   EXPECT_NE(sensor.find("\r\n7,7000,-7,"), std::string::npos);
   EXPECT_NE(sensor.find("\r\n8,8000,-8,"), std::string::npos);
+  // Part 2 of lines 7 and 8, by part: bits 2 and 5 + 2 of a log_resend from line 7.
   const auto again = std::find_if(b.qr.requests.begin(), b.qr.requests.end(), [](const wire::Frame& f) {
-    wire::LogDownload d;
-    return wire::decode(f, d) && d.first_line == 7 && d.count == 2;
+    wire::LogResend r;
+    if (!wire::decode(f, r) || r.log != wire::LogKind::sensor || r.first_line != 7) return false;
+    for (size_t bit = 0; bit < wire::kLogResendMaskBytes * 8; ++bit) {
+      if (r.wants(bit) != (bit == 2 || bit == 7)) return false;
+    }
+    return true;
   });
-  EXPECT_NE(again, b.qr.requests.end()) << "lines 7 and 8 asked for again";
+  EXPECT_NE(again, b.qr.requests.end()) << "part 2 of lines 7 and 8 asked for again";
+  EXPECT_EQ(count_requests(b, wire::MessageType::log_download), 2u) << "each log streamed once";
   const std::string& telemetry = b.written["telemetry_log_1.csv"];
   EXPECT_NE(telemetry.find("\r\n0,0,2,0,"), std::string::npos) << telemetry;
   EXPECT_TRUE(b.logged("sensor log: 40 lines -> sensor_log_1.csv"));
+}
+
+TEST(Console, LogDownloadShowsLinesPercentAndTimeLeft) {
+  Bench b;
+  b.connect();
+  for (uint16_t line = 0; line < 400; ++line) b.qr.sensor_log[line] = sensor_line(line);
+  b.run(200);
+  // Line 300 on is lost the first time: the download stops there for a while.
+  int dropped = 0;
+  b.qr.drop_log_part = [&dropped](uint16_t line, uint8_t) { return line >= 300 && dropped++ < 500; };
+  b.key('g');
+  ASSERT_TRUE(b.run_until([&] { return b.console.download_status().find("sensor log: 300 of 400") == 0; }, 5000))
+      << b.console.download_status();
+  const std::string status = b.console.download_status();
+  EXPECT_NE(status.find("lines, 75 %, "), std::string::npos) << status;
+  EXPECT_NE(status.find(" s left"), std::string::npos) << status;
 }
 
 TEST(Console, EmptyLogsAreNotDownloaded) {
@@ -593,7 +615,7 @@ TEST(Console, LogDownloadGivesUpWhenNothingComes) {
   b.run(qrterm::LogDownloader::kGiveUpMs + 100);
   EXPECT_TRUE(b.logged("no new line for 5 s, given up at sensor log: 0 of 10 lines"));
   EXPECT_EQ(b.console.download_status(), "");
-  EXPECT_GE(count_requests(b, wire::MessageType::log_download), 5u) << "asked again while waiting";
+  EXPECT_GE(count_requests(b, wire::MessageType::log_resend), 5u) << "asked again while waiting";
 }
 
 TEST(Console, QrRefusalOfADownloadSaysWhatToDo) {

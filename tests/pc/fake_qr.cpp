@@ -49,6 +49,16 @@ struct FakeQr::Handler {
       qr.send_log(d.log, d.first_line, d.count);
     }
   }
+  void operator()(const wire::LogResend& r) {
+    const size_t lines = r.log == wire::LogKind::sensor ? qr.sensor_log.size() : qr.telemetry_log.size();
+    if (qr.logging) {
+      answer = wire::NackReason::busy;
+    } else if (r.first_line >= lines) {
+      answer = wire::NackReason::bad_value;
+    } else {
+      qr.resend_log_parts(r);
+    }
+  }
   void operator()(const wire::Exit&) {
     qr.exited = true;
     qr.mode = flight_mode(qr.mode) ? wire::Mode::panic : wire::Mode::safe;
@@ -191,6 +201,28 @@ void FakeQr::send_log(wire::LogKind log, uint16_t first, uint16_t count) {
     send_lines(sensor_log, first, count, drop_log_part, out);
   } else {
     send_lines(telemetry_log, first, count, drop_log_part, out);
+  }
+}
+
+template <class Record>
+static void resend_parts(const std::map<uint16_t, Record>& log, const wire::LogResend& r,
+                         const std::function<bool(uint16_t, uint8_t)>& drop,
+                         const std::function<void(const wire::FrameBytes&)>& out) {
+  for (size_t bit = 0; bit < wire::kLogResendMaskBytes * 8; ++bit) {
+    if (!r.wants(bit)) continue;
+    const auto found = log.find(static_cast<uint16_t>(r.first_line + bit / Record::kParts));
+    const uint8_t part = static_cast<uint8_t>(bit % Record::kParts);
+    if (found == log.end() || (drop && drop(found->first, part))) continue;
+    out(wire::encode(wire::make_log_part(found->second, part)));
+  }
+}
+
+void FakeQr::resend_log_parts(const wire::LogResend& r) {
+  const auto out = [this](const wire::FrameBytes& frame) { send(frame); };
+  if (r.log == wire::LogKind::sensor) {
+    resend_parts(sensor_log, r, drop_log_part, out);
+  } else {
+    resend_parts(telemetry_log, r, drop_log_part, out);
   }
 }
 

@@ -66,6 +66,7 @@ class FakeQr {
   friend struct Handler;
 
   wire::NackReason apply(const wire::Frame& frame);
+  void resend_log_parts(const wire::LogResend& r);
   wire::NackReason change_mode(wire::Mode wanted);
   void send(const wire::FrameBytes& frame);
   void send_telemetry();

@@ -2,6 +2,7 @@
 // telemetry and engine values out, with a scripted signal chain.
 #include <gtest/gtest.h>
 
+#include <set>
 #include <string>
 #include <vector>
 
@@ -521,6 +522,63 @@ TEST_F(FlightLogTest, DownloadOfLinesThatDoNotExistIsRefused) {
   run_ms(5);
   ASSERT_EQ(got<wire::Nack>().size(), 1u);
   EXPECT_EQ(got<wire::Nack>()[0].reason, wire::NackReason::bad_value);
+}
+
+TEST_F(FlightLogTest, ResentPartsGoOutBeforeTheStreamGoesOnWhereItWas) {
+  send(wire::LogStart{++seq, wire::kLogSensor | wire::kLogTelemetry});
+  run_ms(600);
+  send(wire::LogStop{++seq});
+  run_ms(20);
+  ASSERT_GT(status().telemetry_lines, 20);
+  send(wire::LogDownload{++seq, wire::LogKind::telemetry, 0, 0});
+  run_ms(10);  // the stream is under way
+  const size_t before = got<wire::TelemetryLogPart>().size();
+  wire::LogResend again{++seq, wire::LogKind::telemetry, 2, {}};
+  again.want(3);      // line 2, part 3
+  again.want(7 + 6);  // line 3, part 6
+  send(again);
+  run_ms(300);
+  const auto parts = got<wire::TelemetryLogPart>();
+  ASSERT_GT(parts.size(), before + 2);
+  // Right after the ack: the two parts asked for, then the stream on from where it was.
+  size_t first = before;
+  while (first < parts.size() && !(parts[first].line == 2 && parts[first].part == 3)) ++first;
+  ASSERT_LT(first + 2, parts.size()) << "line 2 part 3 was sent again";
+  EXPECT_EQ(parts[first + 1].line, 3);
+  EXPECT_EQ(parts[first + 1].part, 6);
+  const wire::TelemetryLogPart& next = parts[first + 2];
+  const wire::TelemetryLogPart& last = parts[first - 1];
+  EXPECT_EQ(uint32_t{next.line} * 7 + next.part, uint32_t{last.line} * 7 + last.part + 1u) << "the stream went on";
+  run_ms(2000);
+  std::set<uint32_t> seen;
+  for (const auto& p : got<wire::TelemetryLogPart>()) seen.insert(uint32_t{p.line} * 7 + p.part);
+  EXPECT_EQ(seen.size(), size_t{status().telemetry_lines} * 7) << "and ended whole";
+}
+
+TEST_F(FlightLogTest, ResendRequestsBeyondEightOrThePartsAreBusyOrRefused) {
+  send(wire::ParamSet{++seq, static_cast<uint8_t>(wire::ParamId::log_divider), 1});
+  send(wire::LogStart{++seq, wire::kLogSensor});
+  run_ms(200);
+  send(wire::LogResend{++seq, wire::LogKind::sensor, 0, {1, 0, 0, 0, 0}});
+  run_ms(5);
+  EXPECT_EQ(got<wire::Nack>().back().reason, wire::NackReason::busy) << "while logging";
+  send(wire::LogStop{++seq});
+  run_ms(20);
+  const uint16_t total = status().sensor_lines;
+  send(wire::LogResend{++seq, wire::LogKind::sensor, total, {1, 0, 0, 0, 0}});
+  run_ms(5);
+  EXPECT_EQ(got<wire::Nack>().back().reason, wire::NackReason::bad_value) << "no such line";
+  ASSERT_GE(total, 8) << "eight lines to ask for";
+  // Nine at once, each for every part of eight lines (40 parts: longer to send than the nine take
+  // to arrive): the ninth finds no room.
+  for (int i = 0; i < 9; ++i) {
+    send(wire::LogResend{++seq, wire::LogKind::sensor, 0, {0xFF, 0xFF, 0xFF, 0xFF, 0xFF}});
+  }
+  run_ms(20);
+  const auto nacks = got<wire::Nack>();
+  ASSERT_EQ(nacks.size(), 3u);
+  EXPECT_EQ(nacks.back().reason, wire::NackReason::busy);
+  EXPECT_EQ(nacks.back().seq, seq);
 }
 
 TEST_F(FlightLogTest, AFullLogStopsKeepingLinesAndSaysSo) {

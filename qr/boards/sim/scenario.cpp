@@ -429,7 +429,9 @@ ScenarioResult run_scenario(const ScenarioScript& script, const RunOptions& opti
   f.push_back({"speedup", sim_seconds / wall});
   // CPU time of this process: on a machine busy with other work the wall figures understate
   // what the simulator does; this one does not.
-  f.push_back({"cpu_seconds", static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC});
+  const double cpu = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
+  f.push_back({"cpu_seconds", cpu});
+  f.push_back({"speedup_cpu", cpu > 0 ? sim_seconds / cpu : kNotMeasured});
   f.push_back({"control_hz", static_cast<double>(qr::kControlHz)});
   f.push_back({"seed", static_cast<double>(options.seed)});
   f.push_back({"mass_scale", flown.mass});

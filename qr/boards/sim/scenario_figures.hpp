@@ -19,6 +19,7 @@ inline constexpr FigureSpec kFigureTable[] = {
     {"wall_seconds", "wall-clock time of the run"},
     {"speedup", "sim_seconds / wall_seconds"},
     {"cpu_seconds", "CPU time of the process (the fair benchmark on a busy machine)"},
+    {"speedup_cpu", "sim_seconds / cpu_seconds (the speed-up a busy machine measures reproducibly)"},
     {"control_hz", "the build's control rate"},
     {"seed", "the seed of every random source"},
     {"mass_scale", "vehicle mass over the vehicle file's (scenario modifier times sweep draw)"},
