@@ -240,10 +240,17 @@ bool run_soak(const SoakOptions& options) {
         break;
       case Phase::download: {
         pilot.set_sticks(mode == wire::Mode::full_control ? hover(1) : wire::Control{});
+        // As the console does (pc/core/log_downloader.cpp): the stream once, then the lost parts
+        // by part while it goes on, one log_resend at a time.
+        const uint32_t now_ms = static_cast<uint32_t>(now_us / 1000);
         uint16_t first = 0, count = 0;
-        if (!pilot.request_pending(wire::MessageType::log_download) &&
-            downloader.next_request(static_cast<uint32_t>(now_us / 1000), first, count)) {
+        if (downloader.next_download(now_ms, first, count)) {
           pilot.request(wire::LogDownload{0, wire::LogKind::telemetry, first, count});
+        }
+        wire::LogResend resend;
+        resend.log = wire::LogKind::telemetry;
+        if (!pilot.request_pending(wire::MessageType::log_resend) && downloader.next_resend(now_ms, resend)) {
+          pilot.request(resend);
         }
         if (downloader.done()) enter(Phase::done);
         if (t - download_start > kDownloadLimitS) {
