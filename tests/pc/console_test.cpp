@@ -691,6 +691,27 @@ TEST(Console, PushKeyNeedsTheSimulator) {
   EXPECT_TRUE(sim.logged("sim: error bad number 'x'"));
 }
 
+// The reset key (a newcomer's vehicle lay at 48 degrees after a panic, and only a restart of the
+// simulator set it upright): a reset command on the truth channel, "no simulator" on a real port.
+TEST(Console, ResetKeySetsTheSimulatedQrUpright) {
+  Bench real;
+  real.key('v');
+  EXPECT_TRUE(real.logged("no simulator"));
+  EXPECT_TRUE(real.console.take_sim_commands().empty());
+
+  qrterm::Console::Setup setup;
+  setup.simulator = true;
+  Bench sim(setup);
+  sim.key('v');
+  const std::vector<std::string> commands = sim.console.take_sim_commands();
+  ASSERT_EQ(commands.size(), 1u);
+  EXPECT_EQ(commands[0], "reset\n");
+  sim.console.truth_line("ok reset");
+  EXPECT_TRUE(sim.logged("sim: the QR stands upright"));
+  sim.console.truth_line("error reset: the engines are running (safe first)");
+  EXPECT_TRUE(sim.logged("sim: error reset: the engines are running"));
+}
+
 // One of every message the QR may send, as the wire library lists them: the console must have a
 // use for each (a new message type added to the wire shows up here first).
 template <class... Msgs>
