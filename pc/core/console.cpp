@@ -407,7 +407,9 @@ void Console::print_tasks() {
     note(Severity::warning, "no task figures from the QR yet");
     return;
   }
-  note(Severity::info, "QR task   cycles: mean    max overruns  (instructions on the devboard)");
+  // The unit is the board's cycle counter: on the simulator that is the host's clock in ns.
+  note(Severity::info, simulator_ ? "QR task     ns: mean    max overruns  (the host's ns: the simulator's board)"
+                                  : "QR task   cycles: mean    max overruns  (instructions on the devboard)");
   for (const auto& [number, task] : telemetry_.tasks) {
     char line[64];
     std::snprintf(line, sizeof line, "  %-14s %6u %6u %8u", task_name(number).c_str(), task.mean, task.max,

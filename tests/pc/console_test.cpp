@@ -661,6 +661,22 @@ TEST(Console, TaskTableIsPrintedOnRequest) {
   const qrterm::LogLine* line = b.log.find_last("mixer");
   ASSERT_NE(line, nullptr);
   EXPECT_NE(line->text.find("212    530        3"), std::string::npos) << line->text;
+  EXPECT_TRUE(b.logged("cycles: mean    max overruns  (instructions on the devboard)")) << "the unit";
+  // Every task the QR reports has its name, none a bare number.
+  for (uint8_t task = 0; task < wire::kTaskCount; ++task) {
+    const wire::FrameBytes each = wire::encode(wire::TelemetryTask{task, 1, 2, 0});
+    b.console.receive(each.bytes, each.size, b.now);
+  }
+  b.key('b');
+  for (uint8_t task = 0; task < wire::kTaskCount; ++task) EXPECT_TRUE(b.logged(wire::kTaskNames[task])) << +task;
+
+  // On the simulator the board's counter is the host's clock: the unit says so.
+  qrterm::Console::Setup setup;
+  setup.simulator = true;
+  Bench sim(setup);
+  sim.console.receive(frame.bytes, frame.size, sim.now);
+  sim.key('b');
+  EXPECT_TRUE(sim.logged("ns: mean    max overruns  (the host's ns: the simulator's board)"));
 }
 
 // The push key: a command for the simulator's truth channel when the console started qrsim,
