@@ -9,6 +9,8 @@
 #include <pc/core/console.hpp>
 #include <pc/core/console_log.hpp>
 #include <pc/core/log_room.hpp>
+#include <pc/core/param_file.hpp>
+#include <pc/core/parameter_editor.hpp>
 
 namespace qrterm {
 namespace {
@@ -85,6 +87,23 @@ TEST(LogRoom, SaysTheRoomAndWarnsOnceBeforeTheLogFills) {
   now.flags = wire::kLogStatusFull;
   EXPECT_EQ(log_filling_warning(wire::LogStatus{.capacity_lines = 1820}, now, 10, 1000), "")
       << "full already: the console's log-full warning says it";
+}
+
+// Gains moved by stray keys came back at the next start with no way back but editing the file: the
+// parameter screen's ! puts every parameter to its default (what differs is sent), and what
+// changed since the file is said at exit.
+TEST(ParameterEditor, EveryParameterBackToItsDefault) {
+  wire::ParameterValues file;
+  ASSERT_EQ(file.set(static_cast<uint8_t>(wire::ParamId::yaw_p), 310 * 16), wire::NackReason::none);  // Q4
+  ParameterSync sync(file, [](Severity, const std::string&) {});
+  const ParameterEditor editor(file, "qrterm-params.txt");
+  EXPECT_EQ(editor.reset_all_defaults(sync), 1u) << "only yaw_p differed from its default";
+  for (const wire::ParameterSpec& spec : wire::kParameterTable)
+    EXPECT_EQ(sync.wanted().get(spec.id), spec.default_value) << spec.name;
+  EXPECT_TRUE(sync.pending(wire::ParamId::yaw_p)) << "sent to the QR";
+  EXPECT_EQ(editor.reset_all_defaults(sync), 0u);
+  EXPECT_EQ(describe_changes(file, sync.wanted()), "yaw_p 310 -> 300");
+  EXPECT_EQ(describe_changes(file, file), "");
 }
 
 }  // namespace
