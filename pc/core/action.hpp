@@ -21,6 +21,8 @@ enum class Action : uint8_t {
   height_hold,  // toggles: height hold from full control, full control from height hold
   lift_up,
   lift_down,
+  lift_up_coarse,  // ten steps at once: from the ground to a hover in a few presses
+  lift_down_coarse,
   roll_left,
   roll_right,
   pitch_down,  // nose down: the stick pushed forward
@@ -43,7 +45,8 @@ enum class Action : uint8_t {
   log_download,
   params_read,
   tasks_print,
-  sim_push,  // the simulator pushes the QR (0.3 N m about roll for 0.1 s); not on a real QR
+  sim_push,   // the simulator pushes the QR (0.3 N m about roll for 0.1 s); not on a real QR
+  sim_reset,  // the simulator sets the vehicle down upright (after a crash); not on a real QR
   help,
 };
 
@@ -52,10 +55,11 @@ struct ActionSpec {
   const char* text;
 };
 
-// Texts stay within kActionTextMax characters: the help overlay shows two columns in 80.
+// Texts stay within kActionTextMax characters: at 80x24 the help overlay shows three columns under
+// the engine rows, so the pilot still sees mode, link and engines while reading it.
 inline constexpr ActionSpec kActions[] = {
-    {Action::abort, "abort: panic (twice: exit)"},
-    {Action::exit, "exit: QR to safe, then quit"},
+    {Action::abort, "panic now (2x: exit)"},
+    {Action::exit, "exit (QR to safe)"},
     {Action::mode_safe, "mode safe"},
     {Action::mode_panic, "mode panic"},
     {Action::mode_manual, "mode manual"},
@@ -65,10 +69,12 @@ inline constexpr ActionSpec kActions[] = {
     {Action::height_hold, "height hold on/off"},
     {Action::lift_up, "lift up"},
     {Action::lift_down, "lift down"},
+    {Action::lift_up_coarse, "lift up x10"},
+    {Action::lift_down_coarse, "lift down x10"},
     {Action::roll_left, "roll left"},
     {Action::roll_right, "roll right"},
-    {Action::pitch_down, "pitch down (nose down)"},
-    {Action::pitch_up, "pitch up (nose up)"},
+    {Action::pitch_down, "pitch: nose down"},
+    {Action::pitch_up, "pitch: nose up"},
     {Action::yaw_left, "yaw left"},
     {Action::yaw_right, "yaw right"},
     {Action::trims_center, "all trims to zero"},
@@ -84,14 +90,15 @@ inline constexpr ActionSpec kActions[] = {
     {Action::c2_down, "C2 (filter bias) /2"},
     {Action::log_start, "QR logging start"},
     {Action::log_stop, "QR logging stop"},
-    {Action::log_download, "QR logs download (CSV)"},
+    {Action::log_download, "download QR logs"},
     {Action::params_read, "read parameters back"},
-    {Action::tasks_print, "QR task cycles to the log"},
-    {Action::sim_push, "sim: push the QR (roll)"},
+    {Action::tasks_print, "task cycles to log"},
+    {Action::sim_push, "sim: push (roll)"},
+    {Action::sim_reset, "sim: set upright"},
     {Action::help, "help on/off"},
 };
 
-inline constexpr size_t kActionTextMax = 30;
+inline constexpr size_t kActionTextMax = 20;
 
 const char* action_text(Action action);
 

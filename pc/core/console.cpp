@@ -8,6 +8,7 @@
 #include <pc/core/gain_steps.hpp>
 #include <pc/core/hex_log.hpp>
 #include <pc/core/key_map.hpp>
+#include <pc/core/log_room.hpp>
 #include <pc/core/mode_names.hpp>
 #include <pc/core/telemetry_csv.hpp>
 
@@ -103,7 +104,8 @@ struct Console::Receiver {
 };
 
 Console::Console(ConsoleLog& log, ConsoleFiles files, const Setup& setup, uint32_t now_ms)
-    : log_(log), files_(std::move(files)), start_ms_(now_ms), now_ms_(now_ms), link_(now_ms, setup.first_seq),
+    : log_(log), files_(std::move(files)), rx_hex_part_bytes_(setup.rx_hex_part_bytes), start_ms_(now_ms),
+      now_ms_(now_ms), link_(now_ms, setup.first_seq),
       parameters_(setup.params, [this](Severity severity, const std::string& text) { note(severity, text); }),
       downloader_(LogDownloader::Hooks{
           [this](const wire::LogDownload& request) { link_.request(request, now_ms_); },
@@ -127,6 +129,10 @@ void Console::note(Severity severity, const std::string& text) { log_.add(now_ms
 void Console::truth_line(const std::string& line) {
   if (line.rfind("error", 0) == 0) {
     note(Severity::warning, "sim: " + line);
+    return;
+  }
+  if (line.rfind("ok reset", 0) == 0) {
+    note(Severity::info, "sim: the QR stands upright and still; calibrate (3) again if the attitude is off");
     return;
   }
   if (line.rfind("truth ", 0) != 0) return;  // "ok push" and anything newer
@@ -155,6 +161,16 @@ std::vector<std::string> Console::take_sim_commands() {
   std::vector<std::string> commands;
   commands.swap(sim_commands_);
   return commands;
+}
+
+uint32_t Console::log_divider() const {
+  return static_cast<uint32_t>(parameters_.wanted().get(wire::ParamId::log_divider));
+}
+
+uint32_t Console::control_hz() const {
+  // The QR says its rate with the observable table; before that, the default rate.
+  const uint16_t said = streams_.catalog().control_hz();
+  return said != 0 ? said : kDefaultControlHz;
 }
 
 uint32_t Console::telemetry_hz() const {
@@ -211,7 +227,11 @@ void Console::act(Action action, uint32_t now_ms) {
       const bool holding = telemetry_.attitude && telemetry_.attitude->mode == wire::Mode::height_hold;
       return request_mode(holding ? wire::Mode::full_control : wire::Mode::height_hold);
     }
-    case Action::log_start: link_.request(wire::LogStart{0, wire::kLogSensor | wire::kLogTelemetry}, now_ms_); break;
+    case Action::log_start:
+      link_.request(wire::LogStart{0, wire::kLogSensor | wire::kLogTelemetry}, now_ms_);
+      if (telemetry_.log_status)
+        note(Severity::info, "QR log: " + log_room_text(*telemetry_.log_status, log_divider(), control_hz()));
+      break;
     case Action::log_stop: link_.request(wire::LogStop{}, now_ms_); break;
     case Action::log_download:
       if (downloader_.active()) {
@@ -234,6 +254,14 @@ void Console::act(Action action, uint32_t now_ms) {
       } else {
         sim_commands_.emplace_back("push 0.3 0 0 0.1\n");
         note(Severity::info, "sim: push 0.3 N m about roll for 0.1 s");
+      }
+      break;
+    case Action::sim_reset:
+      if (!simulator_) {
+        note(Severity::warning, "no simulator: v sets upright only a QR the console started in qrsim");
+      } else {
+        sim_commands_.emplace_back("reset\n");
+        note(Severity::info, "sim: asking to set the QR down upright (engines must be off)");
       }
       break;
     default: break;
@@ -261,6 +289,12 @@ bool Console::screen_key(Key key) {
     case ScreenAction::param_step_up: editor_.step(parameters_, 1); break;
     case ScreenAction::param_type: prompt_ = Prompt{PromptKind::value, ""}; break;
     case ScreenAction::param_default: editor_.reset_default(parameters_); break;
+    case ScreenAction::param_all_defaults: {
+      const size_t changed = editor_.reset_all_defaults(parameters_);
+      note(Severity::info, changed == 0 ? std::string("every parameter is at its default already")
+                                        : "every parameter to its default: " + std::to_string(changed) + " changed");
+      break;
+    }
     case ScreenAction::param_save: prompt_ = Prompt{PromptKind::save, editor_.file_name()}; break;
     case ScreenAction::param_load: prompt_ = Prompt{PromptKind::load, ""}; break;
   }
@@ -383,7 +417,9 @@ void Console::print_tasks() {
     note(Severity::warning, "no task figures from the QR yet");
     return;
   }
-  note(Severity::info, "QR task   cycles: mean    max overruns  (instructions on the devboard)");
+  // The unit is the board's cycle counter: on the simulator that is the host's clock in ns.
+  note(Severity::info, simulator_ ? "QR task     ns: mean    max overruns  (the host's ns: the simulator's board)"
+                                  : "QR task   cycles: mean    max overruns  (instructions on the devboard)");
   for (const auto& [number, task] : telemetry_.tasks) {
     char line[64];
     std::snprintf(line, sizeof line, "  %-14s %6u %6u %8u", task_name(number).c_str(), task.mean, task.max,
@@ -426,11 +462,24 @@ void Console::joystick_back(uint32_t now_ms) {
 
 void Console::receive(const uint8_t* data, size_t count, uint32_t now_ms) {
   set_time(now_ms);
-  if (files_.rx_hex != nullptr && count > 0) {
-    *files_.rx_hex << hex_line(now_ms - start_ms_, data, count);
-    if (!files_.rx_hex->good()) file_failed(files_.rx_hex, "rx.hex", "rx.partial.hex");
-  }
+  record_received(data, count);
   link_.receive(data, count, now_ms, [this](const wire::Frame& frame) { on_frame(frame); });
+}
+
+void Console::record_received(const uint8_t* data, size_t count) {
+  if (files_.rx_hex == nullptr || count == 0) return;
+  const std::string line = hex_line(now_ms_ - start_ms_, data, count);
+  if (rx_hex_bytes_ + line.size() > rx_hex_part_bytes_ && files_.restart_rx_hex) {
+    files_.rx_hex = files_.restart_rx_hex();
+    rx_hex_bytes_ = 0;
+    note(Severity::info, files_.rx_hex != nullptr
+                             ? "rx.hex full: the part before is rx.old.hex now"
+                             : "rx.hex full and cannot start again: received bytes no longer recorded");
+    if (files_.rx_hex == nullptr) return;
+  }
+  *files_.rx_hex << line;
+  rx_hex_bytes_ += line.size();
+  if (!files_.rx_hex->good()) file_failed(files_.rx_hex, "rx.hex", "rx.partial.hex");
 }
 
 void Console::on_frame(const wire::Frame& frame) {
@@ -477,6 +526,9 @@ void Console::file_failed(std::ostream*& file, const char* name, const char* par
 
 void Console::on_log_status(const wire::LogStatus& status) {
   const bool was_full = telemetry_.log_status && (telemetry_.log_status->flags & wire::kLogStatusFull) != 0;
+  const std::string filling = log_filling_warning(telemetry_.log_status.value_or(wire::LogStatus{}), status,
+                                                  log_divider(), control_hz());
+  if (!filling.empty()) note(Severity::warning, filling);
   telemetry_.on(status);
   if ((status.flags & wire::kLogStatusFull) != 0 && !was_full) {
     note(Severity::warning,

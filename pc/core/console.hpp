@@ -34,11 +34,20 @@ namespace qrterm {
 
 // How long the console waits for the QR to confirm an exit: the resend queue's 1 s of tries, and
 // a little for the last answer to arrive.
+// The QR's control rate until it says its own (docs/architecture.md: 1 kHz by default).
+inline constexpr uint32_t kDefaultControlHz = 1000;
+
 inline constexpr uint32_t kExitWaitMs = wire::kGiveUpAfterMs + 200;
+
+// rx.hex grows by some 70 MB an hour of telemetry: past this size it starts again, the part before
+// kept as rx.old.hex, so the disk holds at most twice this and the newest bytes are always there.
+inline constexpr size_t kRxHexPartBytes = 16u << 20;
 
 // Where the console writes; any may be absent.
 struct ConsoleFiles {
   std::ostream* rx_hex = nullptr;
+  // Moves the full rx.hex aside and gives a fresh one (null: recording stops).
+  std::function<std::ostream*()> restart_rx_hex;
   std::ostream* telemetry_csv = nullptr;
   std::function<std::unique_ptr<std::ostream>(const std::string& name)> open;  // a new file in the log folder
   // Renames a file of the log folder (false when it could not): a file cut short by a full disk
@@ -60,6 +69,7 @@ class Console {
     uint8_t first_seq = 0;         // of every request type (docs/protocol.md section 6)
     bool simulator = false;        // the console started qrsim and has its truth channel
     std::string params_file;       // where `params` came from: the parameter screen's "file" column
+    size_t rx_hex_part_bytes = kRxHexPartBytes;
   };
 
   // A line the pilot is typing on the plot or parameter screen.
@@ -116,6 +126,8 @@ class Console {
   const ParameterEditor& parameter_editor() const { return editor_; }
   const ParameterSync& parameter_sync() const { return parameters_; }
   uint32_t telemetry_hz() const;
+  uint32_t log_divider() const;  // the parameter the console holds
+  uint32_t control_hz() const;
   // "truth roll +1.2 pitch -0.5 yaw +10.0 height 1.50 m", or empty: no simulator or no line yet.
   const std::string& truth() const { return truth_; }
   // The console started the simulator: the QR's CPU load, loop time and deadline misses are the
@@ -143,6 +155,7 @@ class Console {
   void request_mode(wire::Mode mode);
   void send_control();
   void print_tasks();
+  void record_received(const uint8_t* data, size_t count);
   void finish_exit(Severity severity, const std::string& why, bool confirmed);
   void on_frame(const wire::Frame& frame);
   // An ack (reason none) or a nack, already matched against the request it answers.
@@ -160,6 +173,8 @@ class Console {
 
   ConsoleLog& log_;
   ConsoleFiles files_;
+  size_t rx_hex_part_bytes_;
+  size_t rx_hex_bytes_ = 0;  // in the rx.hex being written
   std::optional<CsvWriter> telemetry_csv_;
   // A session file that failed to write: written no more, named partial, said once.
   void file_failed(std::ostream*& file, const char* name, const char* partial_name);

@@ -12,6 +12,7 @@ constexpr NamedKey kNamedKeys[] = {
     {kKeyEscape, "ESC"},  {kKeyInterrupt, "^C"},        {kKeyUp, "up"}, {kKeyDown, "down"},
     {kKeyLeft, "left"},   {kKeyRight, "right"},         {' ', "space"}, {kKeyTab, "Tab"},
     {kKeyEnter, "Enter"}, {kKeyBackspace, "Backspace"}, {19, "^S"},     {15, "^O"},
+    {kKeyPageUp, "PgUp"}, {kKeyPageDown, "PgDn"},
 };
 
 }  // namespace

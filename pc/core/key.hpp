@@ -22,6 +22,8 @@ inline constexpr Key kKeyDown = 0x110001;
 inline constexpr Key kKeyLeft = 0x110002;
 inline constexpr Key kKeyRight = 0x110003;
 inline constexpr Key kKeyBackspace = 0x110004;
+inline constexpr Key kKeyPageUp = 0x110005;
+inline constexpr Key kKeyPageDown = 0x110006;
 
 // "ESC", "up", "a", "?": what the help overlay and the documentation call the key.
 std::string key_name(Key key);

@@ -1,5 +1,6 @@
 // The keyboard, as one table: key -> action. The IN4073 map (ESC, 0-5, 7, a/z, arrows, q/w, u/j,
-// i/k, o/l) plus our keys for the filter constants, logs, parameters, the simulator's push and help.
+// i/k, o/l) plus our keys for the filter constants, logs, parameters, the simulator's push and reset,
+// and help.
 #pragma once
 
 #include <stddef.h>
@@ -27,6 +28,8 @@ inline constexpr KeyBinding kKeyMap[] = {
     {'7', Action::height_hold},  // IN4073's height mode key
     {'a', Action::lift_up},
     {'z', Action::lift_down},
+    {kKeyPageUp, Action::lift_up_coarse},
+    {kKeyPageDown, Action::lift_down_coarse},
     {kKeyLeft, Action::roll_left},
     {kKeyRight, Action::roll_right},
     {kKeyUp, Action::pitch_down},
@@ -50,6 +53,7 @@ inline constexpr KeyBinding kKeyMap[] = {
     {'p', Action::params_read},
     {'b', Action::tasks_print},
     {'n', Action::sim_push},
+    {'v', Action::sim_reset},
     {'h', Action::help},
     {'?', Action::help},
 };

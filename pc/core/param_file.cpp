@@ -133,4 +133,15 @@ std::string format_param_file(const wire::ParameterValues& values) {
   return text;
 }
 
+std::string describe_changes(const wire::ParameterValues& before, const wire::ParameterValues& after) {
+  std::string text;
+  for (const wire::ParameterSpec& spec : wire::kParameterTable) {
+    const int32_t was = before.get(spec.id), is = after.get(spec.id);
+    if (was == is) continue;
+    if (!text.empty()) text += ", ";
+    text += std::string(spec.name) + " " + format_real(spec, was) + " -> " + format_real(spec, is);
+  }
+  return text;
+}
+
 }  // namespace qrterm

@@ -29,6 +29,11 @@ std::string format_param_file(const wire::ParameterValues& values);
 // a finite binary fraction, so the text is exact and reads back to the same raw value.
 std::string format_real(const wire::ParameterSpec& spec, int32_t raw);
 
+// "roll_pitch_p1 5.5 -> 5.75, yaw_p 300 -> 310": what differs from `before` to `after`, in table
+// order; empty when nothing does. Said at exit, so gains changed by a stray key are not saved
+// without a word.
+std::string describe_changes(const wire::ParameterValues& before, const wire::ParameterValues& after);
+
 // Decimal text in the parameter's unit -> raw, rounded to the nearest step. False when the text
 // is not a number.
 bool parse_real(const wire::ParameterSpec& spec, const std::string& text, int64_t& raw);

@@ -60,6 +60,16 @@ std::string ParameterEditor::set_typed(ParameterSync& sync, const std::string& t
 
 void ParameterEditor::reset_default(ParameterSync& sync) const { sync.set(selected().id, selected().default_value); }
 
+size_t ParameterEditor::reset_all_defaults(ParameterSync& sync) const {
+  size_t changed = 0;
+  for (const wire::ParameterSpec& spec : wire::kParameterTable) {
+    if (sync.wanted().get(spec.id) == spec.default_value) continue;
+    sync.set(spec.id, spec.default_value);
+    ++changed;
+  }
+  return changed;
+}
+
 std::string ParameterEditor::save(const ParameterSync& sync, const std::string& path) {
   if (path.empty()) return "no file name";
   const std::string temporary = path + ".tmp";

@@ -45,6 +45,8 @@ class ParameterEditor {
   // A value typed in the parameter's unit ("5.75"): an error text, or empty when sent.
   std::string set_typed(ParameterSync& sync, const std::string& text) const;
   void reset_default(ParameterSync& sync) const;
+  // Every parameter back to its default (what differs is sent); how many changed.
+  size_t reset_all_defaults(ParameterSync& sync) const;
 
   // Named parameter files, in parameter-file format: an error text, or empty.
   std::string save(const ParameterSync& sync, const std::string& path);

@@ -14,10 +14,16 @@ struct TrimStep {
 };
 
 constexpr TrimStep kTrimSteps[] = {
-    {Action::lift_up, &Sticks::lift, kLiftTrimStep},     {Action::lift_down, &Sticks::lift, -kLiftTrimStep},
-    {Action::roll_right, &Sticks::roll, kStickTrimStep}, {Action::roll_left, &Sticks::roll, -kStickTrimStep},
-    {Action::pitch_up, &Sticks::pitch, kStickTrimStep},  {Action::pitch_down, &Sticks::pitch, -kStickTrimStep},
-    {Action::yaw_right, &Sticks::yaw, kStickTrimStep},   {Action::yaw_left, &Sticks::yaw, -kStickTrimStep},
+    {Action::lift_up, &Sticks::lift, kLiftTrimStep},
+    {Action::lift_down, &Sticks::lift, -kLiftTrimStep},
+    {Action::lift_up_coarse, &Sticks::lift, kLiftCoarseStep},
+    {Action::lift_down_coarse, &Sticks::lift, -kLiftCoarseStep},
+    {Action::roll_right, &Sticks::roll, kStickTrimStep},
+    {Action::roll_left, &Sticks::roll, -kStickTrimStep},
+    {Action::pitch_up, &Sticks::pitch, kStickTrimStep},
+    {Action::pitch_down, &Sticks::pitch, -kStickTrimStep},
+    {Action::yaw_right, &Sticks::yaw, kStickTrimStep},
+    {Action::yaw_left, &Sticks::yaw, -kStickTrimStep},
 };
 
 constexpr int32_t kLiftMax = wire::kLiftMax;

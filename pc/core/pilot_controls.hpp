@@ -13,6 +13,8 @@ namespace qrterm {
 
 // How far one key press moves a trim, per mille of full deflection.
 inline constexpr int32_t kLiftTrimStep = 10;
+// A hover needs some 530 of lift: 53 presses of the fine step; the coarse keys take ten at a time.
+inline constexpr int32_t kLiftCoarseStep = 10 * kLiftTrimStep;
 inline constexpr int32_t kStickTrimStep = 10;
 
 class PilotControls {

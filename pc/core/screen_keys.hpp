@@ -32,6 +32,7 @@ enum class ScreenAction : uint8_t {
   param_step_up,
   param_type,  // opens the prompt: a value
   param_default,
+  param_all_defaults,
   param_save,  // opens the prompt: a file name
   param_load,
 };
@@ -62,6 +63,7 @@ inline constexpr ScreenKey kScreenKeys[] = {
     {Screen::parameters, kKeyRight, ScreenAction::param_step_up, "step up, sent at once"},
     {Screen::parameters, kKeyEnter, ScreenAction::param_type, "type a value"},
     {Screen::parameters, '=', ScreenAction::param_default, "back to the default"},
+    {Screen::parameters, '!', ScreenAction::param_all_defaults, "every parameter to its default"},
     {Screen::parameters, kKeyCtrlS, ScreenAction::param_save, "save to a named file"},
     {Screen::parameters, kKeyCtrlO, ScreenAction::param_load, "load a named file"},
 };

@@ -119,7 +119,12 @@ void Cockpit::draw_system(const Console& console, int width) {
                              {wire::kFlagLogging, "logging", kQr},
                              {wire::kFlagBatteryWarning, "battery low", kError},
                              {wire::kFlagLogFull, "log full", kWarning}};
-  if (t.attitude && (t.attitude->flags & 0x0F) == 0) put(3, column, "not calibrated", kDim);
+  // The first thing to do, said where the pilot looks first (a newcomer chose a mode at once).
+  if (t.attitude && !t.flag(wire::kFlagCalibrated)) {
+    const std::string hint = "not calibrated: calibrate (3), keep it still, then choose a mode";
+    put(3, column, hint, kWarning);
+    column += static_cast<int>(hint.size()) + 1;
+  }
   for (const Flag& flag : kFlags) {
     if (!t.flag(flag.bit)) continue;
     put(3, column, flag.name, flag.pair, A_BOLD);
@@ -159,11 +164,18 @@ void Cockpit::draw_engines_and_attitude(const Console& console, int width) {
     put(row, 11 + filled, std::string(static_cast<size_t>(bar - filled), '.'), kDim);
   }
   const int x = half + 2;
+  // Before calibration the gyro biases are unknown and the estimate drifts (12-15 degrees of roll
+  // at rest were seen): shown as not valid rather than as an attitude.
+  const bool valid = t.flag(wire::kFlagCalibrated);
   put(4, x, "        angle deg   rate deg/s", 0, A_BOLD);
   constexpr const char* kAxes[] = {"roll", "pitch", "yaw"};
   for (int i = 0; i < 3; ++i) {
     std::string angle = kUnknown;
     std::string rate = kUnknown;
+    if (t.attitude && !valid) {
+      put(5 + i, x, text("%-6s %9s %12s", kAxes[i], "not valid", "not valid"), kDim);
+      continue;
+    }
     if (t.attitude) {
       const int16_t a[] = {t.attitude->phi, t.attitude->theta, t.attitude->psi};
       angle = text("%+8.2f", degrees(a[i]));
@@ -308,21 +320,28 @@ void Cockpit::draw_link_alarm(const Console& console, int width) {
 }
 
 void Cockpit::draw_help(int rows, int width) {
-  const int per_column = static_cast<int>((kKeyBindingCount + 1) / 2);
-  const int column_width = 38;
-  const int box_width = std::min(width, 2 * column_width + 4);
-  const int box_height = std::min(rows, per_column + 3);
-  const int top = std::max(0, (rows - box_height) / 2);
+  // Below the title, MODE/LINK, battery, QR and engine rows: the pilot flies by those while
+  // reading the keys. Two columns where the rows allow, else three narrower ones.
+  constexpr int kTop = 8;
+  constexpr int kEntry = 6 + static_cast<int>(kActionTextMax);  // "right " and the text
+  const int count = static_cast<int>(kKeyBindingCount);
+  const int columns = (count + 1) / 2 + 3 <= rows - kTop ? 2 : 3;
+  const int per_column = (count + columns - 1) / columns;
+  const int column_width = std::max(kEntry, std::min(38, (width - 2) / columns));
+  const int box_width = std::min(width, columns * column_width + 2);
+  const int box_height = std::min(rows - kTop, per_column + 3);
+  const int top = kTop + std::max(0, (rows - kTop - box_height) / 2);
   const int left = std::max(0, (width - box_width) / 2);
   for (int r = 0; r < box_height; ++r) put(top + r, left, std::string(static_cast<size_t>(box_width), ' '), kTitle);
   put(top, left + 2, "keys (h or ? closes; any other key acts and closes)", kTitle, A_BOLD);
+  const int column_left = left + (box_width - columns * column_width) / 2;
   for (size_t i = 0; i < kKeyBindingCount; ++i) {
     const int column = static_cast<int>(i) / per_column;
     const int row = top + 2 + static_cast<int>(i) % per_column;
     if (row >= top + box_height) continue;
     const KeyBinding& binding = kKeyMap[i];
-    put(row, left + 2 + column * column_width,
-        text("%-6s %s", key_name(binding.key).c_str(), action_text(binding.action)), kTitle);
+    put(row, column_left + column * column_width,
+        text("%-5s %s", key_name(binding.key).c_str(), action_text(binding.action)), kTitle);
   }
 }
 

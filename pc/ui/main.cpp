@@ -119,13 +119,6 @@ int run(int argc, char** argv) {
     settle(*joystick);
   }
 
-  const std::string log_folder = options.log_dir.empty() ? default_log_folder() : options.log_dir;
-  try {
-    make_folders(log_folder);
-  } catch (const LogFolderError& e) {
-    throw Failure{kStartError, e.what()};
-  }
-
   std::unique_ptr<SimProcess> sim;
   std::string serial_path;
   std::string source;
@@ -150,6 +143,13 @@ int run(int argc, char** argv) {
   } catch (const SerialError& e) {
     throw Failure{kStartError, e.what()};
   }
+  // Made once the QR is reachable: a start that failed leaves no empty folder behind.
+  const std::string log_folder = options.log_dir.empty() ? default_log_folder() : options.log_dir;
+  try {
+    make_folders(log_folder);
+  } catch (const LogFolderError& e) {
+    throw Failure{kStartError, e.what()};
+  }
 
   std::unique_ptr<std::ofstream> console_file = open_in(log_folder, "console.log");
   std::unique_ptr<std::ofstream> hex_file = open_in(log_folder, "rx.hex");
@@ -159,6 +159,13 @@ int run(int argc, char** argv) {
   ConsoleLog log(500, console_file.get());
   ConsoleFiles files;
   files.rx_hex = hex_file.get();
+  files.restart_rx_hex = [&hex_file, log_folder]() -> std::ostream* {
+    hex_file.reset();
+    const std::string path = log_folder + "/rx.hex";
+    std::rename(path.c_str(), (log_folder + "/rx.old.hex").c_str());
+    hex_file = open_in(log_folder, "rx.hex");
+    return hex_file.get();
+  };
   files.telemetry_csv = telemetry_file.get();
   files.open = [log_folder](const std::string& name) -> std::unique_ptr<std::ostream> {
     return open_in(log_folder, name);
@@ -209,14 +216,25 @@ int run(int argc, char** argv) {
   }
   if (sim) sim->stop(confirmed ? 1000 : 0);
 
+  // Gains changed by keys (perhaps a stray one) load at the next start: say which, and how back.
+  const std::string changes = describe_changes(params.values, console.params());
   const std::string saved = write_file_atomically(options.params, format_param_file(console.params()));
-  if (!saved.empty()) std::fprintf(stderr, "qrterm: %s\n", saved.c_str());
   // The last few lines of the log say how the session ended.
   const auto& lines = log.lines();
   for (size_t i = lines.size() > 3 ? lines.size() - 3 : 0; i < lines.size(); ++i) {
     std::fprintf(stderr, "qrterm: %s\n", lines[i].text.c_str());
   }
-  std::fprintf(stderr, "qrterm: parameters saved to %s; logs in %s\n", options.params.c_str(), log_folder.c_str());
+  if (!saved.empty()) {
+    std::fprintf(stderr, "qrterm: %s\n", saved.c_str());
+  } else if (changes.empty()) {
+    std::fprintf(stderr, "qrterm: parameters unchanged, in %s\n", options.params.c_str());
+  } else {
+    std::fprintf(stderr,
+                 "qrterm: parameters changed in this session, saved to %s for the next start: %s\n"
+                 "  (to go back: edit the file, or ! on the parameter screen for the defaults)\n",
+                 options.params.c_str(), changes.c_str());
+  }
+  std::fprintf(stderr, "qrterm: logs in %s\n", log_folder.c_str());
   return 0;
 }
 

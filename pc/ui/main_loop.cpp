@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <chrono>
 #include <mutex>
 #include <thread>
 #include <vector>
@@ -22,9 +23,14 @@ void run_link(Session& s, std::mutex& lock, const std::atomic<bool>& stop) {
   bool serial_open = true;
   std::vector<uint8_t> received;
   std::string why;
+  auto last_pass = std::chrono::steady_clock::now();
   while (!stop) {
+    const auto next_pass = last_pass + std::chrono::milliseconds(kLinkPassMs);
     pollfd fd{serial_open ? s.serial.fd() : -1, POLLIN, 0};
-    ::poll(&fd, 1, kLinkPollMs);
+    ::poll(&fd, 1, kLinkPassMs);
+    // Bytes that woke the poll early gather until the pass is due.
+    std::this_thread::sleep_until(next_pass);
+    last_pass = std::chrono::steady_clock::now();
     const uint32_t now = monotonic_ms();
     received.clear();
     const SerialPort::Io io = serial_open && fd.revents != 0 ? s.serial.read_available(received, why)

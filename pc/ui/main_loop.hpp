@@ -29,7 +29,11 @@ void run_main_loop(Session& session);
 
 inline constexpr uint32_t kRedrawMs = 100;     // at most 10 screens a second
 inline constexpr uint32_t kPlotRedrawMs = 40;  // the plot screen: 25 a second
-inline constexpr int kLinkPollMs = 2;          // the longest a control message waits past its time
+// The link thread's pass: at most one every this many ms, and one at least that often. The
+// simulator hands over a few bytes every ms; a pass for each (some 900 a second, each a wake-up,
+// a read and the lock) cost more CPU than the plot's drawing. A control message waits at most
+// this past its time.
+inline constexpr int kLinkPassMs = 4;
 inline constexpr int kUiPollMs = 10;
 
 }  // namespace qrterm

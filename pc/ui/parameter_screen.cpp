@@ -47,7 +47,7 @@ void draw_parameter_screen(const Console& console, int top, int rows, int width)
   put(meaning_row, 0, meaning.substr(0, static_cast<size_t>(width)), kQr);
   if (meaning.size() > static_cast<size_t>(width))
     put(meaning_row + 1, 0, meaning.substr(static_cast<size_t>(width)), kQr);
-  put(top + rows - 2, 0, "up/down select  left/right step  Enter type  = default  ^S save  ^O load  Tab next", kDim);
+  put(top + rows - 2, 0, "up/down  left/right step  Enter type  = default  ! all default  ^S save  ^O load", kDim);
   draw_prompt_or_log(console, top + rows - 1, width);
 }
 

@@ -15,15 +15,10 @@ struct KeyCode {
 };
 
 constexpr KeyCode kKeyCodes[] = {
-    {KEY_UP, kKeyUp},
-    {KEY_DOWN, kKeyDown},
-    {KEY_LEFT, kKeyLeft},
-    {KEY_RIGHT, kKeyRight},
-    {KEY_BACKSPACE, kKeyBackspace},
-    {127, kKeyBackspace},  // what most terminals send for Backspace
-    {8, kKeyBackspace},
-    {KEY_ENTER, kKeyEnter},
-    {'\n', kKeyEnter},
+    {KEY_UP, kKeyUp},          {KEY_DOWN, kKeyDown},           {KEY_LEFT, kKeyLeft},
+    {KEY_RIGHT, kKeyRight},    {KEY_BACKSPACE, kKeyBackspace}, {KEY_PPAGE, kKeyPageUp},
+    {KEY_NPAGE, kKeyPageDown}, {127, kKeyBackspace},  // what most terminals send for Backspace
+    {8, kKeyBackspace},        {KEY_ENTER, kKeyEnter},         {'\n', kKeyEnter},
 };
 
 // A lone ESC is told from an arrow key's escape sequence by waiting this long for the rest. Short:

@@ -46,6 +46,35 @@ constexpr Field kInputFields[] = {
 constexpr size_t kInputFieldCount = sizeof(kInputFields) / sizeof(kInputFields[0]);
 constexpr size_t kFieldsWithoutPressure = kInputFieldCount - 1;
 
+// A log downloaded by the console (qrterm's sensor_log_N.csv, docs/console.md) replays as it is:
+// its raw samples, with the sticks neutral and no barometer (the log holds neither). Its columns
+// in order, each with its range and the input field it fills (-1: checked, not used).
+struct LogColumn {
+  Field field;
+  int input;
+};
+constexpr int kUnused = -1;
+constexpr LogColumn kSensorLogColumns[] = {
+    {{"line", 0, UINT16_MAX}, kUnused},
+    {{"time_us", 0, UINT32_MAX}, 0},
+    {{"gyro_x_counts", INT16_MIN, INT16_MAX}, 1},
+    {{"gyro_y_counts", INT16_MIN, INT16_MAX}, 2},
+    {{"gyro_z_counts", INT16_MIN, INT16_MAX}, 3},
+    {{"accel_x_counts", INT16_MIN, INT16_MAX}, 4},
+    {{"accel_y_counts", INT16_MIN, INT16_MAX}, 5},
+    {{"accel_z_counts", INT16_MIN, INT16_MAX}, 6},
+    {{"gyro_filtered_x_counts", INT16_MIN, INT16_MAX}, kUnused},
+    {{"gyro_filtered_y_counts", INT16_MIN, INT16_MAX}, kUnused},
+    {{"gyro_filtered_z_counts", INT16_MIN, INT16_MAX}, kUnused},
+    {{"accel_filtered_x_counts", INT16_MIN, INT16_MAX}, kUnused},
+    {{"accel_filtered_y_counts", INT16_MIN, INT16_MAX}, kUnused},
+    {{"accel_filtered_z_counts", INT16_MIN, INT16_MAX}, kUnused},
+    {{"battery_mv", 0, UINT16_MAX}, 7},
+};
+constexpr size_t kSensorLogColumnCount = sizeof(kSensorLogColumns) / sizeof(kSensorLogColumns[0]);
+
+enum class InputFormat : uint8_t { recording, recording_without_pressure, sensor_log };
+
 struct Row {
   size_t line;
   uint32_t time_us;
@@ -96,25 +125,42 @@ class InputError {
   std::ostream& out_;
 };
 
-// Parses one data row, or says what is wrong with it.
-// `count`: the fields the header named (with or without the pressure).
-std::string parse_row(std::string_view line, size_t count, Row& row) {
+// One field as an integer within its range, or what is wrong with it.
+std::string parse_field(std::string_view f, const Field& field, int64_t& value) {
+  const auto [end, ec] = std::from_chars(f.data(), f.data() + f.size(), value);
+  if (f.empty() || ec != std::errc() || end != f.data() + f.size()) {
+    return std::string(field.name) + ": '" + std::string(f) + "' is not an integer";
+  }
+  if (value < field.min || value > field.max) {
+    return std::string(field.name) + ": " + std::to_string(value) + " is outside " + std::to_string(field.min) + ".." +
+           std::to_string(field.max);
+  }
+  return {};
+}
+
+// Parses one data row into the input fields `v` (those a format lacks stay 0), or says what is
+// wrong with it.
+std::string parse_fields(std::string_view line, InputFormat format, int64_t (&v)[kInputFieldCount]) {
   const std::vector<std::string_view> fields = split(line);
+  const size_t count = format == InputFormat::sensor_log                   ? kSensorLogColumnCount
+                       : format == InputFormat::recording_without_pressure ? kFieldsWithoutPressure
+                                                                           : kInputFieldCount;
   if (fields.size() != count) {
     return "expected " + std::to_string(count) + " fields, got " + std::to_string(fields.size());
   }
-  int64_t v[kInputFieldCount] = {};
   for (size_t i = 0; i < count; ++i) {
-    const std::string_view f = fields[i];
-    const auto [end, ec] = std::from_chars(f.data(), f.data() + f.size(), v[i]);
-    if (f.empty() || ec != std::errc() || end != f.data() + f.size()) {
-      return std::string(kInputFields[i].name) + ": '" + std::string(f) + "' is not an integer";
-    }
-    if (v[i] < kInputFields[i].min || v[i] > kInputFields[i].max) {
-      return std::string(kInputFields[i].name) + ": " + std::to_string(v[i]) + " is outside " +
-             std::to_string(kInputFields[i].min) + ".." + std::to_string(kInputFields[i].max);
-    }
+    int64_t value = 0;
+    const LogColumn column = format == InputFormat::sensor_log ? kSensorLogColumns[i]
+                                                               : LogColumn{kInputFields[i], static_cast<int>(i)};
+    if (std::string what = parse_field(fields[i], column.field, value); !what.empty()) return what;
+    if (column.input != kUnused) v[column.input] = value;
   }
+  return {};
+}
+
+std::string parse_row(std::string_view line, InputFormat format, Row& row) {
+  int64_t v[kInputFieldCount] = {};
+  if (std::string what = parse_fields(line, format, v); !what.empty()) return what;
   row.time_us = static_cast<uint32_t>(v[0]);
   for (int k = 0; k < 3; ++k) {
     row.sample.gyro[k] = static_cast<int16_t>(v[1 + k]);
@@ -168,25 +214,40 @@ int fly_at(const std::vector<Row>& rows, std::ostream& out, const ReplayOptions&
   return fly<FlightChain<chain::FixedNumbers, Hz>>(rows, out);
 }
 
+const std::string& sensor_log_header() {
+  static const std::string header = [] {
+    std::vector<std::string> names;
+    for (const LogColumn& c : kSensorLogColumns) names.push_back(c.field.name);
+    return join(names);
+  }();
+  return header;
+}
+
 // Reads and checks every row before the first tick, so bad input produces no output at all.
-int read_rows(std::istream& in, const InputError& error, std::vector<Row>& rows) {
+int read_rows(std::istream& in, const InputError& error, std::vector<Row>& rows, InputFormat& format) {
   std::string line;
   size_t number = 0;
   if (!std::getline(in, line)) return error.at(1, "empty: expected the header '" + replay_input_header() + "'");
   ++number;
-  size_t count = kInputFieldCount;
+  format = InputFormat::recording;
   if (trim(line) == replay_input_header_without_pressure()) {
-    count = kFieldsWithoutPressure;
+    format = InputFormat::recording_without_pressure;
     error.note("no pressure_pa column: the barometer is absent, so the height estimate stays 0");
+  } else if (trim(line) == sensor_log_header()) {
+    format = InputFormat::sensor_log;
+    error.note(
+        "a downloaded sensor log: its raw samples replay with the sticks neutral and no barometer "
+        "(the log holds neither)");
   } else if (trim(line) != replay_input_header()) {
-    return error.at(number, "header must be '" + replay_input_header() + "', got '" + std::string(trim(line)) + "'");
+    return error.at(number, "header must be '" + replay_input_header() + "', got '" + std::string(trim(line)) +
+                                "' (a sensor log downloaded by qrterm replays too)");
   }
   while (std::getline(in, line)) {
     ++number;
     if (trim(line).empty()) continue;
     Row row{};
     row.line = number;
-    if (const std::string what = parse_row(line, count, row); !what.empty()) return error.at(number, what);
+    if (const std::string what = parse_row(line, format, row); !what.empty()) return error.at(number, what);
     rows.push_back(row);
   }
   if (in.bad()) return error.whole("read error");
@@ -226,7 +287,12 @@ int run_replay(std::istream& in, const char* in_name, std::ostream& out, std::os
                const ReplayOptions& options) {
   const InputError error(in_name, errors);
   std::vector<Row> rows;
-  if (const int rc = read_rows(in, error, rows); rc != 0) return rc;
+  InputFormat format = InputFormat::recording;
+  if (const int rc = read_rows(in, error, rows, format); rc != 0) return rc;
+  // A sensor log holds a line every log_divider periods; the chain needs every period.
+  const std::string divider_hint = format == InputFormat::sensor_log
+                                       ? "; log with log_divider = 1 to replay a sensor log"
+                                       : "";
   if (rows.size() < static_cast<size_t>(chain::kCalibrationSamples) + 1) {
     return error.whole("has " + std::to_string(rows.size()) + " rows; the first " +
                        std::to_string(chain::kCalibrationSamples) +
@@ -236,13 +302,13 @@ int run_replay(std::istream& in, const char* in_name, std::ostream& out, std::os
   const uint32_t step = rows[1].time_us - rows[0].time_us;
   if (step != 1000 && step != 2000) {
     return error.at(rows[1].line, "time step " + std::to_string(step) +
-                                      " us: the chain runs at 1000 Hz (1000 us) or 500 Hz (2000 us)");
+                                      " us: the chain runs at 1000 Hz (1000 us) or 500 Hz (2000 us)" + divider_hint);
   }
   for (size_t i = 1; i < rows.size(); ++i) {
     const uint32_t d = rows[i].time_us - rows[i - 1].time_us;
     if (d != step) {
       return error.at(rows[i].line, "time step " + std::to_string(d) + " us differs from the first, " +
-                                        std::to_string(step) + " us: one row per control period");
+                                        std::to_string(step) + " us: one row per control period" + divider_hint);
     }
   }
   const int rc = step == 1000 ? fly_at<1000>(rows, out, options) : fly_at<500>(rows, out, options);

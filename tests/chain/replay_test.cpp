@@ -262,5 +262,47 @@ TEST(Replay, RecordingWithoutPressureReplaysWithNoBarometer) {
   EXPECT_TRUE(height_moved) << "with its pressures the same recording has a height estimate";
 }
 
+// A downloaded sensor log (qrterm's sensor_log_N.csv) replays as it is: the same as the recording
+// of its samples with the sticks neutral and no barometer, which it does not hold. Logged slower
+// than every period, it is refused with what to change.
+TEST(Replay, DownloadedSensorLogReplaysAsItsSamples) {
+  std::istringstream recording(read_file(kRecording));
+  std::string line, log, neutral;
+  std::getline(recording, line);
+  log =
+      "line,time_us,gyro_x_counts,gyro_y_counts,gyro_z_counts,accel_x_counts,accel_y_counts,accel_z_counts,"
+      "gyro_filtered_x_counts,gyro_filtered_y_counts,gyro_filtered_z_counts,accel_filtered_x_counts,"
+      "accel_filtered_y_counts,accel_filtered_z_counts,battery_mv\r\n";
+  neutral = replay_input_header_without_pressure() + "\n";
+  std::vector<std::string> slow;  // the same samples a line every 10 ms: log_divider 10
+  for (size_t n = 0; std::getline(recording, line); ++n) {
+    std::vector<std::string> f;
+    std::istringstream fields(line);
+    for (std::string v; std::getline(fields, v, ',');) f.push_back(v);
+    ASSERT_EQ(f.size(), 13u) << line;
+    // time, gyro x y z, accel x y z, then the filtered values (any: the replay filters itself), battery
+    const std::string row = std::to_string(n) + "," + f[0] + "," + f[1] + "," + f[2] + "," + f[3] + "," + f[4] + "," +
+                            f[5] + "," + f[6] + ",1,2,3,4,5,6," + f[7] + "\r\n";
+    log += row;
+    slow.push_back(std::to_string(n) + "," + std::to_string((n + 1) * 10000) +
+                   row.substr(row.find(',', row.find(',') + 1)));
+    neutral += f[0] + "," + f[1] + "," + f[2] + "," + f[3] + "," + f[4] + "," + f[5] + "," + f[6] + "," + f[7] +
+               ",0,0,0,0\n";
+  }
+  std::istringstream in(log);
+  std::ostringstream out, errors;
+  ASSERT_EQ(run_replay(in, "sensor_log_1.csv", out, errors), 0) << errors.str();
+  EXPECT_NE(errors.str().find("note: a downloaded sensor log"), std::string::npos) << errors.str();
+  EXPECT_EQ(out.str(), replay_text(neutral));
+
+  std::string slow_log = log.substr(0, log.find('\n') + 1);
+  for (const std::string& row : slow) slow_log += row;
+  std::istringstream slow_in(slow_log);
+  std::ostringstream slow_out, slow_errors;
+  EXPECT_EQ(run_replay(slow_in, "sensor_log_2.csv", slow_out, slow_errors), 1);
+  EXPECT_NE(slow_errors.str().find("log with log_divider = 1 to replay a sensor log"), std::string::npos)
+      << slow_errors.str();
+}
+
 }  // namespace
 }  // namespace qr::host

@@ -16,12 +16,13 @@ using fuzz::require;
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string_view line(reinterpret_cast<const char*>(data), size);
-  qrsim::TruthPush push;
+  qrsim::TruthCommand push;
   std::string error;
   if (!qrsim::parse_truth_command(line, push, error)) {
     require(!error.empty());
     return 0;
   }
+  if (push.kind == qrsim::TruthCommand::Kind::reset) return 0;
   for (const double t : {push.torque.x, push.torque.y, push.torque.z}) require(std::isfinite(t) && std::fabs(t) <= 10);
   require(std::isfinite(push.seconds) && push.seconds > 0 && push.seconds <= 10);
   return 0;

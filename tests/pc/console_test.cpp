@@ -768,6 +768,22 @@ TEST(Console, TaskTableIsPrintedOnRequest) {
   const qrterm::LogLine* line = b.log.find_last("mixer");
   ASSERT_NE(line, nullptr);
   EXPECT_NE(line->text.find("212    530        3"), std::string::npos) << line->text;
+  EXPECT_TRUE(b.logged("cycles: mean    max overruns  (instructions on the devboard)")) << "the unit";
+  // Every task the QR reports has its name, none a bare number.
+  for (uint8_t task = 0; task < wire::kTaskCount; ++task) {
+    const wire::FrameBytes each = wire::encode(wire::TelemetryTask{task, 1, 2, 0});
+    b.console.receive(each.bytes, each.size, b.now);
+  }
+  b.key('b');
+  for (uint8_t task = 0; task < wire::kTaskCount; ++task) EXPECT_TRUE(b.logged(wire::kTaskNames[task])) << +task;
+
+  // On the simulator the board's counter is the host's clock: the unit says so.
+  qrterm::Console::Setup setup;
+  setup.simulator = true;
+  Bench sim(setup);
+  sim.console.receive(frame.bytes, frame.size, sim.now);
+  sim.key('b');
+  EXPECT_TRUE(sim.logged("ns: mean    max overruns  (the host's ns: the simulator's board)"));
 }
 
 // The push key: a command for the simulator's truth channel when the console started qrsim,
@@ -796,6 +812,27 @@ TEST(Console, PushKeyNeedsTheSimulator) {
   EXPECT_EQ(sim.console.truth(), "truth roll +1.2 pitch -0.5 yaw +10.0 height 1.50 m");
   sim.console.truth_line("error bad number 'x'");
   EXPECT_TRUE(sim.logged("sim: error bad number 'x'"));
+}
+
+// The reset key (a newcomer's vehicle lay at 48 degrees after a panic, and only a restart of the
+// simulator set it upright): a reset command on the truth channel, "no simulator" on a real port.
+TEST(Console, ResetKeySetsTheSimulatedQrUpright) {
+  Bench real;
+  real.key('v');
+  EXPECT_TRUE(real.logged("no simulator"));
+  EXPECT_TRUE(real.console.take_sim_commands().empty());
+
+  qrterm::Console::Setup setup;
+  setup.simulator = true;
+  Bench sim(setup);
+  sim.key('v');
+  const std::vector<std::string> commands = sim.console.take_sim_commands();
+  ASSERT_EQ(commands.size(), 1u);
+  EXPECT_EQ(commands[0], "reset\n");
+  sim.console.truth_line("ok reset");
+  EXPECT_TRUE(sim.logged("sim: the QR stands upright"));
+  sim.console.truth_line("error reset: the engines are running (safe first)");
+  EXPECT_TRUE(sim.logged("sim: error reset: the engines are running"));
 }
 
 // One of every message the QR may send, as the wire library lists them: the console must have a

@@ -96,6 +96,23 @@ TEST(KeyMap, TrimsStepAndStayInRange) {
   EXPECT_FALSE(controls.apply(Action::exit));
 }
 
+// 53 presses of a to reach a hover was too many for a newcomer: PgUp takes ten steps at once, and
+// both ends of the range still hold.
+TEST(KeyMap, CoarseLiftKeysReachAHoverInAFewPresses) {
+  EXPECT_EQ(action_for(qrterm::kKeyPageUp), Action::lift_up_coarse);
+  EXPECT_EQ(action_for(qrterm::kKeyPageDown), Action::lift_down_coarse);
+  EXPECT_EQ(qrterm::key_name(qrterm::kKeyPageUp), "PgUp");
+  qrterm::PilotControls controls;
+  for (int i = 0; i < 5; ++i) controls.apply(Action::lift_up_coarse);
+  for (int i = 0; i < 3; ++i) controls.apply(Action::lift_up);
+  EXPECT_EQ(controls.control().lift, 5 * qrterm::kLiftCoarseStep + 3 * qrterm::kLiftTrimStep);
+  EXPECT_EQ(controls.control().lift, 530) << "eight presses, not 53";
+  for (int i = 0; i < 20; ++i) controls.apply(Action::lift_up_coarse);
+  EXPECT_EQ(controls.control().lift, 1000);
+  for (int i = 0; i < 20; ++i) controls.apply(Action::lift_down_coarse);
+  EXPECT_EQ(controls.control().lift, 0);
+}
+
 // docs/console.md has a table of keys, rows like "| `a` | ... |": it must list every bound key
 // and no other.
 TEST(KeyMap, TheManualListsExactlyTheBoundKeys) {

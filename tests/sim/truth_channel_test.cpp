@@ -2,11 +2,12 @@
 #include <gtest/gtest.h>
 
 #include <qr/boards/sim/truth_channel.hpp>
+#include <sim/quaternion.hpp>
 
 namespace {
 
 TEST(TruthChannel, ParsesAPush) {
-  qrsim::TruthPush push;
+  qrsim::TruthCommand push;
   std::string error;
   ASSERT_TRUE(qrsim::parse_truth_command("push 0.3 -0.1 0 0.1", push, error)) << error;
   EXPECT_DOUBLE_EQ(push.torque.x, 0.3);
@@ -17,8 +18,42 @@ TEST(TruthChannel, ParsesAPush) {
   EXPECT_DOUBLE_EQ(push.torque.z, 3.0);
 }
 
+TEST(TruthChannel, ParsesAReset) {
+  qrsim::TruthCommand command;
+  std::string error;
+  ASSERT_TRUE(qrsim::parse_truth_command(" reset\r", command, error)) << error;
+  EXPECT_EQ(command.kind, qrsim::TruthCommand::Kind::reset);
+  EXPECT_FALSE(qrsim::parse_truth_command("reset 1", command, error));
+  EXPECT_NE(error.find("reset takes nothing"), std::string::npos) << error;
+  ASSERT_TRUE(qrsim::parse_truth_command("push 1 0 0 1", command, error)) << error;
+  EXPECT_EQ(command.kind, qrsim::TruthCommand::Kind::push) << "a push after a reset is a push";
+}
+
+// After a panic the vehicle may lie on its side: a reset sets it level and still at the ground,
+// where it lay and facing the way it faced.
+TEST(TruthChannel, ResetSetsTheVehicleDownUpright) {
+  sim::PlantState tilted;
+  tilted.position = sim::Vec3{1.5, -2.0, -0.3};
+  tilted.velocity = sim::Vec3{0.2, 0.1, 0.4};
+  tilted.attitude = sim::from_euler(sim::Euler{0.84, -0.3, 1.2});
+  tilted.rate = sim::Vec3{1, 2, 3};
+  tilted.rotor_speed = {100, -100, 100, -100};
+  const sim::PlantState upright = qrsim::reset_state(tilted);
+  const sim::Euler e = sim::to_euler(upright.attitude);
+  EXPECT_NEAR(e.roll, 0, 1e-12);
+  EXPECT_NEAR(e.pitch, 0, 1e-12);
+  EXPECT_NEAR(e.yaw, 1.2, 1e-9);
+  EXPECT_DOUBLE_EQ(upright.position.x, 1.5);
+  EXPECT_DOUBLE_EQ(upright.position.y, -2.0);
+  EXPECT_DOUBLE_EQ(upright.position.z, 0.0);
+  for (const double v :
+       {upright.velocity.x, upright.velocity.y, upright.velocity.z, upright.rate.x, upright.rate.y, upright.rate.z})
+    EXPECT_EQ(v, 0.0);
+  for (const double w : upright.rotor_speed) EXPECT_EQ(w, 0.0);
+}
+
 TEST(TruthChannel, RefusesBadLines) {
-  qrsim::TruthPush push;
+  qrsim::TruthCommand push;
   std::string error;
   EXPECT_FALSE(qrsim::parse_truth_command("", push, error));
   EXPECT_EQ(error, "empty command");

@@ -29,7 +29,8 @@ class SerialLine {
   // When the byte receive() would give next was queued by the sender (to time-stamp frames).
   bool next_sent_at(uint64_t& sent_ns) const;
 
-  size_t in_flight(uint64_t now_ns) const;  // queued, not yet arrived
+  size_t in_flight(uint64_t now_ns) const;       // queued, not yet arrived
+  bool empty() const { return bytes_.empty(); }  // nothing queued or waiting to be taken
   uint64_t bytes_sent() const { return bytes_sent_; }
   uint64_t bytes_refused() const { return bytes_refused_; }
 

@@ -45,6 +45,39 @@ bool open_pty(int& master, int& slave_keep) {
 
 void set_nonblocking(int fd) { fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) | O_NONBLOCK); }
 
+// Bytes the QR has sent that have arrived at the console's end go out on the pty.
+void forward_to_console(SimBoard& board, int out_fd) {
+  uint8_t buffer[256];
+  size_t count = 0;
+  uint8_t byte = 0;
+  while (count < sizeof buffer && board.pc_receive(byte)) buffer[count++] = byte;
+  for (size_t done = 0; done < count;) {
+    const ssize_t n = write(out_fd, buffer + done, count - done);
+    if (n < 0 && errno != EAGAIN && errno != EINTR) break;  // nobody listening: the bytes are lost, as on a wire
+    if (n < 0) {
+      pollfd p{out_fd, POLLOUT, 0};
+      poll(&p, 1, 1);
+      continue;
+    }
+    done += static_cast<size_t>(n);
+  }
+}
+
+// The firmware stops as soon as its last bytes (the exit's ack) are in the board's transmit
+// buffer, up to 32 bytes or 3 ms before they are through the line. The line runs on until they
+// are, and a pty stays open a little longer (`linger`): its hang-up would discard what the
+// console has not read yet, and the console would see LINK LOST and an unconfirmed exit.
+void let_the_line_finish(FlyingQr& qr, int out_fd, bool linger) {
+  constexpr int kMaxPeriods = 100;     // 32 bytes take 3 periods; this bounds a stuck reader
+  constexpr int kLingerPeriods = 200;  // for the console to read the last bytes
+  for (int i = 0; i < kMaxPeriods && qr.board().pc_bytes_pending() && g_stop == 0; ++i) {
+    qr.world().advance_to(qr.world().now_us() + qr::kPeriodUs);
+    forward_to_console(qr.board(), out_fd);
+    usleep(qr::kPeriodUs);
+  }
+  for (int i = 0; linger && i < kLingerPeriods && g_stop == 0; ++i) usleep(qr::kPeriodUs);
+}
+
 // The side channel (--truth-fd): command lines in, truth lines and error lines out. Writes never
 // block the flight: a line the reader has no room for is dropped.
 class TruthChannel {
@@ -60,8 +93,10 @@ class TruthChannel {
     if (n < 0 && errno != EAGAIN && errno != EINTR) fd_ = -1;  // the reader has gone
   }
 
-  // Reads what has arrived; a push found starts now (the latest push replaces the one acting).
-  void poll_commands(uint64_t now_us, sim::Vec3& torque, uint64_t& until_us) {
+  // Reads what has arrived; a push found starts now (the latest push replaces the one acting), a
+  // reset sets the vehicle down upright at once (refused while an engine runs: a hand in the
+  // rotors).
+  void poll_commands(FlyingQr& qr, sim::Vec3& torque, uint64_t& until_us) {
     if (fd_ < 0) return;
     char buffer[256];
     for (;;) {
@@ -76,14 +111,19 @@ class TruthChannel {
           if (pending_.size() < 200) pending_ += buffer[i];
           continue;
         }
-        TruthPush push;
+        TruthCommand command;
         std::string error;
-        if (parse_truth_command(pending_, push, error)) {
-          torque = push.torque;
-          until_us = now_us + static_cast<uint64_t>(std::llround(push.seconds * 1e6));
-          send("ok push\n");
-        } else {
+        if (!parse_truth_command(pending_, command, error)) {
           send("error " + error + "\n");
+        } else if (command.kind == TruthCommand::Kind::push) {
+          torque = command.torque;
+          until_us = qr.world().now_us() + static_cast<uint64_t>(std::llround(command.seconds * 1e6));
+          send("ok push\n");
+        } else if (!qr.board().engines().all_zero()) {
+          send("error reset: the engines are running (safe first)\n");
+        } else {
+          qr.world().plant().set_state(reset_state(qr.world().plant().state()));
+          send("ok reset\n");
         }
         pending_.clear();
       }
@@ -144,24 +184,11 @@ int serve(const ServeOptions& options) {
         break;                                            // EAGAIN, or EIO: no console attached
       }
     }
-    // Bytes the QR has sent that have arrived at the console's end.
-    size_t count = 0;
-    uint8_t byte = 0;
-    while (count < sizeof buffer && qr->board().pc_receive(byte)) buffer[count++] = byte;
-    for (size_t done = 0; done < count;) {
-      const ssize_t n = write(out_fd, buffer + done, count - done);
-      if (n < 0 && errno != EAGAIN && errno != EINTR) break;  // nobody listening: the bytes are lost, as on a wire
-      if (n < 0) {
-        pollfd p{out_fd, POLLOUT, 0};
-        poll(&p, 1, 1);
-        continue;
-      }
-      done += static_cast<size_t>(n);
-    }
+    forward_to_console(qr->board(), out_fd);
 
     if (truth.open()) {
       const uint64_t before = qr->world().now_us();
-      truth.poll_commands(before, push_torque, push_until_us);
+      truth.poll_commands(*qr, push_torque, push_until_us);
       const bool push_now = before < push_until_us;
       if (push_now || pushing) qr->world().plant().set_disturbance(push_now ? push_torque : sim::Vec3{}, sim::Vec3{});
       pushing = push_now;
@@ -169,6 +196,7 @@ int serve(const ServeOptions& options) {
 
     if (!qr->tick()) {  // sleeps until the next kick, then runs the firmware
       if (!qr->error().empty()) std::fprintf(stderr, "qrsim: devboard: %s\n", qr->error().c_str());
+      else let_the_line_finish(*qr, out_fd, /*linger=*/!options.stdio);
       break;
     }
 

@@ -60,6 +60,8 @@ class SimBoard {
   // ---- the PC's end of the line ----
   bool pc_send(uint8_t byte) { return to_qr_.send(byte, world_.now_us() * 1000); }
   bool pc_receive(uint8_t& byte) { return to_pc_.receive(world_.now_us() * 1000, byte); }
+  // Bytes the QR sent that pc_receive() has not given yet (on the line or arrived).
+  bool pc_bytes_pending() const { return !to_pc_.empty(); }
   // When the QR queued the byte pc_receive() gives next (a frame's start byte: its tick).
   bool pc_next_sent_at_us(uint64_t& us) const;
 

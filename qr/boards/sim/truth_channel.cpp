@@ -10,14 +10,22 @@
 
 namespace qrsim {
 
-bool parse_truth_command(std::string_view line, TruthPush& push, std::string& error) {
+bool parse_truth_command(std::string_view line, TruthCommand& push, std::string& error) {
   const std::vector<std::string> words = words_of(line);
   if (words.empty()) {
     error = "empty command";
     return false;
   }
+  if (words[0] == "reset") {
+    if (words.size() != 1) {
+      error = "reset takes nothing after it";
+      return false;
+    }
+    push = TruthCommand{.kind = TruthCommand::Kind::reset};
+    return true;
+  }
   if (words[0] != "push") {
-    error = "unknown command '" + words[0].substr(0, 40) + "' (push TX TY TZ SECONDS)";
+    error = "unknown command '" + words[0].substr(0, 40) + "' (push TX TY TZ SECONDS, reset)";
     return false;
   }
   if (words.size() != 5) {
@@ -41,9 +49,17 @@ bool parse_truth_command(std::string_view line, TruthPush& push, std::string& er
     error = "seconds must be in (0, 10]";
     return false;
   }
+  push.kind = TruthCommand::Kind::push;
   push.torque = sim::Vec3{v[0], v[1], v[2]};
   push.seconds = v[3];
   return true;
+}
+
+sim::PlantState reset_state(const sim::PlantState& now) {
+  sim::PlantState state;
+  state.position = sim::Vec3{now.position.x, now.position.y, 0};
+  state.attitude = sim::from_euler(sim::Euler{0, 0, sim::to_euler(now.attitude).yaw});
+  return state;
 }
 
 std::string truth_line(double t_s, const sim::PlantState& state) {

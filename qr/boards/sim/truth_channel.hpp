@@ -1,7 +1,9 @@
 // Serve mode's side channel (qrsim --serve --truth-fd N): the simulator's true state out, one line
-// per 20 ms of simulated time, and pushes in. The firmware never sees it; docs/simulator.md gives
+// per 20 ms of simulated time, and pushes and resets in. The firmware never sees it; docs/simulator.md gives
 // the line format.
 #pragma once
+
+#include <stdint.h>
 
 #include <string>
 #include <string_view>
@@ -12,14 +14,21 @@
 namespace qrsim {
 
 // "push TX TY TZ SECONDS": a torque in N·m, body axes, for that long.
-struct TruthPush {
-  sim::Vec3 torque;
+// "reset": the vehicle picked up and set down upright, at rest, where it is (the heading kept),
+// as a hand rights it after a crash; the firmware is not told.
+struct TruthCommand {
+  enum class Kind : uint8_t { push, reset };
+  Kind kind = Kind::push;
+  sim::Vec3 torque;  // push only
   double seconds = 0;
 };
 
-// One command line (without its newline). True with `push` filled in; false with `error` saying
-// why ("unknown command 'foo'", "push needs TX TY TZ SECONDS", ...).
-bool parse_truth_command(std::string_view line, TruthPush& push, std::string& error);
+// One command line (without its newline). True with `command` filled in; false with `error`
+// saying why ("unknown command 'foo'", "push needs TX TY TZ SECONDS", ...).
+bool parse_truth_command(std::string_view line, TruthCommand& command, std::string& error);
+
+// The plant's state after a reset from `now`: level at the ground, still, heading and place kept.
+sim::PlantState reset_state(const sim::PlantState& now);
 
 // "truth t=12.340 roll=1.23 pitch=-0.50 yaw=10.00 height=1.500 north=0.100 east=-0.020 climb=0.000"
 // (degrees, metres, m/s upward), with a newline.
