@@ -22,6 +22,7 @@ struct FlightRequests {
   wire::ParamReport report{};  // id 0: nothing to report
 
   void operator()(const wire::Control& c) {
+    if (f.pilot_ != Pilot::pc) return;  // the radio flies: the PC's sticks are nobody's (rule 16)
     f.controls_ = ControlInput{c.lift, c.roll, c.pitch, c.yaw};
     f.pilot_changed_ = true;
     // A lift change ends height hold before the chain runs this tick.
@@ -33,6 +34,11 @@ struct FlightRequests {
     f.enter_modes();
   }
   void operator()(const wire::ParamSet& p) {
+    // Who flies changes on the ground only (docs/safety.md rule 16).
+    if (p.id == static_cast<uint8_t>(wire::ParamId::pilot) && f.safety_.mode() != Mode::safe) {
+      answer = NackReason::not_from_this_mode;
+      return;
+    }
     answer = f.params_.set(p.id, p.value);
     if (answer != NackReason::none) return;
     f.apply_parameters();

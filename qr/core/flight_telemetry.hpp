@@ -6,6 +6,7 @@
 
 #include <common/messages.hpp>
 #include <common/units.hpp>
+#include <qr/core/flight_types.hpp>
 #include <qr/core/scheduler.hpp>
 
 namespace qr {
@@ -47,6 +48,8 @@ class FlightTelemetry {
       wire::TelemetryEngines m;
       for (int i = 0; i < 4; ++i) m.engine[i] = f.engines().value[i];
       send(wire::encode(m));
+      wire::TelemetryRpm rpm;
+      if (f.rpm(rpm.rpm)) send(wire::encode(rpm));
     } else if (group == 1) {
       const auto& chain = f.chain();
       send(wire::encode(wire::TelemetrySetpoints{f.controls().lift, chain.roll_setpoint_e4(), chain.pitch_setpoint_e4(),
@@ -56,6 +59,7 @@ class FlightTelemetry {
       loop_time_us_ = 0;
       send(wire::encode(wire::TelemetrySystem{f.sample().battery_mv, cpu_load_permille_, loop,
                                               static_cast<uint16_t>(deadline_misses_)}));
+      if (f.radio().heard()) send(wire::encode(radio_report(f)));
     } else if (group == 4) {
       send(wire::encode(f.log().status()));
     } else if (group == 5) {
@@ -68,6 +72,24 @@ class FlightTelemetry {
                                             static_cast<uint16_t>(c.unknown_types),
                                             static_cast<uint16_t>(c.bytes_skipped)}));
     }
+  }
+
+  template <class Flight>
+  static wire::TelemetryRadio radio_report(const Flight& f) {
+    const auto& st = f.radio().stats();
+    wire::TelemetryRadio m;
+    m.flags = static_cast<uint8_t>((f.pilot() == Pilot::radio ? wire::kRadioPilot : 0) |
+                                   (f.radio_link_up() ? wire::kRadioLinkUp : 0) |
+                                   (f.safety().arm_switch() ? wire::kRadioArmSwitch : 0));
+    m.uplink_rssi = st.active_antenna == 0 ? st.uplink_rssi_ant1 : st.uplink_rssi_ant2;
+    m.uplink_lq = st.uplink_link_quality > 100 ? uint8_t{100} : st.uplink_link_quality;
+    m.uplink_snr = st.uplink_snr;
+    m.rf_mode = st.rf_mode;
+    m.tx_power = st.uplink_tx_power;
+    m.downlink_rssi = st.downlink_rssi;
+    m.downlink_lq = st.downlink_link_quality > 100 ? uint8_t{100} : st.downlink_link_quality;
+    m.downlink_snr = st.downlink_snr;
+    return m;
   }
 
   uint8_t seq_ = 0;
