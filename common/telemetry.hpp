@@ -190,7 +190,7 @@ inline constexpr uint8_t kRadioArmSwitch = 0x04;  // the arm switch is on (in th
 inline constexpr uint8_t kRadioFlags = kRadioPilot | kRadioLinkUp | kRadioArmSwitch;
 
 // The radio receiver's link as its CRSF link statistics say (common/drivers/crsf.hpp), and who
-// flies. Sent with the system group once a radio has been heard.
+// flies. Sent with the system group once a radio has been heard or while it is the pilot.
 struct TelemetryRadio {
   static constexpr MessageType kType = MessageType::telemetry_radio;
   uint8_t flags = 0;          // kRadio* bits

@@ -59,7 +59,7 @@ class FlightTelemetry {
       loop_time_us_ = 0;
       send(wire::encode(wire::TelemetrySystem{f.sample().battery_mv, cpu_load_permille_, loop,
                                               static_cast<uint16_t>(deadline_misses_)}));
-      if (f.radio().heard()) send(wire::encode(radio_report(f)));
+      if (f.radio().heard() || f.pilot() == Pilot::radio) send(wire::encode(radio_report(f)));
     } else if (group == 4) {
       send(wire::encode(f.log().status()));
     } else if (group == 5) {

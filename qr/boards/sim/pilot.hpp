@@ -1,6 +1,11 @@
 // The simulated pilot at the console's end of the serial line. It talks to the QR only in wire
 // frames, as the ground console does: control 50 times a second (also the heartbeat), requests
 // through a resend queue, telemetry and replies through a parser listening to the QR's side.
+//
+// With a radio (qrsim --rc crsf, use_radio) the sticks go out as CRSF RC frames at 150 Hz on the
+// board's receiver line (link statistics at 10 Hz), a flight mode is armed with the arm switch
+// (off, then on with the mode switch at that mode: docs/safety.md rule 16), and going silent is
+// the radio's link lost; the PC link keeps the requests, the parameters and the abort key.
 #pragma once
 
 #include <stdint.h>
@@ -29,7 +34,9 @@ struct ConsoleView {
   uint32_t nacks = 0;
   wire::NackReason last_nack = wire::NackReason::none;
   uint32_t requests_given_up = 0;
-  std::string debug_text;  // everything the QR said, lines joined
+  std::string debug_text;          // everything the QR said, lines joined
+  uint16_t rpm[4] = {0, 0, 0, 0};  // the last telemetry_rpm
+  uint8_t radio_flags = 0;         // the last telemetry_radio's flags
 };
 
 class Pilot {
@@ -40,8 +47,11 @@ class Pilot {
   const Sticks& sticks() const { return sticks_; }
   void request_mode(wire::Mode mode);
   void set_parameter(wire::ParamId id, int32_t raw);
-  // Stops sending anything at all (the cable is pulled) or resumes.
+  // Stops sending anything at all on the pilot's link (the cable is pulled, the radio's link
+  // lost) or resumes.
   void go_silent(bool silent) { silent_ = silent; }
+  // The radio flies from now on (the QR's pilot parameter must say so too).
+  void use_radio() { radio_ = true; }
 
   // Once per control period, between ticks: takes what the QR sent, sends what is due.
   void step();
@@ -51,6 +61,7 @@ class Pilot {
 
  private:
   void send(const wire::FrameBytes& frame);
+  void send_radio(uint64_t now_us);
   void on_frame(const wire::Frame& frame, uint64_t sent_at_us);
 
   SimBoard& board_;
@@ -60,6 +71,12 @@ class Pilot {
   bool silent_ = false;
   uint64_t next_control_us_ = 0;
   ConsoleView view_;
+  bool radio_ = false;
+  uint64_t next_rc_ns_ = 0;
+  uint32_t rc_frames_ = 0;
+  bool arming_ = false;  // the arm switch goes on once arm_at_us_ has come
+  uint64_t arm_at_us_ = 0;
+  wire::Mode arm_mode_ = wire::Mode::manual;
 };
 
 }  // namespace qrsim
