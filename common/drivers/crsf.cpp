@@ -18,16 +18,8 @@ CrsfFrameBytes frame_of(CrsfType type, const uint8_t* payload, uint8_t size) {
 }  // namespace
 
 bool decode_rc_channels(const CrsfFrame& frame, CrsfChannels& out) {
-  if (frame.type != static_cast<uint8_t>(CrsfType::rc_channels) || frame.size != kCrsfChannelsPayload) return false;
-  // Channel i starts at bit 11 i: three bytes from there hold all its 11 bits.
-  const uint8_t* p = frame.payload;
-  for (uint8_t ch = 0; ch < kCrsfChannelCount; ++ch) {
-    const uint32_t bit = 11u * ch;
-    const uint32_t at = bit >> 3;
-    uint32_t word = p[at] | (uint32_t{p[at + 1]} << 8);
-    if (at + 2 < kCrsfChannelsPayload) word |= uint32_t{p[at + 2]} << 16;
-    out.value[ch] = static_cast<uint16_t>((word >> (bit & 7u)) & 0x7FFu);
-  }
+  if (!is_rc_channels(frame)) return false;
+  for (uint8_t ch = 0; ch < kCrsfChannelCount; ++ch) out.value[ch] = crsf_channel(frame.payload, ch);
   return true;
 }
 

@@ -57,6 +57,20 @@ struct CrsfLinkStatistics {
   int8_t downlink_snr = 0;
 };
 
+// Channel `ch` (0..15) of an RC channels payload: it starts at bit 11 ch, and the three bytes from
+// there hold all its 11 bits (two for the last channel).
+constexpr uint16_t crsf_channel(const uint8_t* payload, uint8_t ch) {
+  const uint32_t bit = 11u * (ch & 15u);
+  const uint32_t at = bit >> 3;
+  uint32_t word = payload[at] | (uint32_t{payload[at + 1]} << 8);
+  if (at + 2 < kCrsfChannelsPayload) word |= uint32_t{payload[at + 2]} << 16;
+  return static_cast<uint16_t>((word >> (bit & 7u)) & 0x7FFu);
+}
+
+constexpr bool is_rc_channels(const CrsfFrame& frame) {
+  return frame.type == static_cast<uint8_t>(CrsfType::rc_channels) && frame.size == kCrsfChannelsPayload;
+}
+
 // Payload decoders: false (and `out` untouched) when the frame is not of that type and size.
 bool decode_rc_channels(const CrsfFrame& frame, CrsfChannels& out);
 bool decode_link_statistics(const CrsfFrame& frame, CrsfLinkStatistics& out);

@@ -60,6 +60,20 @@ constexpr RcSticks rc_sticks(const CrsfChannels& c, const RcChannelMap& map) {
   return s;
 }
 
+// The same from an RC channels frame, reading only the six channels the map names (what the
+// flight does per frame); false when the frame is no RC channels frame.
+constexpr bool rc_sticks(const CrsfFrame& frame, const RcChannelMap& map, RcSticks& out) {
+  if (!is_rc_channels(frame)) return false;
+  const uint8_t* p = frame.payload;
+  out.lift = rc_lift(crsf_channel(p, map.lift));
+  out.roll = rc_stick(crsf_channel(p, map.roll));
+  out.pitch = rc_stick(crsf_channel(p, map.pitch));
+  out.yaw = rc_stick(crsf_channel(p, map.yaw));
+  out.arm = rc_switch_position(crsf_channel(p, map.arm)) == 2;
+  out.mode_position = rc_switch_position(crsf_channel(p, map.mode));
+  return true;
+}
+
 // The inverse, for the simulator's radio: a stick value to a CRSF channel value that reads as it
 // (within one unit) and a lift to one that reads exactly as it.
 constexpr uint16_t rc_channel_of_stick(int16_t stick) {

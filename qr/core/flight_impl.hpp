@@ -17,9 +17,9 @@ void Flight<Chain>::run_link() {
   // A frame's bytes come within a millisecond; after 50 ms of silence what the parser holds is
   // the start of a frame whose sender stopped (docs/protocol.md, section 4).
   if (parser_.buffered() != 0 && tick_us_ - last_byte_us_ > 50000u) parser_.line_idle();
-  while (radio_rx_.pop(byte)) {
-    radio_.push(byte, tick_us_, [this](const drivers::RcSticks& sticks) { on_radio_sticks(sticks); });
-  }
+  uint8_t radio_bytes[decltype(radio_rx_)::kCapacity];
+  const size_t radio_count = radio_rx_.pop(radio_bytes, sizeof radio_bytes);
+  radio_.push(radio_bytes, radio_count, tick_us_, [this](const drivers::RcSticks& sticks) { on_radio_sticks(sticks); });
 
   // The set-points change only with the sticks (or a parameter that scales them).
   if (pilot_changed_) {

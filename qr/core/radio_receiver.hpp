@@ -4,6 +4,7 @@
 // not that the pilot is there.
 #pragma once
 
+#include <stddef.h>
 #include <stdint.h>
 
 #include <common/drivers/crsf.hpp>
@@ -32,19 +33,18 @@ class RadioReceiver {
     map_.mode = channel(ParamId::rc_mode_channel);
   }
 
-  // One received byte; calls on_rc(const drivers::RcSticks&) for each valid RC frame it completes.
+  // Received bytes; calls on_rc(const drivers::RcSticks&) for each valid RC frame they complete.
   template <class OnRc>
-  void push(uint8_t byte, uint32_t now_us, OnRc&& on_rc) {
-    parser_.push(byte, [&](const drivers::CrsfFrame& frame) {
-      if (drivers::decode_link_statistics(frame, stats_)) {
+  void push(const uint8_t* bytes, size_t size, uint32_t now_us, OnRc&& on_rc) {
+    parser_.push(bytes, size, [&](const drivers::CrsfFrame& frame) {
+      drivers::RcSticks sticks;
+      if (drivers::rc_sticks(frame, map_, sticks)) {
         heard_ = true;
-        return;
+        last_rc_us_ = now_us;
+        on_rc(sticks);
+      } else if (drivers::decode_link_statistics(frame, stats_)) {
+        heard_ = true;
       }
-      drivers::CrsfChannels channels;
-      if (!drivers::decode_rc_channels(frame, channels)) return;
-      heard_ = true;
-      last_rc_us_ = now_us;
-      on_rc(drivers::rc_sticks(channels, map_));
     });
   }
 

@@ -36,6 +36,11 @@ void check_frame(const drivers::CrsfFrame& frame) {
     require(s.pitch >= -wire::kStickMax && s.pitch <= wire::kStickMax);
     require(s.yaw >= -wire::kStickMax && s.yaw <= wire::kStickMax);
     require(s.mode_position <= 2);
+    // The flight's way, the six mapped channels read straight from the payload, agrees.
+    drivers::RcSticks direct;
+    require(drivers::rc_sticks(frame, drivers::RcChannelMap{}, direct));
+    require(direct.lift == s.lift && direct.roll == s.roll && direct.pitch == s.pitch && direct.yaw == s.yaw &&
+            direct.arm == s.arm && direct.mode_position == s.mode_position);
   }
   drivers::CrsfLinkStatistics stats;
   if (drivers::decode_link_statistics(frame, stats))
