@@ -76,8 +76,8 @@ namespace wire {
       "the time the height estimate asks for (plus 2 m) becomes the hold-and-ramp") \
   ROW(pilot, 28, 0, 0, 1, 0, "0 PC link, 1 radio", \
       "who flies: the PC link's control frames or the radio receiver's (CRSF) channels; changed in safe only " \
-      "(nack not_from_this_mode elsewhere). With the radio, its arm switch arms (docs/safety.md rule 16) and the " \
-      "PC keeps telemetry, logs, parameters and the abort key") \
+      "(nack not_from_this_mode elsewhere; the value in force is accepted anywhere). With the radio, its arm " \
+      "switch arms (docs/safety.md rule 16) and the PC keeps telemetry, logs, parameters and the abort key") \
   ROW(rc_roll_channel, 29, 0, 1, 16, 1, "channel", "radio: the channel of the roll stick (1..16, as radios count)") \
   ROW(rc_pitch_channel, 30, 0, 1, 16, 2, "channel", "radio: the channel of the pitch stick") \
   ROW(rc_lift_channel, 31, 0, 1, 16, 3, "channel", "radio: the channel of the lift (throttle) stick") \

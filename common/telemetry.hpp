@@ -190,7 +190,7 @@ inline constexpr uint8_t kRadioArmSwitch = 0x04;  // the arm switch is on (in th
 inline constexpr uint8_t kRadioFlags = kRadioPilot | kRadioLinkUp | kRadioArmSwitch;
 
 // The radio receiver's link as its CRSF link statistics say (common/drivers/crsf.hpp), and who
-// flies. Sent with the system group once a radio has been heard or while it is the pilot.
+// flies. A telemetry turn of its own once a radio has been heard or while it is the pilot.
 struct TelemetryRadio {
   static constexpr MessageType kType = MessageType::telemetry_radio;
   uint8_t flags = 0;          // kRadio* bits
@@ -221,7 +221,7 @@ struct TelemetryRadio {
 };
 
 // The engines' speeds as bidirectional DShot ESCs report them (common/drivers/erpm.hpp), RPM,
-// saturated; sent with the engines group when the board reads them.
+// saturated; a telemetry turn of its own when the board reads them.
 struct TelemetryRpm {
   static constexpr MessageType kType = MessageType::telemetry_rpm;
   uint16_t rpm[4] = {0, 0, 0, 0};  // 0 front, 1 right, 2 back, 3 left

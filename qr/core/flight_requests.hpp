@@ -34,8 +34,10 @@ struct FlightRequests {
     f.enter_modes();
   }
   void operator()(const wire::ParamSet& p) {
-    // Who flies changes on the ground only (docs/safety.md rule 16).
-    if (p.id == static_cast<uint8_t>(wire::ParamId::pilot) && f.safety_.mode() != Mode::safe) {
+    // Who flies changes in safe only (docs/safety.md rule 16); the value in force is no change (a
+    // console sends every parameter at its start, whatever the mode).
+    if (p.id == static_cast<uint8_t>(wire::ParamId::pilot) && p.value != f.params_.get(wire::ParamId::pilot) &&
+        f.safety_.mode() != Mode::safe) {
       answer = NackReason::not_from_this_mode;
       return;
     }

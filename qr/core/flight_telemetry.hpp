@@ -39,17 +39,22 @@ class FlightTelemetry {
   }
 
  private:
-  // Engines, set-points, system, link, log status and height take turns, each at a sixth of the rate.
+  // Engines, set-points, system, link, log status and height take turns, each at a sixth of the
+  // rate; the radio's link and the engines' RPM take a turn of their own once there is one to
+  // report (a turn each keeps a period's work the most any one turn costs: the task's budget).
   template <class Flight, class Send>
   void slow_group(const Flight& f, Send& send) {
+    const bool radio = f.radio().heard() || f.pilot() == Pilot::radio;
+    wire::TelemetryRpm rpm;
+    const bool rpm_known = f.rpm(rpm.rpm);
     const uint8_t group = slow_group_;
-    slow_group_ = static_cast<uint8_t>(slow_group_ == 5 ? 0 : slow_group_ + 1);
+    do {
+      slow_group_ = static_cast<uint8_t>(slow_group_ == kRpmGroup ? 0 : slow_group_ + 1);
+    } while ((slow_group_ == kRadioGroup && !radio) || (slow_group_ == kRpmGroup && !rpm_known));
     if (group == 0) {
       wire::TelemetryEngines m;
       for (int i = 0; i < 4; ++i) m.engine[i] = f.engines().value[i];
       send(wire::encode(m));
-      wire::TelemetryRpm rpm;
-      if (f.rpm(rpm.rpm)) send(wire::encode(rpm));
     } else if (group == 1) {
       const auto& chain = f.chain();
       send(wire::encode(wire::TelemetrySetpoints{f.controls().lift, chain.roll_setpoint_e4(), chain.pitch_setpoint_e4(),
@@ -59,13 +64,16 @@ class FlightTelemetry {
       loop_time_us_ = 0;
       send(wire::encode(wire::TelemetrySystem{f.sample().battery_mv, cpu_load_permille_, loop,
                                               static_cast<uint16_t>(deadline_misses_)}));
-      if (f.radio().heard() || f.pilot() == Pilot::radio) send(wire::encode(radio_report(f)));
     } else if (group == 4) {
       send(wire::encode(f.log().status()));
     } else if (group == 5) {
       const auto& chain = f.chain();
       send(wire::encode(wire::TelemetryHeight{chain.height_mm(), wire::saturate_i16(chain.climb_mm_s()),
                                               chain.height_valid() ? wire::kHeightValid : uint8_t{0}}));
+    } else if (group == kRadioGroup) {
+      if (radio) send(wire::encode(radio_report(f)));
+    } else if (group == kRpmGroup) {
+      if (rpm_known) send(wire::encode(rpm));
     } else {
       const wire::LinkCounters& c = f.link_counters();
       send(wire::encode(wire::TelemetryLink{static_cast<uint16_t>(c.frames_ok), static_cast<uint16_t>(c.check_failures),
@@ -73,6 +81,9 @@ class FlightTelemetry {
                                             static_cast<uint16_t>(c.bytes_skipped)}));
     }
   }
+
+  static constexpr uint8_t kRadioGroup = 6;
+  static constexpr uint8_t kRpmGroup = 7;
 
   template <class Flight>
   static wire::TelemetryRadio radio_report(const Flight& f) {

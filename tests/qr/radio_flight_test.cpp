@@ -134,6 +134,9 @@ TEST_F(RadioFlightTest, ThePilotChangesInSafeOnly) {
   EXPECT_EQ(set_param(wire::ParamId::pilot, 1), NackReason::not_from_this_mode);
   EXPECT_EQ(flight.pilot(), Pilot::pc);
   EXPECT_EQ(flight.mode(), Mode::manual);
+  // The value in force is no change: a console sends every parameter when it starts.
+  EXPECT_EQ(set_param(wire::ParamId::pilot, 0), NackReason::none);
+  EXPECT_EQ(flight.mode(), Mode::manual);
 }
 
 TEST_F(RadioFlightTest, AnArmSwitchOnWhenTheRadioBecomesThePilotDoesNotArm) {
