@@ -12,6 +12,8 @@ class ByteRing {
   static_assert(Capacity > 0 && (Capacity & (Capacity - 1)) == 0, "capacity is a power of two");
 
  public:
+  static constexpr size_t kCapacity = Capacity;
+
   size_t size() const { return static_cast<size_t>(head_ - tail_); }
   size_t space() const { return Capacity - size(); }
   bool empty() const { return head_ == tail_; }
@@ -37,6 +39,12 @@ class ByteRing {
     if (!peek(byte)) return false;
     ++tail_;
     return true;
+  }
+  // Up to `max` bytes into `out`, oldest first; how many.
+  size_t pop(uint8_t* out, size_t max) {
+    size_t n = 0;
+    for (; n < max && !empty(); ++n) out[n] = bytes_[tail_++ & kMask];
+    return n;
   }
   void drop() {
     if (!empty()) ++tail_;

@@ -15,7 +15,28 @@ namespace wire {
 
 inline constexpr uint8_t kCrc8Polynomial = 0xD5;
 
-uint8_t crc8_update(uint8_t crc, uint8_t byte);
+// One table lookup per byte instead of eight shift/XOR steps: the QR computes a check for every
+// byte it receives and sends, and 256 bytes of flash are cheaper than its cycles. Inline, so a
+// parser's per-byte loop keeps the running check in a register (common/drivers/crsf_parser.hpp).
+struct Crc8Table {
+  uint8_t entry[256];
+};
+
+constexpr Crc8Table make_crc8_table() {
+  Crc8Table table{};
+  for (unsigned value = 0; value < 256; ++value) {
+    unsigned crc = value;
+    for (int bit = 0; bit < 8; ++bit) {
+      crc = (crc & 0x80u) != 0 ? (crc << 1) ^ kCrc8Polynomial : crc << 1;
+    }
+    table.entry[value] = static_cast<uint8_t>(crc);
+  }
+  return table;
+}
+
+inline constexpr Crc8Table kCrc8Table = make_crc8_table();
+
+inline uint8_t crc8_update(uint8_t crc, uint8_t byte) { return kCrc8Table.entry[crc ^ byte]; }
 uint8_t crc8(const uint8_t* data, size_t length);
 
 }  // namespace wire

@@ -52,6 +52,8 @@ enum class MessageType : uint8_t {
   telemetry_task = 0x99,
   log_status = 0x9C,
   telemetry_height = 0x9F,
+  telemetry_radio = 0xA0,
+  telemetry_rpm = 0xA3,
   // Their bytes keep a two-bit change of the type from giving a type of another length, where one
   // was free (docs/protocol.md section 3).
   observable_info = 0xEB,
@@ -107,6 +109,8 @@ inline constexpr MessageSpec kMessageTable[] = {
     {MessageType::telemetry_task, 7, false, Direction::qr_to_pc, "telemetry_task", false},
     {MessageType::log_status, 7, false, Direction::qr_to_pc, "log_status", false},
     {MessageType::telemetry_height, 7, false, Direction::qr_to_pc, "telemetry_height", false},
+    {MessageType::telemetry_radio, 9, false, Direction::qr_to_pc, "telemetry_radio", false},
+    {MessageType::telemetry_rpm, 8, false, Direction::qr_to_pc, "telemetry_rpm", false},
     {MessageType::observable_info, 6, false, Direction::qr_to_pc, "observable_info", false},
     {MessageType::observable_text, 9, false, Direction::qr_to_pc, "observable_text", false},
     {MessageType::observable_samples, 9, false, Direction::qr_to_pc, "observable_samples", false},

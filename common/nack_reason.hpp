@@ -20,6 +20,7 @@ enum class NackReason : uint8_t {
   not_supported = 10,     // a request this firmware does not carry out
   not_flying = 11,        // height hold asked for on the ground: there is no height to hold
   over_budget = 12,       // a stream the line cannot carry beside telemetry (stream_budget.hpp)
+  radio_is_pilot = 13,    // a flight mode asked for by the PC while the radio flies: its arm switch arms
 };
 
 struct NackReasonSpec {
@@ -41,6 +42,7 @@ inline constexpr NackReasonSpec kNackReasons[] = {
     {NackReason::not_supported, "not_supported", "not supported by this firmware"},
     {NackReason::not_flying, "not_flying", "not flying: nothing to hold"},
     {NackReason::over_budget, "over_budget", "the line cannot carry it beside control and telemetry"},
+    {NackReason::radio_is_pilot, "radio_is_pilot", "the radio is the pilot: arm with its switch"},
 };
 
 constexpr const NackReasonSpec* find_nack_reason(NackReason reason) {

@@ -73,7 +73,23 @@ namespace wire {
   ROW(panic_descent_mm_s, 27, 0, 100, 2000, 500, "mm/s", \
       "a panic that lands (yaw, full control or height hold, calibrated): descends level at this vertical " \
       "speed on the height estimate until it touches down; a landing that has not touched down in twice " \
-      "the time the height estimate asks for (plus 2 m) becomes the hold-and-ramp")
+      "the time the height estimate asks for (plus 2 m) becomes the hold-and-ramp") \
+  ROW(pilot, 28, 0, 0, 1, 0, "0 PC link, 1 radio", \
+      "who flies: the PC link's control frames or the radio receiver's (CRSF) channels; changed in safe only " \
+      "(nack not_from_this_mode elsewhere; the value in force is accepted anywhere). With the radio, its arm " \
+      "switch arms (docs/safety.md rule 17) and the PC keeps telemetry, logs, parameters and the abort key") \
+  ROW(rc_roll_channel, 29, 0, 1, 16, 1, "channel", "radio: the channel of the roll stick (1..16, as radios count)") \
+  ROW(rc_pitch_channel, 30, 0, 1, 16, 2, "channel", "radio: the channel of the pitch stick") \
+  ROW(rc_lift_channel, 31, 0, 1, 16, 3, "channel", "radio: the channel of the lift (throttle) stick") \
+  ROW(rc_yaw_channel, 32, 0, 1, 16, 4, "channel", "radio: the channel of the yaw stick") \
+  ROW(rc_arm_channel, 33, 0, 1, 16, 5, "channel", \
+      "radio: the channel of the arm switch (high: on; moved to on in safe with the lift low and the sticks " \
+      "neutral arms, moved to off in flight is an emergency stop)") \
+  ROW(rc_mode_channel, 34, 0, 1, 16, 6, "channel", \
+      "radio: the channel of the mode switch, read when arming: low manual, centre yaw control, high full " \
+      "control") \
+  ROW(motor_poles, 35, 0, 2, 36, 14, "magnet poles", \
+      "the engines' motors: RPM = the ESC's eRPM (bidirectional DShot) / (poles / 2)")
 
 enum class ParamId : uint8_t {
 #define WIRE_PARAMETER_ENUMERATOR(name, id, frac_bits, min, max, default_value, unit, meaning) name = id,

@@ -183,4 +183,56 @@ struct TelemetryHeight {
   constexpr bool valid() const { return (flags & ~kHeightValid) == 0; }
 };
 
+// TelemetryRadio::flags bits
+inline constexpr uint8_t kRadioPilot = 0x01;      // the radio flies (parameter pilot)
+inline constexpr uint8_t kRadioLinkUp = 0x02;     // a valid RC frame within the link timeout
+inline constexpr uint8_t kRadioArmSwitch = 0x04;  // the arm switch is on (in the last RC frame)
+inline constexpr uint8_t kRadioFlags = kRadioPilot | kRadioLinkUp | kRadioArmSwitch;
+
+// The radio receiver's link as its CRSF link statistics say (common/drivers/crsf.hpp), and who
+// flies. A telemetry turn of its own once a radio has been heard or while it is the pilot.
+struct TelemetryRadio {
+  static constexpr MessageType kType = MessageType::telemetry_radio;
+  uint8_t flags = 0;          // kRadio* bits
+  uint8_t uplink_rssi = 0;    // -dBm, the active antenna's
+  uint8_t uplink_lq = 0;      // link quality, %
+  int8_t uplink_snr = 0;      // dB
+  uint8_t rf_mode = 0;        // the receiver's packet rate index
+  uint8_t tx_power = 0;       // the transmitter's power index (crsf.hpp)
+  uint8_t downlink_rssi = 0;  // -dBm
+  uint8_t downlink_lq = 0;    // %
+  int8_t downlink_snr = 0;    // dB
+
+  constexpr bool operator==(const TelemetryRadio&) const = default;
+
+  template <class Self, class Visit>
+  static constexpr void fields(Self& m, Visit& v) {
+    v(m.flags);
+    v(m.uplink_rssi);
+    v(m.uplink_lq);
+    v(m.uplink_snr);
+    v(m.rf_mode);
+    v(m.tx_power);
+    v(m.downlink_rssi);
+    v(m.downlink_lq);
+    v(m.downlink_snr);
+  }
+  constexpr bool valid() const { return (flags & ~kRadioFlags) == 0 && uplink_lq <= 100 && downlink_lq <= 100; }
+};
+
+// The engines' speeds as bidirectional DShot ESCs report them (common/drivers/erpm.hpp), RPM,
+// saturated; a telemetry turn of its own when the board reads them.
+struct TelemetryRpm {
+  static constexpr MessageType kType = MessageType::telemetry_rpm;
+  uint16_t rpm[4] = {0, 0, 0, 0};  // 0 front, 1 right, 2 back, 3 left
+
+  constexpr bool operator==(const TelemetryRpm&) const = default;
+
+  template <class Self, class Visit>
+  static constexpr void fields(Self& m, Visit& v) {
+    v(m.rpm);
+  }
+  constexpr bool valid() const { return true; }
+};
+
 }  // namespace wire

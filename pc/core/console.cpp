@@ -96,6 +96,8 @@ struct Console::Receiver {
   void operator()(const wire::TelemetryTask& m) { console.telemetry_.on(m); }
   void operator()(const wire::LogStatus& m) { console.on_log_status(m); }
   void operator()(const wire::TelemetryHeight& m) { console.telemetry_.on(m); }
+  void operator()(const wire::TelemetryRadio& m) { console.telemetry_.on(m); }
+  void operator()(const wire::TelemetryRpm& m) { console.telemetry_.on(m); }
   void operator()(const wire::SensorLogPart& part) { console.downloader_.on_part(part, console.now_ms_); }
   void operator()(const wire::TelemetryLogPart& part) { console.downloader_.on_part(part, console.now_ms_); }
   void operator()(const wire::ObservableInfo& m) { console.streams_.on(m); }

@@ -23,6 +23,8 @@ struct TelemetryModel {
   std::map<uint8_t, wire::TelemetryTask> tasks;  // cycle figures by task number, one task per telemetry period
   std::optional<wire::LogStatus> log_status;     // the QR's logs: on or off, lines, room
   std::optional<wire::TelemetryHeight> height;   // the height estimate
+  std::optional<wire::TelemetryRadio> radio;     // the radio receiver's link and who flies
+  std::optional<wire::TelemetryRpm> rpm;         // the engines' speeds, from bidirectional DShot ESCs
 
   uint32_t attitude_frames = 0;
   uint32_t attitude_lost = 0;  // from gaps in the attitude tick
@@ -36,6 +38,8 @@ struct TelemetryModel {
   void on(const wire::TelemetryTask& message) { tasks[message.task] = message; }
   void on(const wire::LogStatus& message) { log_status = message; }
   void on(const wire::TelemetryHeight& message) { height = message; }
+  void on(const wire::TelemetryRadio& message) { radio = message; }
+  void on(const wire::TelemetryRpm& message) { rpm = message; }
 
   bool flag(uint8_t bit) const { return attitude && (attitude->flags & bit) != 0; }
 };

@@ -277,6 +277,38 @@ void Cockpit::draw_height(const Console& console, int width) {
   (void)width;
 }
 
+// The hobbyist's hardware (docs/drivers.md), once the QR reports it: who flies and the radio's
+// link as its CRSF link statistics say, and the engines' RPM from bidirectional DShot ESCs.
+void Cockpit::draw_hardware(const Console& console, int width) {
+  const TelemetryModel& t = console.telemetry();
+  int column = 10;
+  if (t.radio) {
+    const wire::TelemetryRadio& r = *t.radio;
+    const bool radio_flies = (r.flags & wire::kRadioPilot) != 0;
+    const bool up = (r.flags & wire::kRadioLinkUp) != 0;
+    put(14, 0, "radio", 0, A_BOLD);
+    put(14, column, radio_flies ? " RADIO FLIES " : "PC flies", radio_flies ? kWarning : kDim,
+        radio_flies ? A_BOLD | A_REVERSE : A_NORMAL);
+    column += 14;
+    put(14, column, up ? "link up" : "LINK LOST", up ? kInfo : kError, up ? A_NORMAL : A_BOLD | A_REVERSE);
+    column += 10;
+    const std::string stats = text("arm %s  RSSI -%u dBm  LQ %u %%  SNR %+d dB  down LQ %u %%",
+                                   (r.flags & wire::kRadioArmSwitch) != 0 ? "ON " : "off", r.uplink_rssi, r.uplink_lq,
+                                   r.uplink_snr, r.downlink_lq);
+    put(14, column, stats);
+    column += static_cast<int>(stats.size()) + 3;
+  }
+  if (t.rpm) {
+    const std::string rpm = text("rpm %u %u %u %u", t.rpm->rpm[0], t.rpm->rpm[1], t.rpm->rpm[2], t.rpm->rpm[3]);
+    if (!t.radio) {
+      put(14, 0, "engines", 0, A_BOLD);
+    } else if (column + static_cast<int>(rpm.size()) > width) {
+      return;  // a narrow terminal shows the radio, the pilot's concern
+    }
+    put(14, column, rpm, kDim);
+  }
+}
+
 void Cockpit::draw_log(const Console& console, int top, int rows, int width) {
   // A plain '-' rule: line-drawing characters turn into letters in some terminals and captures.
   put(top - 1, 0, std::string(static_cast<size_t>(width), '-'), kDim);
@@ -410,9 +442,10 @@ void Cockpit::compose(const Console& console) {
     draw_engines_and_attitude(console, width);
     draw_pilot(console, width);
     draw_height(console, width);
-    draw_log(console, 15, rows - 15, width);
+    draw_hardware(console, width);
+    draw_log(console, 16, rows - 16, width);
     // The simulator's truth, across the log's rule: beside the QR's estimate above it.
-    if (!console.truth().empty()) put(14, 10, " " + console.truth() + " ", kInfo);
+    if (!console.truth().empty()) put(15, 10, " " + console.truth() + " ", kInfo);
   }
   draw_link_alarm(console, width);
   if (console.help_visible()) draw_help(rows, width);

@@ -43,6 +43,7 @@ class Cockpit {
   void draw_engines_and_attitude(const Console& console, int width);
   void draw_pilot(const Console& console, int width);
   void draw_height(const Console& console, int width);
+  void draw_hardware(const Console& console, int width);
   void draw_log(const Console& console, int top, int rows, int width);
   void draw_link_alarm(const Console& console, int width);
   void draw_help(int rows, int width);

@@ -62,4 +62,25 @@ concept Board = requires(B& b, uint8_t& byte, EngineCommand engines) {
   {b.log_area()};
 };
 
+// Optional: a radio receiver on a second serial line (CRSF, common/drivers/crsf.hpp).
+//   bool radio_read(uint8_t&)          one received byte if there is one
+template <class B>
+concept RadioBoard = requires(B& b, uint8_t& byte) {
+  {b.radio_read(byte)};
+};
+
+// The raw answers of bidirectional DShot ESCs (common/drivers/erpm.hpp), 21 bits each as sampled
+// from the line; `fresh` bit i: engine i answered since the last call.
+struct EscAnswers {
+  uint32_t raw[4] = {0, 0, 0, 0};
+  uint8_t fresh = 0;
+};
+
+// Optional: ESCs that answer (bidirectional DShot).
+//   bool esc_answers(EscAnswers&)      the answers since the last call; false: none
+template <class B>
+concept EscAnswerBoard = requires(B& b, EscAnswers& answers) {
+  {b.esc_answers(answers)};
+};
+
 }  // namespace qr

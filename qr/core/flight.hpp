@@ -15,6 +15,7 @@
 #include <stdint.h>
 
 #include <common/byte_ring.hpp>
+#include <common/drivers/erpm.hpp>
 #include <common/frame_parser.hpp>
 #include <common/messages.hpp>
 #include <common/parameter_table.hpp>
@@ -25,6 +26,7 @@
 #include <qr/core/flight_telemetry.hpp>
 #include <qr/core/led_map.hpp>
 #include <qr/core/observable_streams.hpp>
+#include <qr/core/radio_receiver.hpp>
 #include <qr/core/rate.hpp>
 #include <qr/core/safety.hpp>
 #include <qr/core/scheduler.hpp>
@@ -72,6 +74,20 @@ class Flight {
   }
   uint32_t rx_space() const { return static_cast<uint32_t>(rx_.space()); }
   void receive(uint8_t byte) { rx_.push(byte); }
+  // The radio receiver's line (boards with one, RadioBoard).
+  uint32_t radio_space() const { return static_cast<uint32_t>(radio_rx_.space()); }
+  void radio_receive(uint8_t byte) { radio_rx_.push(byte); }
+  // Bidirectional DShot ESCs' answers (boards with them, EscAnswerBoard): the engines' RPM for
+  // telemetry. A garbled answer keeps the engine's last reading.
+  void esc_answers(const EscAnswers& answers) {
+    const uint8_t pole_pairs = static_cast<uint8_t>(params_.get(wire::ParamId::motor_poles) / 2);
+    for (int i = 0; i < 4; ++i) {
+      if ((answers.fresh & (1u << i)) == 0) continue;
+      const drivers::ErpmReading r = drivers::decode_erpm_answer(answers.raw[i]);
+      if (r.valid) rpm_[i] = wire::saturate_u16(drivers::rpm_of_period(r.period_us, pole_pairs));
+    }
+    rpm_heard_ = true;
+  }
   bool tx_peek(uint8_t& byte) const { return tx_.peek(byte); }
   void tx_pop() { tx_.drop(); }
   EngineCommand engines() const { return engines_; }
@@ -118,6 +134,17 @@ class Flight {
 
   // ---- read-outs for the units around the tick, boards, tests and the simulator ----
   Mode mode() const { return safety_.mode(); }
+  Pilot pilot() const { return pilot_; }
+  const RadioReceiver& radio() const { return radio_; }
+  // A valid RC frame within the link timeout.
+  bool radio_link_up() const {
+    return radio_.heard() && tick_us_ - radio_.last_rc_us() <= safety_.limits().link_timeout_us;
+  }
+  // The engines' RPM from their ESCs' answers; false until a board handed any.
+  bool rpm(uint16_t (&out)[4]) const {
+    for (int i = 0; i < 4; ++i) out[i] = rpm_[i];
+    return rpm_heard_;
+  }
   // The pilot's input as of the last control frame this tick's link task read.
   const ControlInput& controls() const { return controls_; }
   const SensorSample& sample() const { return sample_; }
@@ -139,6 +166,7 @@ class Flight {
   friend struct FlightRequests;
 
   void on_frame(const wire::Frame& frame);
+  void on_radio_sticks(const drivers::RcSticks& sticks);
   void send_download_parts();
   // Parameter fan-out, when a parameter changes (never per tick): the safety machine's limits
   // and the chain's coefficients. The task rates that are parameters are read by the scheduler
@@ -146,6 +174,14 @@ class Flight {
   void apply_parameters() {
     safety_.limits() = safety_limits(params_);
     chain_.set_parameters(params_);
+    radio_.set_map(params_);
+    const Pilot pilot = static_cast<Pilot>(params_.get(wire::ParamId::pilot));
+    if (pilot != pilot_) {
+      // The old pilot's sticks are nobody's now, and the new one's arm switch must be seen off.
+      pilot_ = pilot;
+      controls_ = ControlInput{};
+      safety_.pilot_changed();
+    }
     pilot_changed_ = true;
   }
   // Runs the entry action of every mode the safety machine has just entered.
@@ -171,7 +207,9 @@ class Flight {
     s.engines = engines_;
     s.calibrated = chain_.calibrated();
     s.battery_mv = sample_.battery_mv;
-    s.last_frame_us = last_frame_us_;
+    // The link watchdog watches the pilot's link: the radio's RC frames when the radio flies.
+    s.pilot = pilot_;
+    s.last_frame_us = pilot_ == Pilot::radio ? radio_.last_rc_us() : last_frame_us_;
     s.tilt_mrad = chain_.tilt_mrad();
     s.height_valid = chain_.height_valid();
     s.height_mm = chain_.height_mm();
@@ -184,6 +222,12 @@ class Flight {
   // Send side: a telemetry period's frames plus replies, with room to spare.
   wire::ByteRing<256> tx_;
   wire::FrameParser parser_{wire::Listen::pc_to_qr};
+  // The radio's line: 64 bytes hold more than a tick's worth at 420 000 baud.
+  wire::ByteRing<64> radio_rx_;
+  RadioReceiver radio_;
+  Pilot pilot_ = Pilot::pc;
+  uint16_t rpm_[4] = {0, 0, 0, 0};
+  bool rpm_heard_ = false;
   wire::RequestDedup dedup_;
   wire::ParameterValues params_;
   SafetyMachine safety_;

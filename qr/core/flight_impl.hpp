@@ -17,6 +17,9 @@ void Flight<Chain>::run_link() {
   // A frame's bytes come within a millisecond; after 50 ms of silence what the parser holds is
   // the start of a frame whose sender stopped (docs/protocol.md, section 4).
   if (parser_.buffered() != 0 && tick_us_ - last_byte_us_ > 50000u) parser_.line_idle();
+  uint8_t radio_bytes[decltype(radio_rx_)::kCapacity];
+  const size_t radio_count = radio_rx_.pop(radio_bytes, sizeof radio_bytes);
+  radio_.push(radio_bytes, radio_count, tick_us_, [this](const drivers::RcSticks& sticks) { on_radio_sticks(sticks); });
 
   // The set-points change only with the sticks (or a parameter that scales them).
   if (pilot_changed_) {
@@ -60,6 +63,20 @@ void Flight<Chain>::on_frame(const wire::Frame& frame) {
   dedup_.record(frame, answer, uptime_ms_);
   send(wire::reply_frame(frame.type, admission.seq, answer));
   if (handler.report.id != 0) send(wire::encode(handler.report));
+}
+
+// An RC frame's sticks and switches, when the radio is the pilot: the controls as a control frame
+// would set them, then the switches (arming, the emergency stop: docs/safety.md rule 17).
+template <SignalChain Chain>
+void Flight<Chain>::on_radio_sticks(const drivers::RcSticks& sticks) {
+  if (pilot_ != Pilot::radio) return;
+  controls_ = ControlInput{sticks.lift, sticks.roll, sticks.pitch, sticks.yaw};
+  pilot_changed_ = true;
+  safety_.sticks_moved(controls_);
+  Situation s = situation();
+  s.requester = Pilot::radio;
+  safety_.radio_switches(sticks.arm, kRadioArmingModes[sticks.mode_position], s);
+  enter_modes();
 }
 
 template <SignalChain Chain>

@@ -22,6 +22,7 @@ struct FlightRequests {
   wire::ParamReport report{};  // id 0: nothing to report
 
   void operator()(const wire::Control& c) {
+    if (f.pilot_ != Pilot::pc) return;  // the radio flies: the PC's sticks are nobody's (rule 17)
     f.controls_ = ControlInput{c.lift, c.roll, c.pitch, c.yaw};
     f.pilot_changed_ = true;
     // A lift change ends height hold before the chain runs this tick.
@@ -33,6 +34,13 @@ struct FlightRequests {
     f.enter_modes();
   }
   void operator()(const wire::ParamSet& p) {
+    // Who flies changes in safe only (docs/safety.md rule 17); the value in force is no change (a
+    // console sends every parameter at its start, whatever the mode).
+    if (p.id == static_cast<uint8_t>(wire::ParamId::pilot) && p.value != f.params_.get(wire::ParamId::pilot) &&
+        f.safety_.mode() != Mode::safe) {
+      answer = NackReason::not_from_this_mode;
+      return;
+    }
     answer = f.params_.set(p.id, p.value);
     if (answer != NackReason::none) return;
     f.apply_parameters();

@@ -6,6 +6,7 @@
 
 #include <common/messages.hpp>
 #include <common/units.hpp>
+#include <qr/core/flight_types.hpp>
 #include <qr/core/scheduler.hpp>
 
 namespace qr {
@@ -38,11 +39,18 @@ class FlightTelemetry {
   }
 
  private:
-  // Engines, set-points, system, link, log status and height take turns, each at a sixth of the rate.
+  // Engines, set-points, system, link, log status and height take turns, each at a sixth of the
+  // rate; the radio's link and the engines' RPM take a turn of their own once there is one to
+  // report (a turn each keeps a period's work the most any one turn costs: the task's budget).
   template <class Flight, class Send>
   void slow_group(const Flight& f, Send& send) {
+    const bool radio = f.radio().heard() || f.pilot() == Pilot::radio;
+    wire::TelemetryRpm rpm;
+    const bool rpm_known = f.rpm(rpm.rpm);
     const uint8_t group = slow_group_;
-    slow_group_ = static_cast<uint8_t>(slow_group_ == 5 ? 0 : slow_group_ + 1);
+    do {
+      slow_group_ = static_cast<uint8_t>(slow_group_ == kRpmGroup ? 0 : slow_group_ + 1);
+    } while ((slow_group_ == kRadioGroup && !radio) || (slow_group_ == kRpmGroup && !rpm_known));
     if (group == 0) {
       wire::TelemetryEngines m;
       for (int i = 0; i < 4; ++i) m.engine[i] = f.engines().value[i];
@@ -62,12 +70,37 @@ class FlightTelemetry {
       const auto& chain = f.chain();
       send(wire::encode(wire::TelemetryHeight{chain.height_mm(), wire::saturate_i16(chain.climb_mm_s()),
                                               chain.height_valid() ? wire::kHeightValid : uint8_t{0}}));
+    } else if (group == kRadioGroup) {
+      if (radio) send(wire::encode(radio_report(f)));
+    } else if (group == kRpmGroup) {
+      if (rpm_known) send(wire::encode(rpm));
     } else {
       const wire::LinkCounters& c = f.link_counters();
       send(wire::encode(wire::TelemetryLink{static_cast<uint16_t>(c.frames_ok), static_cast<uint16_t>(c.check_failures),
                                             static_cast<uint16_t>(c.unknown_types),
                                             static_cast<uint16_t>(c.bytes_skipped)}));
     }
+  }
+
+  static constexpr uint8_t kRadioGroup = 6;
+  static constexpr uint8_t kRpmGroup = 7;
+
+  template <class Flight>
+  static wire::TelemetryRadio radio_report(const Flight& f) {
+    const auto& st = f.radio().stats();
+    wire::TelemetryRadio m;
+    m.flags = static_cast<uint8_t>((f.pilot() == Pilot::radio ? wire::kRadioPilot : 0) |
+                                   (f.radio_link_up() ? wire::kRadioLinkUp : 0) |
+                                   (f.safety().arm_switch() ? wire::kRadioArmSwitch : 0));
+    m.uplink_rssi = st.active_antenna == 0 ? st.uplink_rssi_ant1 : st.uplink_rssi_ant2;
+    m.uplink_lq = st.uplink_link_quality > 100 ? uint8_t{100} : st.uplink_link_quality;
+    m.uplink_snr = st.uplink_snr;
+    m.rf_mode = st.rf_mode;
+    m.tx_power = st.uplink_tx_power;
+    m.downlink_rssi = st.downlink_rssi;
+    m.downlink_lq = st.downlink_link_quality > 100 ? uint8_t{100} : st.downlink_link_quality;
+    m.downlink_snr = st.downlink_snr;
+    return m;
   }
 
   uint8_t seq_ = 0;

@@ -20,6 +20,10 @@ struct ControlInput {
   bool neutral() const { return lift == 0 && roll == 0 && pitch == 0 && yaw == 0; }
 };
 
+// Who flies (parameter pilot): the PC link's control frames or the radio receiver's channels.
+// The PC link always keeps telemetry, logs, parameters and the abort key (safe, panic, exit).
+enum class Pilot : uint8_t { pc = 0, radio = 1 };
+
 using wire::Mode;
 using wire::NackReason;  // the safety machine's refusals are the first reasons on the wire's list
 

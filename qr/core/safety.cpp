@@ -25,6 +25,9 @@ struct Guard {
 };
 
 constexpr Guard kGuards[] = {
+    // One pilot at a time: while the radio flies, only its arm switch enters a flight mode.
+    {NackReason::radio_is_pilot,
+     [](Mode, Mode to, const Situation& s, const SafetyLimits&) { return s.pilot != s.requester && rule(to).flies; }},
     {NackReason::not_from_this_mode,
      [](Mode from, Mode to, const Situation&, const SafetyLimits&) { return from != rule(to).entered_from; }},
     // Leaving safe: the pilot's hands and the engines at rest (height hold is entered in flight).
@@ -158,6 +161,22 @@ void SafetyMachine::request_exit(const Situation& s) {
   exit_pending_ = true;
   request(index(Mode::safe), s);
   supervise(s);
+}
+
+NackReason SafetyMachine::radio_switches(bool arm, Mode wanted, const Situation& s) {
+  // A frame after a silence longer than the link timeout is the link coming back.
+  if (!radio_heard_ || s.now_us - radio_heard_us_ > limits_.link_timeout_us) arm_seen_off_ = false;
+  radio_heard_ = true;
+  radio_heard_us_ = s.now_us;
+  arm_on_ = arm;
+  if (!arm) {
+    arm_seen_off_ = true;
+    if (rule(mode_).flies) enter_panic(PanicCause::disarmed, s);  // the pilot's emergency stop
+    return NackReason::none;
+  }
+  if (!arm_seen_off_ || mode_ != Mode::safe) return NackReason::none;
+  arm_seen_off_ = false;  // one movement, one attempt: a refused arming waits for the next
+  return request(index(wanted), s);
 }
 
 void SafetyMachine::calibration_finished() {

@@ -11,10 +11,11 @@
 
 namespace qr {
 
-enum class PanicCause : uint8_t { none = 0, requested, link_lost, battery_low, tilt, count };
+enum class PanicCause : uint8_t { none = 0, requested, link_lost, battery_low, tilt, disarmed, count };
 
 // As the debug text says them ("mode: panic (link lost)").
-inline constexpr const char* kPanicCauseNames[] = {"", "requested", "link lost", "battery low", "tilt"};
+inline constexpr const char* kPanicCauseNames[] = {"",     "requested",     "link lost", "battery low",
+                                                   "tilt", "arm switch off"};
 static_assert(sizeof(kPanicCauseNames) / sizeof(kPanicCauseNames[0]) == static_cast<uint8_t>(PanicCause::count),
               "one name per panic cause");
 
@@ -47,10 +48,12 @@ struct Situation {
   bool calibrated = false;
   uint16_t battery_mv = 0;
   uint32_t last_frame_us = 0;
-  int32_t tilt_mrad = 0;      // max(|roll|, |pitch|) from the attitude estimator
-  bool height_valid = false;  // the height estimate has its reference (a calibration with the barometer)
-  int32_t height_mm = 0;      // the height estimate
-  bool landed = false;        // the chain's landed detector: on the ground (in a landing: touched down)
+  int32_t tilt_mrad = 0;        // max(|roll|, |pitch|) from the attitude estimator
+  bool height_valid = false;    // the height estimate has its reference (a calibration with the barometer)
+  int32_t height_mm = 0;        // the height estimate
+  bool landed = false;          // the chain's landed detector: on the ground (in a landing: touched down)
+  Pilot pilot = Pilot::pc;      // who flies; last_frame_us is the time of that link's last valid frame
+  Pilot requester = Pilot::pc;  // who asks for the mode: the radio's arm switch or the PC link
 };
 
 class SafetyMachine {
@@ -96,6 +99,17 @@ class SafetyMachine {
   // of the lift ends height hold at once, back to full control.
   void sticks_moved(const ControlInput& c);
 
+  // The radio's switches as each valid RC frame brings them while the radio is the pilot (rule
+  // 16): the arm switch moved to on in safe asks for `wanted` (the mode switch's mode) through the
+  // guards every request passes (lift low, sticks neutral, ...); moved to off in a flight mode it
+  // is an emergency stop. A switch already on at power-up, when the radio became the pilot or
+  // when its link came back after the link timeout arms nothing: it must be seen off first, and
+  // one movement to on is one attempt, refused or not. `s.requester` is the radio.
+  NackReason radio_switches(bool arm, Mode wanted, const Situation& s);
+  // The pilot parameter changed (in safe only): the new pilot's arm switch must be seen off first.
+  void pilot_changed() { arm_seen_off_ = false; }
+  bool arm_switch() const { return arm_on_; }
+
   // Every tick: watchdogs (link, battery, tilt), the panic timeline and a pending exit.
   void supervise(const Situation& s);
 
@@ -128,6 +142,10 @@ class SafetyMachine {
   uint16_t hold_level_ = 0;        // the cut's level, engine units
   uint32_t flying_q8_ = 0;         // flying_lift() x 256
   uint16_t held_lift_ = 0;         // the lift stick when height hold was entered
+  bool arm_seen_off_ = false;      // the radio's arm switch was off in a frame since it last armed
+  bool arm_on_ = false;            // the arm switch in the last RC frame
+  bool radio_heard_ = false;
+  uint32_t radio_heard_us_ = 0;  // the last RC frame's time: a longer silence than the timeout is a loss
 };
 
 }  // namespace qr

@@ -16,6 +16,10 @@
 //   EngineCommand engines() const;  uint8_t leds() const;  bool running() const;
 //   void account(const TickReport&, const SchedulerStats<kTaskCount>&);   after each tick
 //
+// A board with a radio receiver (RadioBoard, board.hpp) and a context that takes its bytes
+// (radio_space, radio_receive) also get a bounded number of radio bytes per tick; a board whose
+// ESCs answer (EscAnswerBoard) hands their answers to the context (esc_answers) after the engines.
+//
 // Every rate, phase and budget is in the context's task table (task.hpp); no task divides itself.
 //
 // The sets are known at compile time, so each is compiled into a straight run of its rows
@@ -45,6 +49,9 @@ struct SchedulerLimits {
   // gets twice that, to catch up after a late tick.
   uint16_t rx_bytes_per_tick = static_cast<uint16_t>(2 * kLineBytesPerTick + 8);
   uint16_t tx_bytes_per_tick = static_cast<uint16_t>(kLineBytesPerTick + 4);
+  // A CRSF receiver at 420 000 baud delivers up to 42 bytes a millisecond in a burst (an RC frame
+  // is 26 bytes, at most 150 of them a second here): a frame and a half per tick.
+  uint16_t radio_bytes_per_tick = 40;
 };
 
 // What the context learns about each finished tick (for telemetry).
@@ -112,11 +119,21 @@ class Scheduler {
       if (!board_.serial_read(byte)) break;
       context_.receive(byte);
     }
+    if constexpr (RadioBoard<B> && requires(Context & c) { c.radio_receive(uint8_t{}); }) {
+      for (uint16_t n = 0; n < limits_.radio_bytes_per_tick && context_.radio_space() > 0; ++n) {
+        if (!board_.radio_read(byte)) break;
+        context_.radio_receive(byte);
+      }
+    }
 
     run_current_set(next_set_, ticks_);
     running_ = kNoTask;
 
     board_.set_engines(context_.engines());
+    if constexpr (EscAnswerBoard<B> && requires(Context & c, const EscAnswers& a) { c.esc_answers(a); }) {
+      EscAnswers answers;
+      if (board_.esc_answers(answers)) context_.esc_answers(answers);
+    }
     board_.set_leds(context_.leds());
     for (uint16_t n = 0; n < limits_.tx_bytes_per_tick && context_.tx_peek(byte); ++n) {
       if (!board_.serial_write(byte)) break;

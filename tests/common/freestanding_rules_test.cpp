@@ -1,6 +1,6 @@
 // The freestanding rules for common/ (DESIGN.md): only <stdint.h>, <stddef.h> and project
 // headers; no heap, no exceptions, no RTTI, no virtual dispatch, no floating point, no memcpy of
-// structs. The compiler flags catch some of this; this test reads the sources for the rest.
+// structs. The compiler flags catch some of this; this test reads the sources for the rest (drivers/ too).
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -16,7 +16,7 @@ TEST(FreestandingRules, CommonUsesOnlyAllowedHeadersAndNoForbiddenFeatures) {
   const std::regex forbidden(
       R"(\b(float|double|new|delete|malloc|free|memcpy|virtual|throw|try|catch|typeid|dynamic_cast|std)\b)");
   int files = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(QR_COMMON_DIR)) {
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(QR_COMMON_DIR)) {
     const std::string ext = entry.path().extension().string();
     if (ext != ".hpp" && ext != ".cpp") continue;
     ++files;

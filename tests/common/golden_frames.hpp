@@ -108,6 +108,9 @@ inline std::vector<GoldenFrame> golden_frames() {
              "4D E8 05 D2 04 DC 05 E2 04 DC 05 1B"),
       golden("G34", Nack{MessageType::stream_request, 9, NackReason::over_budget}, "4D 82 41 09 0C B2"),
       golden("G35", log_resend(6, LogKind::telemetry, 120, {3, 9, 34}), "4D 6C 06 01 78 00 08 02 00 00 04 F3"),
+      golden("G36", TelemetryRadio{kRadioPilot | kRadioLinkUp, 60, 100, 9, 5, 3, 70, 98, -4},
+             "4D A0 03 3C 64 09 05 03 46 62 FC 68"),
+      golden("G37", TelemetryRpm{{20026, 19873, 20110, 19950}}, "4D A3 3A 4E A1 4D 8E 4E EE 4D B3"),
   };
 }
 

@@ -9,7 +9,7 @@ import argparse
 import json
 import sys
 
-MODES = ["safe", "panic", "panic-landing", "manual", "calibration", "yaw", "full", "full-float"]
+MODES = ["safe", "panic", "panic-landing", "manual", "calibration", "yaw", "full", "full-float", "full-radio-dshot"]
 
 
 def main():
@@ -25,7 +25,10 @@ def main():
         sys.exit(f"malformed JSON line: {e}")
     if not objects or any(k not in objects[-1] for k in ("summary", "full_tick_instr_mean", "float_over_fixed")):
         sys.exit("the last line must be the summary with full_tick_instr_mean and float_over_fixed")
-    seen = {o.get("mode"): o for o in objects[:-1]}
+    seen = {o.get("mode"): o for o in objects[:-1] if "mode" in o}
+    drivers = [o for o in objects[:-1] if "drivers" in o]
+    if len(drivers) != 1 or any(drivers[0].get(k, 0) <= 0 for k in ("dshot4_instr_mean", "crsf_rc_instr_mean")):
+        sys.exit("no drivers line with dshot4_instr_mean and crsf_rc_instr_mean")
     for mode in MODES:
         o = seen.get(mode)
         if o is None:

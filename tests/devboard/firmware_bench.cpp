@@ -8,9 +8,16 @@
 // 100 Hz, control at 50 Hz, the mode requests that arm each mode the legal way, the observable
 // table and two observable streams in the modes on the ground.
 //
-// Last, the same firmware with the chain in float (soft-float through libgcc) flies full control:
-// the speed comparison the fixed-point design is judged by.
+// Then the same firmware with the chain in float (soft-float through libgcc) flies full control:
+// the speed comparison the fixed-point design is judged by. Then the hobbyist's hardware
+// (docs/drivers.md): the cost of encoding four DShot frames and of parsing one CRSF RC frame, and
+// full control flown from a radio (CRSF at 150 Hz on the board's receiver line, armed by its
+// switch) with the engines sent as DShot frames.
 #include <common/byte_ring.hpp>
+#include <common/drivers/crsf.hpp>
+#include <common/drivers/crsf_parser.hpp>
+#include <common/drivers/dshot_commands.hpp>
+#include <common/drivers/rc_sticks.hpp>
 #include <common/messages.hpp>
 #include <qr/boards/rv32virt/devboard.hpp>
 #include <qr/core/chain/flight_chain.hpp>
@@ -50,6 +57,9 @@ constexpr uint32_t kMeasuredTicks = 2000;
 constexpr uint32_t kArmingTicksMax = 5000;
 
 
+// `Radio`: the board has a receiver line (the rig puts CRSF frames on it) and drives DShot ESCs
+// (set_engines encodes the four frames, inside the measured tick).
+template <bool Radio>
 class BenchBoard {
  public:
   uint32_t wait_kick(uint32_t seen) {
@@ -62,8 +72,14 @@ class BenchBoard {
   uint32_t now_us() const { return now_us_; }
   uint32_t cycles() const { return rv32virt::instret(); }
   qr::SensorSample read_sensors() const { return sample_; }
-  void set_engines(qr::EngineCommand) {}
+  void set_engines(qr::EngineCommand engines) {
+    if constexpr (Radio) {
+      for (int i = 0; i < 4; ++i)
+        dshot[i] = escs_[i].next_frame(engines.value[i], drivers::DshotLine::bidirectional, false);
+    }
+  }
   bool serial_read(uint8_t& byte) { return rx.pop(byte); }
+  bool radio_read(uint8_t& byte) requires Radio { return radio.pop(byte); }
   bool serial_write(uint8_t) { return true; }
   void set_leds(uint8_t) {}
   qr::LogArea log_area() { return {}; }
@@ -76,27 +92,59 @@ class BenchBoard {
   qr::ControlInput sticks() { return flight_.next().sticks; }
 
   wire::ByteRing<256> rx;
+  wire::ByteRing<128> radio;
+  volatile uint16_t dshot[4] = {0, 0, 0, 0};  // the frames the timer would send
 
  private:
+  drivers::DshotCommandSequencer escs_[4];
   qr::chain::synthetic::Flight<qr::kControlHz> flight_;
   qr::SensorSample sample_;
   uint32_t kicks_ = 0;
   uint32_t now_us_ = 0;
 };
 
-template <class Chain>
+template <class Chain, bool Radio = false>
 struct Rig {
-  BenchBoard board;
+  BenchBoard<Radio> board;
   qr::Flight<Chain> flight;
-  qr::Scheduler<BenchBoard, qr::Flight<Chain>> scheduler{board, flight};
+  qr::Scheduler<BenchBoard<Radio>, qr::Flight<Chain>> scheduler{board, flight};
   uint8_t seq = 0;
   uint32_t tick = 0;
   wire::Control sticks;
+  drivers::CrsfChannels radio;  // the transmitter's channels (AETR, arm 5, mode 6)
+  uint32_t radio_phase = 0;
 
-  // One period: the pilot's frames for it, then the firmware's tick.
+  // One period: the pilot's frames for it (and the radio's RC frames at 150 Hz), then the
+  // firmware's tick.
   void step() {
     if (tick++ % 20 == 0) board.send(sticks);
+    if constexpr (Radio) {
+      radio_phase += 150;
+      if (radio_phase >= qr::kControlHz) {
+        radio_phase -= qr::kControlHz;
+        const drivers::CrsfFrameBytes f = drivers::encode_rc_channels(radio);
+        board.radio.push(f.bytes, f.size);
+      }
+    }
     scheduler.tick();
+  }
+  void radio_sticks(const qr::ControlInput& c) {
+    radio.value[0] = drivers::rc_channel_of_stick(c.roll);
+    radio.value[1] = drivers::rc_channel_of_stick(c.pitch);
+    radio.value[2] = drivers::rc_channel_of_lift(c.lift);
+    radio.value[3] = drivers::rc_channel_of_stick(c.yaw);
+  }
+  // The radio arms full control: pilot parameter to the radio, the mode switch high, the arm
+  // switch seen off and moved to on with the sticks neutral.
+  bool arm_by_radio() {
+    board.send(wire::ParamSet{++seq, static_cast<uint8_t>(wire::ParamId::pilot), 1});
+    radio_sticks(qr::ControlInput{});
+    radio.value[4] = drivers::kCrsfChannelMin;
+    radio.value[5] = drivers::kCrsfChannelMax;
+    for (int i = 0; i < 30; ++i) step();
+    radio.value[4] = drivers::kCrsfChannelMax;
+    for (int i = 0; i < 30; ++i) step();
+    return flight.mode() == Mode::full_control && flight.pilot() == qr::Pilot::radio;
   }
   bool request(Mode mode) {
     board.send(wire::ModeChange{++seq, mode});
@@ -129,6 +177,7 @@ struct Rig {
       for (uint32_t i = 0; i < kArmingTicksMax && flight.mode() != Mode::safe; ++i) step();
     }
     if (mode == Mode::safe) return true;
+    if (Radio) return arm_by_radio();
     if (mode == Mode::panic && landing) {
       return request(Mode::full_control) && (fly(300), request(Mode::panic)) && flight.safety().landing();
     }
@@ -139,6 +188,7 @@ struct Rig {
     for (uint32_t i = 0; i < ticks; ++i) {
       const qr::ControlInput c = board.sticks();
       sticks = wire::Control{c.lift, c.roll, c.pitch, c.yaw};
+      if constexpr (Radio) radio_sticks(c);
       step();
     }
   }
@@ -167,8 +217,8 @@ struct ModeFigures {
 
 // Runs one mode and prints its line (per task: runs, mean, max, budget, overruns; and the
 // scheduler's own cost per tick); the figures are zero if the mode could not be armed.
-template <class Chain>
-ModeFigures bench_mode(Rig<Chain>& rig, Mode mode, const char* suffix, bool landing) {
+template <class Chain, bool Radio>
+ModeFigures bench_mode(Rig<Chain, Radio>& rig, Mode mode, const char* suffix, bool landing) {
   rv32virt::puts("{\"mode\":\"");
   rv32virt::puts(wire::mode_key(mode));
   rv32virt::puts(suffix);
@@ -214,10 +264,59 @@ ModeFigures bench_mode(Rig<Chain>& rig, Mode mode, const char* suffix, bool land
   return figures;
 }
 
-template <Mode M, class Chain, bool Landing = false>
+template <Mode M, class Chain, bool Landing = false, bool Radio = false>
 ModeFigures measure(const char* suffix) {
-  static Rig<Chain> rig;  // one fresh firmware per mode, outside the 8 KiB stack
+  static Rig<Chain, Radio> rig;  // one fresh firmware per mode, outside the 8 KiB stack
   return bench_mode(rig, M, suffix, Landing);
+}
+
+// The drivers' own cost, each piece timed alone (the cycle counter's own reads subtracted): four
+// DShot frames from the engine values, and one CRSF RC frame through the parser (its 26 bytes as
+// the board's receiver line delivered them), the six channels the map names decoded and mapped to
+// sticks and switches, as the flight does. The inputs change every run, as they do in flight.
+struct DriverFigures {
+  uint32_t dshot4_mean = 0;
+  uint32_t crsf_rc_mean = 0;
+};
+
+// Keeps a result the compiler would otherwise find unused and drop with the work that made it.
+inline void keep(uint32_t value) { asm volatile("" : : "r"(value)); }
+
+DriverFigures bench_drivers() {
+  constexpr uint32_t kRuns = 500;
+  static drivers::DshotCommandSequencer escs[4];
+  static drivers::CrsfParser parser;
+  const drivers::RcChannelMap map;
+  drivers::CrsfChannels channels;
+  for (uint16_t& v : channels.value) v = drivers::kCrsfChannelMid;
+  const uint32_t t0 = rv32virt::instret();
+  const uint32_t overhead = rv32virt::instret() - t0;
+  uint32_t dshot_sum = 0, crsf_sum = 0, frames = 0;
+  for (uint32_t run = 0; run < kRuns; ++run) {
+    const uint16_t engine[4] = {static_cast<uint16_t>(300 + run % 400), static_cast<uint16_t>(310 + run % 390),
+                                static_cast<uint16_t>(290 + run % 410), static_cast<uint16_t>(305 + run % 395)};
+    for (uint32_t ch = 0; ch < 4; ++ch) channels.value[ch] = static_cast<uint16_t>(600 + (run * 7 + ch * 131) % 800);
+    const drivers::CrsfFrameBytes f = drivers::encode_rc_channels(channels);
+
+    const uint32_t a = rv32virt::instret();
+    for (int i = 0; i < 4; ++i) keep(escs[i].next_frame(engine[i], drivers::DshotLine::bidirectional, false));
+    const uint32_t b = rv32virt::instret();
+    parser.push(f.bytes, f.size, [&](const drivers::CrsfFrame& frame) {
+      drivers::RcSticks sticks;
+      if (drivers::rc_sticks(frame, map, sticks)) {
+        keep(sticks.lift);
+        ++frames;
+      }
+    });
+    const uint32_t c = rv32virt::instret();
+    dshot_sum += b - a - overhead;
+    crsf_sum += c - b - overhead;
+  }
+  DriverFigures d;
+  if (frames != kRuns) return d;  // every frame must have been read
+  d.dshot4_mean = dshot_sum / kRuns;
+  d.crsf_rc_mean = crsf_sum / kRuns;
+  return d;
 }
 
 }  // namespace
@@ -231,6 +330,21 @@ int main() {
   measure<Mode::yaw_control, qr::FixedChain>("");
   const ModeFigures full = measure<Mode::full_control, qr::FixedChain>("");
   const ModeFigures full_float = measure<Mode::full_control, FloatChain>("-float");
+  const ModeFigures full_radio = measure<Mode::full_control, qr::FixedChain, false, true>("-radio-dshot");
+  const DriverFigures drivers_cost = bench_drivers();
+  rv32virt::puts(
+      "{\"drivers\":\"four DShot frames and one CRSF RC frame (parse, channels, sticks); target: together <= 400 "
+      "instructions per tick mean\",\"dshot4_instr_mean\":");
+  rv32virt::put_u32(drivers_cost.dshot4_mean);
+  rv32virt::puts(",\"crsf_rc_instr_mean\":");
+  rv32virt::put_u32(drivers_cost.crsf_rc_mean);
+  rv32virt::puts(",\"together_instr_mean\":");
+  rv32virt::put_u32(drivers_cost.dshot4_mean + drivers_cost.crsf_rc_mean);
+  rv32virt::puts(",\"full_radio_dshot_tick_instr_mean\":");
+  rv32virt::put_u32(full_radio.tick_mean);
+  rv32virt::puts(",\"full_tick_instr_mean\":");
+  rv32virt::put_u32(full.tick_mean);
+  rv32virt::puts("}\n");
   rv32virt::puts(
       "{\"summary\":\"full-control tick with link, telemetry at 100 Hz and logger; targets: mean <= 2400, scheduler "
       "overhead <= 150, max <= 8000 instructions, float_over_fixed >= 10\",\"full_tick_instr_mean\":");
@@ -242,5 +356,7 @@ int main() {
   rv32virt::puts(",\"float_over_fixed\":");
   rv32virt::put_ratio(full_float.tick_mean, full.tick_mean == 0 ? 1 : full.tick_mean);
   rv32virt::puts("}\n");
-  return full.tick_mean == 0 || full_float.tick_mean == 0 ? 1 : 0;
+  return full.tick_mean == 0 || full_float.tick_mean == 0 || full_radio.tick_mean == 0 || drivers_cost.dshot4_mean == 0
+             ? 1
+             : 0;
 }

@@ -600,5 +600,117 @@ TEST_F(Safety, ExitWhileFlyingGoesThroughPanic) {
   EXPECT_TRUE(machine.stopped());
 }
 
+
+// Rule 17: the radio. The machine sees the arm switch as each RC frame brings it; a frame every
+// 7 ms (150 Hz) as a receiver sends them.
+struct RadioSafety : Safety {
+  RadioSafety() {
+    s.pilot = Pilot::radio;
+    s.requester = Pilot::radio;
+  }
+  // RC frames with the arm switch `arm` for `us`, the mode switch at `wanted`.
+  NackReason frames(bool arm, uint32_t us = 21000, Mode wanted = Mode::manual) {
+    NackReason last = NackReason::none;
+    for (uint32_t t = 0; t < us; t += 7000) {
+      s.now_us += 7000;
+      s.last_frame_us = s.now_us;
+      const NackReason r = machine.radio_switches(arm, wanted, s);
+      if (r != NackReason::none) last = r;
+      machine.supervise(s);
+    }
+    return last;
+  }
+};
+
+TEST_F(RadioSafety, TheArmSwitchMovedToOnArmsTheModeSwitchsMode) {
+  at(1000);
+  frames(false);
+  EXPECT_EQ(machine.mode(), Mode::safe);
+  frames(true, 21000, Mode::full_control);
+  EXPECT_EQ(machine.mode(), Mode::full_control);
+}
+
+TEST_F(RadioSafety, AnArmSwitchOnAtPowerUpDoesNotArm) {
+  at(1000);
+  frames(true, 500000);
+  EXPECT_EQ(machine.mode(), Mode::safe) << "never seen off: no arming";
+  frames(false);
+  frames(true);
+  EXPECT_EQ(machine.mode(), Mode::manual) << "moved off and on again: arms";
+}
+
+TEST_F(RadioSafety, RadioArmingNeedsLiftLowAndSticksNeutral) {
+  at(1000);
+  frames(false);
+  s.controls.lift = 200;
+  EXPECT_EQ(frames(true), NackReason::controls_not_neutral);
+  EXPECT_EQ(machine.mode(), Mode::safe);
+  s.controls.lift = 0;
+  s.controls.yaw = 300;
+  frames(false);
+  EXPECT_EQ(frames(true), NackReason::controls_not_neutral);
+  // The sticks come neutral with the switch still on: the refused movement is spent, no arming.
+  s.controls = ControlInput{};
+  frames(true, 100000);
+  EXPECT_EQ(machine.mode(), Mode::safe) << "a refused arming waits for the switch to move again";
+  frames(false);
+  frames(true);
+  EXPECT_EQ(machine.mode(), Mode::manual);
+}
+
+TEST_F(RadioSafety, AnArmSwitchOnAtLinkRecoveryDoesNotArm) {
+  at(1000);
+  frames(false);
+  // The link goes silent longer than the timeout; it comes back with the switch on.
+  s.now_us += limits.link_timeout_us + 7000;
+  frames(true, 100000);
+  EXPECT_EQ(machine.mode(), Mode::safe);
+  frames(false);
+  frames(true);
+  EXPECT_EQ(machine.mode(), Mode::manual);
+}
+
+TEST_F(RadioSafety, TheArmSwitchOffIsAnEmergencyStop) {
+  for (Mode mode : {Mode::manual, Mode::yaw_control, Mode::full_control}) {
+    restart();
+    s.pilot = Pilot::radio;
+    s.requester = Pilot::radio;
+    at(1000);
+    frames(false);
+    frames(true, 21000, mode);
+    ASSERT_EQ(machine.mode(), mode);
+    fly(500);
+    frames(true, 100000, mode);
+    frames(false, 7000, mode);
+    EXPECT_EQ(machine.mode(), Mode::panic) << int(m(mode));
+    EXPECT_EQ(machine.panic_cause(), PanicCause::disarmed);
+  }
+  // In safe the switch off is nothing to stop.
+  restart();
+  s.pilot = Pilot::radio;
+  s.requester = Pilot::radio;
+  at(1000);
+  frames(false);
+  EXPECT_EQ(machine.mode(), Mode::safe);
+}
+
+TEST_F(RadioSafety, WhileTheRadioFliesThePcCannotArmButKeepsTheAbortKey) {
+  at(1000);
+  s.requester = Pilot::pc;
+  for (Mode mode : {Mode::manual, Mode::yaw_control, Mode::full_control}) {
+    EXPECT_EQ(machine.request(m(mode), s), NackReason::radio_is_pilot) << int(m(mode));
+  }
+  EXPECT_EQ(machine.request(m(Mode::calibration), s), NackReason::none) << "calibration flies nothing";
+  machine.calibration_finished();
+  s.requester = Pilot::radio;
+  frames(false);
+  frames(true);
+  ASSERT_EQ(machine.mode(), Mode::manual);
+  fly(500);
+  s.requester = Pilot::pc;
+  EXPECT_EQ(machine.request(m(Mode::panic), s), NackReason::none);
+  EXPECT_EQ(machine.mode(), Mode::panic) << "the PC's abort key";
+}
+
 }  // namespace
 }  // namespace qr

@@ -40,6 +40,19 @@ class FakeBoard {
     return true;
   }
   void set_leds(uint8_t l) { leds = l; }
+  // A radio receiver's line and bidirectional DShot ESCs' answers, scripted like the serial line.
+  bool radio_read(uint8_t& byte) {
+    if (radio.empty()) return false;
+    byte = radio.front();
+    radio.pop_front();
+    return true;
+  }
+  bool esc_answers(EscAnswers& out) {
+    if (esc.fresh == 0) return false;
+    out = esc;
+    esc.fresh = 0;
+    return true;
+  }
   LogArea log_area() { return {log_memory, sizeof log_memory}; }
 
   // Simulated work: a task calls this to take time.
@@ -49,6 +62,8 @@ class FakeBoard {
   EngineCommand engines;
   uint8_t leds = 0;
   std::deque<uint8_t> rx;
+  std::deque<uint8_t> radio;
+  EscAnswers esc;
   std::vector<uint8_t> tx;
   size_t tx_capacity = 1u << 20;
   std::vector<uint32_t> kick_times_us;  // when each tick's kick was taken
@@ -58,6 +73,6 @@ class FakeBoard {
   uint32_t now_us_ = 0;
 };
 
-static_assert(Board<FakeBoard>);
+static_assert(Board<FakeBoard> && RadioBoard<FakeBoard> && EscAnswerBoard<FakeBoard>);
 
 }  // namespace qr::fake

@@ -1,6 +1,11 @@
 // The simulated pilot at the console's end of the serial line. It talks to the QR only in wire
 // frames, as the ground console does: control 50 times a second (also the heartbeat), requests
 // through a resend queue, telemetry and replies through a parser listening to the QR's side.
+//
+// With a radio (qrsim --rc crsf, use_radio) the sticks go out as CRSF RC frames at 150 Hz on the
+// board's receiver line (link statistics at 10 Hz), a flight mode is armed with the arm switch
+// (off, then on with the mode switch at that mode: docs/safety.md rule 17), and going silent is
+// the radio's link lost; the PC link keeps the requests, the parameters and the abort key.
 #pragma once
 
 #include <stdint.h>
@@ -33,7 +38,9 @@ struct ConsoleView {
   uint32_t nacks = 0;
   wire::NackReason last_nack = wire::NackReason::none;
   uint32_t requests_given_up = 0;
-  std::string debug_text;  // everything the QR said, lines joined
+  std::string debug_text;          // everything the QR said, lines joined
+  uint16_t rpm[4] = {0, 0, 0, 0};  // the last telemetry_rpm
+  uint8_t radio_flags = 0;         // the last telemetry_radio's flags
 };
 
 // A damaged line between the pilot and the QR (the soak, soak.hpp): each byte either way is lost
@@ -60,8 +67,11 @@ class Pilot {
   const Sticks& sticks() const { return sticks_; }
   void request_mode(wire::Mode mode);
   void set_parameter(wire::ParamId id, int32_t raw);
-  // Stops sending anything at all (the cable is pulled) or resumes.
+  // Stops sending anything at all on the pilot's link (the cable is pulled, the radio's link
+  // lost) or resumes.
   void go_silent(bool silent) { silent_ = silent; }
+  // The radio flies from now on (the QR's pilot parameter must say so too).
+  void use_radio() { radio_ = true; }
 
   // Any request through the resend queue (log start, stop, download, ...).
   template <class Request>
@@ -90,6 +100,7 @@ class Pilot {
   void send(const wire::FrameBytes& frame);
   void put(uint8_t byte);
   bool lost();
+  void send_radio(uint64_t now_us);
   void on_frame(const wire::Frame& frame, uint64_t sent_at_us);
 
   SimBoard& board_;
@@ -106,6 +117,12 @@ class Pilot {
   LineFaultCounts counts_;
   std::function<void(const wire::Frame&, const wire::LinkCounters&)> on_every_frame_;
   std::function<void(uint8_t)> on_bytes_up_;
+  bool radio_ = false;
+  uint64_t next_rc_ns_ = 0;
+  uint32_t rc_frames_ = 0;
+  bool arming_ = false;  // the arm switch goes on once arm_at_us_ has come
+  uint64_t arm_at_us_ = 0;
+  wire::Mode arm_mode_ = wire::Mode::manual;
 };
 
 // The pilot's thumb on the lift stick, watching the vehicle: lift for the weight (what the pilot

@@ -32,8 +32,9 @@ constexpr const char* kUsage = R"(usage:
         [--devboard [ELF]]
   qrsim --scenario NAME|FILE [--seconds S] [--seed N] [--vehicle FILE] [--param NAME=VALUE]...
         [--no-noise] [--trace FILE.csv] [--record FILE.csv] [--json] [--devboard [ELF]]
+        [--rc crsf] [--esc dshot]
   qrsim --sweep NAME|FILE [--seeds N] [--no-draw] [--seed N] [--seconds S] [--vehicle FILE]
-        [--param NAME=VALUE]...
+        [--param NAME=VALUE]... [--rc crsf] [--esc dshot]
   qrsim --soak [--seconds S] [--seed N]
   qrsim --replay IN.csv --out OUT.csv [--double]
   qrsim --list
@@ -79,6 +80,13 @@ rate) flying in a simulated IN4073-class quadrotor.
   --soak           an hour (--seconds S of flight) of full control over a damaged line, logging,
                    the log downloaded at the end, judged by a referee; one JSON line {"soak": ...}
                    (docs/simulator.md section 9); exit status 1 when it failed
+  --rc crsf        scenario, sweep: the pilot flies through a radio: CRSF RC frames at 150 Hz
+                   on the QR's receiver line, flight modes armed with the arm switch, the pilot
+                   parameter set to the radio; the PC link keeps requests, parameters and the
+                   abort key; a `link 0` event silences the radio (docs/drivers.md)
+  --esc dshot      scenario, sweep: the engines go out as bidirectional DShot frames to
+                   simulated ESCs (a bad check keeps the last good value) that answer with the
+                   rotor speed's eRPM, reported in telemetry as RPM
   --replay IN      run a recording through the flight chain tick by tick (test mode) and write
                    every tick's estimates, controller outputs and engines to --out OUT
                    (docs/replay.md); --double runs the double-precision reference chain
@@ -196,6 +204,14 @@ int main(int argc, char** argv) {
       if (arg == "--replay") command = Command::replay;
     } else if (arg == "--double") {
       replay_options.arithmetic = qr::host::ReplayArithmetic::reference_double;
+    } else if (arg == "--rc") {
+      const char* v = value("crsf");
+      if (v == nullptr || std::strcmp(v, "crsf") != 0) return usage_error("--rc knows one receiver: crsf");
+      scenario.radio = true;
+    } else if (arg == "--esc") {
+      const char* v = value("dshot");
+      if (v == nullptr || std::strcmp(v, "dshot") != 0) return usage_error("--esc knows one protocol: dshot");
+      scenario.dshot = true;
     } else if (arg == "--param") {
       const char* v = value("NAME=VALUE");
       const char* eq = v == nullptr ? nullptr : std::strchr(v, '=');
@@ -236,6 +252,7 @@ int main(int argc, char** argv) {
       return qrsim::run_soak(soak) ? 0 : 1;
     }
     case Command::serve:
+      if (scenario.radio || scenario.dshot) return usage_error("--rc and --esc go with --scenario or --sweep");
       serve.stdio = stdio;
       serve.status = status;
       serve.truth_fd = truth_fd;

@@ -284,6 +284,12 @@ ScenarioResult run_scenario(const ScenarioScript& script, const RunOptions& opti
     qr = std::make_unique<DevboardQr>(vehicle, sim::WorldConfig{.seed = options.seed}, options.devboard_elf);
   }
   result.firmware = qr->firmware();
+  if (options.radio && !options.devboard_elf.empty()) {
+    result.error = "--rc crsf flies the host firmware only: the devboard's sensor link carries no radio";
+    return result;
+  }
+  // The simulated motors have the pole pairs the QR's motor_poles parameter says by default.
+  if (options.dshot) qr->board().use_dshot(static_cast<uint8_t>(qr->parameters().get(wire::ParamId::motor_poles) / 2));
   sim::Quadrotor& plant = qr->world().plant();
   Pilot pilot(qr->board());
 
@@ -324,6 +330,10 @@ ScenarioResult run_scenario(const ScenarioScript& script, const RunOptions& opti
         if (t - phase_start >= 0.3) {
           for (const auto& [id, raw] : script.parameters) pilot.set_parameter(id, raw);
           for (const auto& [id, raw] : options.parameters) pilot.set_parameter(id, raw);
+          if (options.radio) {
+            pilot.set_parameter(wire::ParamId::pilot, 1);
+            pilot.use_radio();
+          }
           enter(Phase::calibrate);
         }
         break;
@@ -454,6 +464,20 @@ ScenarioResult run_scenario(const ScenarioScript& script, const RunOptions& opti
   f.push_back({"requests_given_up", static_cast<double>(pilot.view().requests_given_up)});
   f.push_back({"nacks", static_cast<double>(pilot.view().nacks)});
   if (const auto* devboard = dynamic_cast<const DevboardQr*>(qr.get())) add_instruction_figures(*devboard, f);
+  if (options.dshot) {
+    // The ESCs' side (frames taken, frames dropped for their check) and the front engine's speed
+    // as the QR last reported it from the ESC's answer, beside the truth.
+    uint64_t accepted = 0, rejected = 0;
+    for (const SimEsc& esc : qr->board().escs()) {
+      accepted += esc.accepted();
+      rejected += esc.rejected();
+    }
+    f.push_back({"esc_frames", static_cast<double>(accepted)});
+    f.push_back({"esc_frames_rejected", static_cast<double>(rejected)});
+    f.push_back({"rpm_front_reported", static_cast<double>(pilot.view().rpm[0])});
+    f.push_back({"rpm_front_truth", std::abs(plant.state().rotor_speed[0]) * 60.0 / (2.0 * M_PI)});
+  }
+  if (options.radio) f.push_back({"radio_flags", static_cast<double>(pilot.view().radio_flags)});
 
   judge(script, result);
   return result;

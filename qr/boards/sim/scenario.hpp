@@ -39,6 +39,11 @@ struct RunOptions {
   // Non-empty: fly this RV32 ELF on the emulated devboard, in lock-step over the sensor link
   // (devboard_qr.hpp), instead of the host build.
   std::string devboard_elf;
+  // --rc crsf: the pilot flies through a radio (CRSF frames at 150 Hz on the receiver line, armed
+  // by its switch; the pilot parameter set to the radio), the PC link keeping the rest.
+  bool radio = false;
+  // --esc dshot: the engines go out as DShot frames to simulated ESCs that answer with their eRPM.
+  bool dshot = false;
 };
 
 struct Figure {

@@ -63,7 +63,38 @@ uint32_t SimBoard::cycles() const {
 
 void SimBoard::set_engines(qr::EngineCommand engines) {
   engines_ = engines;
-  world_.plant().set_engines({engines.value[0], engines.value[1], engines.value[2], engines.value[3]});
+  if (!dshot_) {
+    world_.plant().set_engines({engines.value[0], engines.value[1], engines.value[2], engines.value[3]});
+    return;
+  }
+  // What a DShot board does with the engine values: a frame per ESC; what the ESCs make of them
+  // drives the plant.
+  std::array<uint16_t, 4> run{};
+  for (size_t i = 0; i < 4; ++i) {
+    uint16_t frame = sequencers_[i].next_frame(engines.value[i], drivers::DshotLine::bidirectional, false);
+    ++dshot_frames_;
+    if (corrupt_every_ != 0 && dshot_frames_ % corrupt_every_ == 0)
+      frame ^= static_cast<uint16_t>(1u << (dshot_frames_ % 16));
+    run[i] = escs_[i].receive(frame);
+  }
+  world_.plant().set_engines(run);
+  answered_ = true;
+}
+
+bool SimBoard::radio_read(uint8_t& byte) {
+  if (radio_.empty()) return false;
+  byte = radio_.front();
+  radio_.pop_front();
+  return true;
+}
+
+bool SimBoard::esc_answers(qr::EscAnswers& answers) {
+  if (!dshot_ || !answered_) return false;
+  answered_ = false;
+  const auto& speed = world_.plant().state().rotor_speed;
+  for (size_t i = 0; i < 4; ++i) answers.raw[i] = SimEsc::answer(speed[i], pole_pairs_);
+  answers.fresh = 0xF;
+  return true;
 }
 
 bool SimBoard::pc_next_sent_at_us(uint64_t& us) const {

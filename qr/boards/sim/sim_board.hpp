@@ -11,17 +11,25 @@
 //               benchmark figure; nothing in the flight depends on it);
 //   set_engines the motor commands of the plant;
 //   serial      two SerialLines at 115200 baud: the QR's transmit buffer holds 32 bytes;
+//   radio       a receiver's line (CRSF, qrsim --rc crsf): what the simulated radio sends arrives
+//               at once (a 26-byte frame takes 0.6 ms at 420 000 baud);
+//   engines     plain 0..1000 commands to the plant, or (qrsim --esc dshot) DShot frames to four
+//               simulated ESCs (sim_esc.hpp) that drive the plant and answer with their eRPM;
 //   log_area    128 KiB of RAM, the size of the IN4073 board's log flash.
 #pragma once
 
 #include <stddef.h>
 #include <stdint.h>
 
+#include <array>
 #include <chrono>
+#include <deque>
 #include <vector>
 
+#include <common/drivers/dshot_commands.hpp>
 #include <common/requests.hpp>
 #include <qr/boards/sim/serial_line.hpp>
+#include <qr/boards/sim/sim_esc.hpp>
 #include <qr/core/board.hpp>
 #include <qr/core/rate.hpp>
 #include <sim/world.hpp>
@@ -56,6 +64,24 @@ class SimBoard {
   bool serial_write(uint8_t byte) { return to_pc_.send(byte, world_.now_us() * 1000); }
   void set_leds(uint8_t leds) { leds_ = leds; }
   qr::LogArea log_area() { return {log_.data(), log_.size()}; }
+  // ---- qr::RadioBoard, qr::EscAnswerBoard ----
+  bool radio_read(uint8_t& byte);
+  bool esc_answers(qr::EscAnswers& answers);
+
+  // ---- the radio's end of the receiver line ----
+  void radio_send(const uint8_t* bytes, size_t size) { radio_.insert(radio_.end(), bytes, bytes + size); }
+
+  // The engines as DShot frames through simulated ESCs (set before the first tick). `pole_pairs`:
+  // the simulated motors' (their answers' eRPM is the rotor speed times it). `corrupt_every`: a
+  // frame with one bit flipped every that many frames (0: none), to show the ESCs keep the last
+  // good value.
+  void use_dshot(uint8_t pole_pairs, uint32_t corrupt_every = 0) {
+    dshot_ = true;
+    pole_pairs_ = pole_pairs;
+    corrupt_every_ = corrupt_every;
+  }
+  bool dshot() const { return dshot_; }
+  const std::array<SimEsc, 4>& escs() const { return escs_; }
 
   // ---- the PC's end of the line ----
   bool pc_send(uint8_t byte) { return to_qr_.send(byte, world_.now_us() * 1000); }
@@ -88,6 +114,14 @@ class SimBoard {
   qr::EngineCommand engines_{};
   uint8_t leds_ = 0;
   std::vector<uint8_t> log_ = std::vector<uint8_t>(kLogBytes);
+  std::deque<uint8_t> radio_;
+  bool dshot_ = false;
+  uint8_t pole_pairs_ = 7;
+  uint32_t corrupt_every_ = 0;
+  uint64_t dshot_frames_ = 0;
+  bool answered_ = false;
+  drivers::DshotCommandSequencer sequencers_[4];
+  std::array<SimEsc, 4> escs_{};
   bool real_time_ = false;
   HostTiming host_;
   std::chrono::steady_clock::time_point wall_start_{};

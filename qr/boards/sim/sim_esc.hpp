@@ -1,0 +1,49 @@
+// The simulator's ESCs when they speak DShot (qrsim --esc dshot): each takes the frame the QR's
+// board sent, decodes it as an ESC firmware does (a frame with a bad check is dropped and the
+// motor keeps the last good value; a special command leaves the motor as it is) and answers, as a
+// bidirectional ESC, with its motor's electrical period from the simulated rotor speed
+// (common/drivers/dshot.hpp, erpm.hpp; docs/drivers.md).
+#pragma once
+
+#include <stdint.h>
+
+#include <cmath>
+
+#include <common/drivers/dshot.hpp>
+#include <common/drivers/erpm.hpp>
+
+namespace qrsim {
+
+class SimEsc {
+ public:
+  // One frame from the flight computer; the engine command (0..1000) the motor now runs at.
+  uint16_t receive(uint16_t frame) {
+    const drivers::DshotDecoded d = drivers::dshot_decode(frame, drivers::DshotLine::bidirectional);
+    if (!d.valid) {
+      ++rejected_;
+      return engine_;
+    }
+    ++accepted_;
+    if (d.value == 0 || d.value >= drivers::kDshotThrottleMin) engine_ = drivers::dshot_engine(d.value);
+    return engine_;
+  }
+
+  // The answer to the frame: the electrical period of a motor turning at `rotor_rad_s` with
+  // `pole_pairs`, as 21 line bits.
+  static uint32_t answer(double rotor_rad_s, uint8_t pole_pairs) {
+    const double erpm = std::abs(rotor_rad_s) * 60.0 / (2.0 * M_PI) * pole_pairs;
+    const uint32_t period_us = erpm < 1.0 ? 0 : static_cast<uint32_t>(std::lround(60e6 / erpm));
+    return drivers::encode_erpm_answer(drivers::erpm_period_code(period_us));
+  }
+
+  uint16_t engine() const { return engine_; }
+  uint64_t rejected() const { return rejected_; }
+  uint64_t accepted() const { return accepted_; }
+
+ private:
+  uint16_t engine_ = 0;
+  uint64_t rejected_ = 0;
+  uint64_t accepted_ = 0;
+};
+
+}  // namespace qrsim

@@ -1,0 +1,64 @@
+// The radio receiver's side of the flight: CRSF bytes in (crsf_parser.hpp), the pilot's sticks and
+// switches out through the channel map (rc_sticks.hpp), the link statistics kept for telemetry.
+// Only a valid RC channels frame is life of the radio link: link statistics say how the link is,
+// not that the pilot is there.
+#pragma once
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include <common/drivers/crsf.hpp>
+#include <common/drivers/crsf_parser.hpp>
+#include <common/drivers/rc_sticks.hpp>
+#include <common/parameter_table.hpp>
+#include <qr/core/flight_types.hpp>
+
+namespace qr {
+
+// The mode switch's positions: the mode the arm switch arms (low, centre, high). Height hold is
+// entered in flight from full control only, so it is no arming mode.
+inline constexpr Mode kRadioArmingModes[3] = {Mode::manual, Mode::yaw_control, Mode::full_control};
+
+class RadioReceiver {
+ public:
+  // The channel map from the parameters (channels counted from 1, as radios do).
+  void set_map(const wire::ParameterValues& p) {
+    using wire::ParamId;
+    const auto channel = [&p](ParamId id) { return static_cast<uint8_t>(p.get(id) - 1); };
+    map_.roll = channel(ParamId::rc_roll_channel);
+    map_.pitch = channel(ParamId::rc_pitch_channel);
+    map_.lift = channel(ParamId::rc_lift_channel);
+    map_.yaw = channel(ParamId::rc_yaw_channel);
+    map_.arm = channel(ParamId::rc_arm_channel);
+    map_.mode = channel(ParamId::rc_mode_channel);
+  }
+
+  // Received bytes; calls on_rc(const drivers::RcSticks&) for each valid RC frame they complete.
+  template <class OnRc>
+  void push(const uint8_t* bytes, size_t size, uint32_t now_us, OnRc&& on_rc) {
+    parser_.push(bytes, size, [&](const drivers::CrsfFrame& frame) {
+      drivers::RcSticks sticks;
+      if (drivers::rc_sticks(frame, map_, sticks)) {
+        heard_ = true;
+        last_rc_us_ = now_us;
+        on_rc(sticks);
+      } else if (drivers::decode_link_statistics(frame, stats_)) {
+        heard_ = true;
+      }
+    });
+  }
+
+  bool heard() const { return heard_; }
+  uint32_t last_rc_us() const { return last_rc_us_; }
+  const drivers::CrsfLinkStatistics& stats() const { return stats_; }
+  const drivers::CrsfCounters& counters() const { return parser_.counters(); }
+
+ private:
+  drivers::CrsfParser parser_;
+  drivers::RcChannelMap map_;
+  drivers::CrsfLinkStatistics stats_;
+  uint32_t last_rc_us_ = 0;
+  bool heard_ = false;
+};
+
+}  // namespace qr

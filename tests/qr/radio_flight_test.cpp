@@ -1,0 +1,243 @@
+// The radio as the pilot, end to end on the fake board: CRSF frames on the receiver's line, the
+// PC's frames on the serial line, the flight's answers (docs/safety.md rule 17), and the ESCs'
+// eRPM answers into telemetry.
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include <common/drivers/crsf.hpp>
+#include <common/drivers/erpm.hpp>
+#include <common/drivers/rc_sticks.hpp>
+#include <common/messages.hpp>
+#include <qr/boards/fake/fake_board.hpp>
+#include <qr/core/flight.hpp>
+#include <qr/core/scheduler.hpp>
+
+#include "scripted_chain.hpp"
+
+namespace qr {
+namespace {
+
+using fake::FakeBoard;
+using test::ScriptedChain;
+using Firmware = Flight<ScriptedChain>;
+
+struct RadioFlightTest : ::testing::Test {
+  FakeBoard board;
+  Firmware flight;
+  Scheduler<FakeBoard, Firmware> scheduler{board, flight};
+  wire::FrameParser pc{wire::Listen::qr_to_pc};
+  std::vector<wire::Frame> received;
+  wire::Control pc_sticks;
+  drivers::CrsfChannels radio;  // what the transmitter sends; AETR, arm on channel 5, mode on 6
+  uint8_t seq = 0;
+  bool radio_on = true;
+  bool pc_on = true;
+  uint32_t elapsed_us = 0;  // the transmitters' time
+  uint32_t ticked_us = 0;   // firmware periods run so far
+
+  RadioFlightTest() {
+    board.sensors.battery_mv = 12000;
+    for (uint16_t& v : radio.value) v = drivers::kCrsfChannelMid;
+    radio.value[2] = drivers::kCrsfChannelMin;  // lift low
+    radio.value[4] = drivers::kCrsfChannelMin;  // arm switch off
+    radio.value[5] = drivers::kCrsfChannelMin;  // mode switch low: manual
+  }
+
+  template <class M>
+  void send(const M& m) {
+    const wire::FrameBytes f = wire::encode(m);
+    board.rx.insert(board.rx.end(), f.bytes, f.bytes + f.size);
+  }
+  void radio_frame(const drivers::CrsfFrameBytes& f) {
+    board.radio.insert(board.radio.end(), f.bytes, f.bytes + f.size);
+  }
+  // `ms` of flight: an RC frame every 7 ms (150 Hz), the PC's control frame every 20 ms.
+  void run_ms(uint32_t ms) {
+    for (uint32_t t = 0; t < ms; ++t) {
+      if (radio_on && t % 7 == 0) radio_frame(drivers::encode_rc_channels(radio));
+      if (pc_on && t % 20 == 0) send(pc_sticks);
+      elapsed_us += 1000;
+      for (; ticked_us + kPeriodUs <= elapsed_us; ticked_us += kPeriodUs) scheduler.tick();
+      for (uint8_t b : board.tx) pc.push(b, [&](const wire::Frame& f) { received.push_back(f); });
+      board.tx.clear();
+    }
+  }
+  NackReason set_param(wire::ParamId id, int32_t value) {
+    send(wire::ParamSet{++seq, static_cast<uint8_t>(id), value});
+    run_ms(30);
+    return last_answer(wire::MessageType::param_set);
+  }
+  NackReason request_mode(Mode mode) {
+    send(wire::ModeChange{++seq, mode});
+    run_ms(30);
+    return last_answer(wire::MessageType::mode_change);
+  }
+  NackReason last_answer(wire::MessageType type) const {
+    for (auto it = received.rbegin(); it != received.rend(); ++it) {
+      wire::Nack n;
+      if (it->type == wire::MessageType::nack && wire::decode(*it, n) && n.type == type) return n.reason;
+      wire::Ack a;
+      if (it->type == wire::MessageType::ack && wire::decode(*it, a) && a.type == type) return NackReason::none;
+    }
+    return NackReason::unknown_mode;  // no answer at all
+  }
+  template <class M>
+  std::vector<M> got() const {
+    std::vector<M> out;
+    for (const wire::Frame& f : received) {
+      M m;
+      if (f.type == M::kType && wire::decode(f, m)) out.push_back(m);
+    }
+    return out;
+  }
+  void arm(bool on) { radio.value[4] = on ? drivers::kCrsfChannelMax : drivers::kCrsfChannelMin; }
+  void make_radio_the_pilot() {
+    run_ms(50);
+    ASSERT_EQ(set_param(wire::ParamId::pilot, 1), NackReason::none);
+    ASSERT_EQ(flight.pilot(), Pilot::radio);
+  }
+};
+
+TEST_F(RadioFlightTest, ArmsFliesAndStopsThroughCrsfFrames) {
+  make_radio_the_pilot();
+  arm(true);
+  run_ms(30);
+  EXPECT_EQ(flight.mode(), Mode::manual);
+  radio.value[2] = drivers::rc_channel_of_lift(400);
+  radio.value[0] = drivers::rc_channel_of_stick(-250);
+  run_ms(30);
+  EXPECT_EQ(flight.controls().lift, 400u);
+  EXPECT_EQ(flight.controls().roll, drivers::rc_stick(drivers::rc_channel_of_stick(-250)));
+  arm(false);
+  run_ms(10);
+  EXPECT_EQ(flight.mode(), Mode::panic);
+  EXPECT_EQ(flight.safety().panic_cause(), PanicCause::disarmed);
+}
+
+TEST_F(RadioFlightTest, ThePcsSticksAreIgnoredWhileTheRadioFlies) {
+  make_radio_the_pilot();
+  // The radio pauses (in safe no watchdog minds) so that no RC frame covers the PC's.
+  radio_on = false;
+  pc_sticks = wire::Control{300, 100, 0, 0};
+  run_ms(100);
+  EXPECT_EQ(flight.controls().lift, 0u);
+  EXPECT_EQ(flight.controls().roll, 0);
+  radio_on = true;
+  EXPECT_EQ(request_mode(Mode::manual), NackReason::radio_is_pilot);
+  EXPECT_EQ(flight.mode(), Mode::safe);
+}
+
+TEST_F(RadioFlightTest, ThePilotChangesInSafeOnly) {
+  run_ms(50);
+  ASSERT_EQ(request_mode(Mode::manual), NackReason::none);
+  EXPECT_EQ(set_param(wire::ParamId::pilot, 1), NackReason::not_from_this_mode);
+  EXPECT_EQ(flight.pilot(), Pilot::pc);
+  EXPECT_EQ(flight.mode(), Mode::manual);
+  // The value in force is no change: a console sends every parameter when it starts.
+  EXPECT_EQ(set_param(wire::ParamId::pilot, 0), NackReason::none);
+  EXPECT_EQ(flight.mode(), Mode::manual);
+}
+
+TEST_F(RadioFlightTest, AnArmSwitchOnWhenTheRadioBecomesThePilotDoesNotArm) {
+  arm(true);
+  make_radio_the_pilot();
+  run_ms(200);
+  EXPECT_EQ(flight.mode(), Mode::safe) << "on at power-up";
+  // Seen off while the radio was the pilot; the PC takes over, the switch goes on, the radio
+  // becomes the pilot again within the link timeout: still no arming.
+  arm(false);
+  run_ms(30);
+  ASSERT_EQ(set_param(wire::ParamId::pilot, 0), NackReason::none);
+  arm(true);
+  run_ms(10);
+  ASSERT_EQ(set_param(wire::ParamId::pilot, 1), NackReason::none);
+  run_ms(200);
+  EXPECT_EQ(flight.mode(), Mode::safe) << "on when the radio became the pilot";
+  arm(false);
+  run_ms(30);
+  arm(true);
+  run_ms(30);
+  EXPECT_EQ(flight.mode(), Mode::manual) << "moved off and on: arms";
+}
+
+// The watchdog watches the pilot's link: the PC's frames keep coming, the radio stops.
+TEST_F(RadioFlightTest, TheRadioLinkIsTheWatchdogsWhenTheRadioFlies) {
+  make_radio_the_pilot();
+  arm(true);
+  run_ms(30);
+  ASSERT_EQ(flight.mode(), Mode::manual);
+  radio_on = false;
+  run_ms(flight.safety().limits().link_timeout_us / 1000 - 20);
+  EXPECT_EQ(flight.mode(), Mode::manual);
+  run_ms(40);
+  EXPECT_EQ(flight.mode(), Mode::panic);
+  EXPECT_EQ(flight.safety().panic_cause(), PanicCause::link_lost);
+}
+
+// Link statistics say how the link is, not that the pilot is there: they keep no flight alive.
+TEST_F(RadioFlightTest, LinkStatisticsAreNotLife) {
+  make_radio_the_pilot();
+  arm(true);
+  run_ms(30);
+  ASSERT_EQ(flight.mode(), Mode::manual);
+  radio_on = false;
+  drivers::CrsfLinkStatistics stats;
+  stats.uplink_link_quality = 100;
+  for (int i = 0; i < 60; ++i) {
+    radio_frame(drivers::encode_link_statistics(stats));
+    run_ms(10);
+  }
+  EXPECT_EQ(flight.mode(), Mode::panic);
+  EXPECT_EQ(flight.safety().panic_cause(), PanicCause::link_lost);
+}
+
+TEST_F(RadioFlightTest, LinkStatisticsAndThePilotGoToTelemetry) {
+  make_radio_the_pilot();
+  drivers::CrsfLinkStatistics stats;
+  stats.uplink_rssi_ant1 = 60;
+  stats.uplink_link_quality = 97;
+  stats.uplink_snr = -3;
+  stats.downlink_link_quality = 88;
+  radio_frame(drivers::encode_link_statistics(stats));
+  run_ms(400);
+  const auto radio_reports = got<wire::TelemetryRadio>();
+  ASSERT_FALSE(radio_reports.empty());
+  const wire::TelemetryRadio& r = radio_reports.back();
+  EXPECT_EQ(r.flags & wire::kRadioPilot, wire::kRadioPilot);
+  EXPECT_EQ(r.flags & wire::kRadioLinkUp, wire::kRadioLinkUp);
+  EXPECT_EQ(r.flags & wire::kRadioArmSwitch, 0);
+  EXPECT_EQ(r.uplink_rssi, 60u);
+  EXPECT_EQ(r.uplink_lq, 97u);
+  EXPECT_EQ(r.uplink_snr, -3);
+  EXPECT_EQ(r.downlink_lq, 88u);
+}
+
+TEST_F(RadioFlightTest, NoRadioNoRadioTelemetry) {
+  radio_on = false;
+  run_ms(400);
+  EXPECT_TRUE(got<wire::TelemetryRadio>().empty());
+}
+
+// 14-pole motors (the default): RPM = eRPM / 7. A period of 428 us is 140 186 eRPM, 20 026 RPM.
+TEST_F(RadioFlightTest, EscAnswersBecomeRpmInTelemetry) {
+  run_ms(50);
+  EXPECT_TRUE(got<wire::TelemetryRpm>().empty()) << "no answers: no RPM frames";
+  for (uint32_t& raw : board.esc.raw) raw = drivers::encode_erpm_answer(drivers::erpm_period_code(428));
+  board.esc.raw[3] = drivers::encode_erpm_answer(drivers::kErpmStopped);
+  board.esc.fresh = 0xF;
+  run_ms(300);
+  const auto rpm = got<wire::TelemetryRpm>();
+  ASSERT_FALSE(rpm.empty());
+  EXPECT_EQ(rpm.back().rpm[0], 20026u);
+  EXPECT_EQ(rpm.back().rpm[2], 20026u);
+  EXPECT_EQ(rpm.back().rpm[3], 0u);
+  // A garbled answer keeps the engine's last reading.
+  board.esc.raw[0] = 0;
+  board.esc.fresh = 0x1;
+  run_ms(300);
+  EXPECT_EQ(got<wire::TelemetryRpm>().back().rpm[0], 20026u);
+}
+
+}  // namespace
+}  // namespace qr

@@ -1,0 +1,64 @@
+// The hobbyist's hardware in closed loop (docs/drivers.md): the host firmware flown through a
+// radio (CRSF RC frames at 150 Hz, armed by the switch: qrsim --rc crsf) with its engines as
+// bidirectional DShot frames to simulated ESCs (qrsim --esc dshot), judged on the simulator's
+// truth by the scenarios' own bands. Each test prints its figures as the JSON line qrsim would.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include <qr/boards/sim/scenario.hpp>
+
+namespace {
+
+qrsim::ScenarioResult fly(const std::string& name, bool radio, bool dshot) {
+  qrsim::ScenarioScript script;
+  std::string error;
+  EXPECT_TRUE(qrsim::find_scenario(name, script, error)) << error;
+  qrsim::RunOptions options;
+  options.radio = radio;
+  options.dshot = dshot;
+  const qrsim::ScenarioResult result = qrsim::run_scenario(script, options);
+  std::printf("%s\n", qrsim::to_json(result).c_str());
+  return result;
+}
+
+void expect_bands_hold(const qrsim::ScenarioResult& r) {
+  EXPECT_TRUE(r.error.empty()) << r.error;
+  for (const qrsim::CheckResult& c : r.checks) EXPECT_TRUE(c.pass) << c.band << " (" << r.scenario << ")";
+}
+
+// The roll step's bands (rise, overshoot, settle) hold when the sticks come by radio and the
+// engines go out as DShot: the path adds at most a radio frame's age (6.7 ms) to the sticks and
+// nothing to the engines (throttle 47 + 2e reads back as e).
+TEST(DriversClosedLoop, ARollStepFliesThroughCrsfAndDshot) {
+  const qrsim::ScenarioResult r = fly("step-roll", true, true);
+  expect_bands_hold(r);
+  EXPECT_GT(r.figure("esc_frames"), 0);
+  EXPECT_EQ(r.figure("esc_frames_rejected"), 0);
+  // Who flies and the link as telemetry_radio says: the radio, up.
+  const auto flags = static_cast<uint8_t>(r.figure("radio_flags"));
+  EXPECT_EQ(flags & 0x03, 0x03);
+  // The front engine's RPM from its ESC's eRPM answer, against the rotor's true speed: within the
+  // answer's period resolution and the telemetry's age (a slow group, 1/6 of the telemetry rate).
+  const double truth = r.figure("rpm_front_truth");
+  ASSERT_GT(truth, 1000);
+  EXPECT_NEAR(r.figure("rpm_front_reported"), truth, 0.03 * truth);
+}
+
+// The radio's link lost in hover: the link watchdog watches the pilot's link (the PC's frames keep
+// coming), so the firmware panics and lands as in the cable-pulled scenario, on its bands.
+TEST(DriversClosedLoop, TheRadiosLinkLossLandsLikeTheCables) {
+  const qrsim::ScenarioResult r = fly("link-loss", true, false);
+  expect_bands_hold(r);
+  EXPECT_EQ(r.figure("entered_panic"), 1);
+}
+
+// Hover with the engines as DShot only (the PC flies).
+TEST(DriversClosedLoop, HoverOnDshotEngines) {
+  const qrsim::ScenarioResult r = fly("hover", false, true);
+  expect_bands_hold(r);
+  EXPECT_EQ(r.figure("esc_frames_rejected"), 0);
+}
+
+}  // namespace
