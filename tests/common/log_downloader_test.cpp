@@ -138,7 +138,6 @@ bool same(const SensorLogRecord& a, const SensorLogRecord& b) {
 }
 
 
-
 }  // namespace damage
 
 }  // namespace
