@@ -60,10 +60,12 @@ constexpr uint32_t root_from_above(uint32_t n, uint32_t x) {
 // would cost ~600 instructions on RV32, so: the top 32 significant bits m = n / 4^s give the
 // root's top 16 bits m0 = isqrt(m) in 32-bit arithmetic, one Newton step r = m0 2^s + (n - m0^2
 // 4^s) / (m0 2^(s+1)) adds the rest with a single 32-bit divide, and a check of r^2 against n
-// corrects the last unit. (The Newton step from below overshoots by less than 2^s / (2 m0) <= 1/2
-// and the truncations undershoot by less than one, so one correction step each way suffices.)
-// Everything but that check is 32-bit: the root is below 2^31 and the bits below m, fewer than
-// 2^30.
+// takes back the one unit it may be high. Why one unit down and never up: the exact step
+// r* = m0 2^s + (rem0 2^(s-1) + low / 2^(s+1)) / m0 is a tangent step, so r* >= sqrt(n), and it
+// overshoots by (sqrt(n) - m0 2^s)^2 / (2 m0 2^s) < 4^s / (2 m0 2^s) <= 1/2 (m0 >= 2^15,
+// s <= 15); the code's two truncations compose to one, floor(floor(x) / m0) = floor(x / m0), so
+// root = floor(r*), which lies in [floor(sqrt(n)), floor(sqrt(n)) + 1]. Everything but the check
+// is 32-bit: the root is below 2^31 and the bits below m, fewer than 2^30.
 constexpr uint32_t root_below_2_pow_62(uint64_t n) {
   const uint32_t high = static_cast<uint32_t>(n >> 32);
   if (high == 0) return isqrt(static_cast<uint32_t>(n)).root;
@@ -74,12 +76,7 @@ constexpr uint32_t root_below_2_pow_62(uint64_t n) {
   // (n - (m0 2^s)^2) / (2 m0 2^s) = (rem0 2^s + low / 2^s) / (2 m0); halved to fit 32 bits.
   const uint32_t numerator = (rem0 << (s - 1)) + (low >> (s + 1));
   uint32_t root = (m0 << s) + numerator / m0;
-  const uint64_t square = static_cast<uint64_t>(root) * root;
-  if (square > n) {
-    --root;
-  } else if (n - square > 2 * static_cast<uint64_t>(root)) {  // (root + 1)^2 = square + 2 root + 1 <= n
-    ++root;
-  }
+  if (static_cast<uint64_t>(root) * root > n) --root;
   return root;
 }
 

@@ -140,4 +140,17 @@ TEST(Sqrt, WideRootExactAtTheEdges) {
   std::printf("  wide root exact on %llu inputs\n", static_cast<unsigned long long>(checked));
 }
 
+// Between the edges: random n of every width, against the root's definition r^2 <= n < (r + 1)^2.
+TEST(Sqrt, WideRootExactOnRandomInputsOfEveryWidth) {
+  uint64_t state = 0x9E3779B97F4A7C15u;
+  for (int i = 0; i < 1 << 20; ++i) {
+    state = state * 6364136223846793005u + 1442695040888963407u;
+    const int width = 1 + i % 62;
+    const uint64_t n = (state >> 2) >> (62 - width);
+    const uint64_t r = fx::detail::root_below_2_pow_62(n);
+    ASSERT_LE(r * r, n) << "n = " << n;
+    ASSERT_GT((r + 1) * (r + 1), n) << "n = " << n;
+  }
+}
+
 }  // namespace
