@@ -15,29 +15,33 @@ struct RootAndRemainder {
   U root, remainder;  // root = floor(sqrt(n)), remainder = n - root^2
 };
 
-// ceil(16 sqrt(m + 1)) for m = 0..63: a root at or above sqrt(m + 1), in 1/16 units.
+// Seeds for a root from above: of[k] = ceil(sqrt((k + 1) 2^Shift)), at or above the root of every
+// n < (k + 1) 2^Shift, so a caller indexes the table with n >> Shift. In T to keep the table small.
+template <typename T, uint32_t Count, int Shift>
 struct RootSeeds {
-  uint8_t of[64];
+  T of[Count];
 };
-constexpr RootSeeds make_root_seeds() {
-  RootSeeds t{};
-  for (uint32_t m = 0; m < 64; ++m) {
+template <typename T, uint32_t Count, int Shift>
+constexpr RootSeeds<T, Count, Shift> make_root_seeds() {
+  RootSeeds<T, Count, Shift> t{};
+  for (uint32_t k = 0; k < Count; ++k) {
     uint32_t r = 0;
-    while (r * r < (m + 1) * 256u) ++r;
-    t.of[m] = static_cast<uint8_t>(r);
+    while (r * r < (k + 1) << Shift) ++r;
+    t.of[k] = static_cast<T>(r);
   }
   return t;
 }
-inline constexpr RootSeeds kRootSeeds = make_root_seeds();
+template <typename T, uint32_t Count, int Shift>
+inline constexpr RootSeeds<T, Count, Shift> kRootSeeds = make_root_seeds<T, Count, Shift>();
 
-// floor(sqrt(n)) for n > 0 from a seed x at or above it and at most about 25 % high: two Newton
-// (Heron) steps with one 32-bit division each, and a check that takes back the last units. From
-// above, integer Newton never passes the root:
-// floor((x + floor(n / x)) / 2) = floor((x + n / x) / 2) >= floor(sqrt(n)) (AM-GM). x > n / x
+// floor(sqrt(n)) for n > 0 from a seed x at or above it: Steps Newton (Heron) steps with one 32-bit
+// division each, and a check that takes back the last units (as many steps as the seed's
+// closeness needs: two from 25 % high, one from 1 %). From above, integer Newton never passes the
+// root: floor((x + floor(n / x)) / 2) = floor((x + n / x) / 2) >= floor(sqrt(n)) (AM-GM). x > n / x
 // is x^2 > n without x^2 overflowing at the top of the range.
+template <int Steps>
 constexpr uint32_t root_from_above(uint32_t n, uint32_t x) {
-  x = (x + n / x) >> 1;
-  x = (x + n / x) >> 1;
+  for (int step = 0; step < Steps; ++step) x = (x + n / x) >> 1;
   while (x > n / x) --x;
   return x;
 }
@@ -52,7 +56,8 @@ constexpr uint32_t root_from_above(uint32_t n, uint32_t x) {
   const int length = bit_length(n);
   const int h = length > 6 ? (length - 5) >> 1 : 0;
   const uint32_t m = n >> (2 * h);
-  const uint32_t x = root_from_above(n, ((static_cast<uint32_t>(kRootSeeds.of[m]) << h) >> 4) + 1);
+  // ceil(16 sqrt(m + 1)) in 1/16 units, scaled by 2^h.
+  const uint32_t x = root_from_above<2>(n, ((static_cast<uint32_t>(kRootSeeds<uint8_t, 64, 8>.of[m]) << h) >> 4) + 1);
   return {x, n - x * x};
 }
 

@@ -146,28 +146,12 @@ class EngineMixer {
 
   // floor(sqrt(n)) for n < 4^11 (4000 w <= 4e6: the clamp to [low, 1000] before the call keeps n
   // there). In flight n is at least 2^16 (a thrust of 16.4 units, an engine at 128), and its top
-  // eight bits k = n / 2^14 seed the root from above with ceil(sqrt((k + 1) 2^14)) (kRootSeeds
-  // below): at most 12 % high (k = 4), under 1 % from k = 64 (a thrust of 262, about hover). One
-  // Newton step and a check finish it (fixedpoint/sqrt.hpp, root_from_above with one step).
-  struct RootSeeds {
-    uint16_t of[256];
-  };
-  static constexpr RootSeeds make_root_seeds() {
-    RootSeeds t{};
-    for (uint32_t k = 0; k < 256; ++k) {
-      uint32_t r = 0;
-      while (r * r < (k + 1) << 14) ++r;
-      t.of[k] = static_cast<uint16_t>(r);
-    }
-    return t;
-  }
-  static constexpr RootSeeds kRootSeeds = make_root_seeds();
+  // eight bits k = n / 2^14 seed the root from above with ceil(sqrt((k + 1) 2^14)): at most 12 %
+  // high (k = 4), under 1 % from k = 64 (a thrust of 262, about hover). One Newton step and a
+  // check finish it (fixedpoint/sqrt.hpp).
   static constexpr uint32_t isqrt_below_4_pow_11(uint32_t n) {
     if (n < (1u << 16)) return fx::detail::isqrt(n).root;
-    uint32_t x = kRootSeeds.of[n >> 14];
-    x = (x + n / x) >> 1;  // from above, integer Newton never passes the root (fixedpoint/sqrt.hpp)
-    while (x > n / x) --x;
-    return x;
+    return fx::detail::root_from_above<1>(n, fx::detail::kRootSeeds<uint16_t, 256, 14>.of[n >> 14]);
   }
   // m_i = roll x L + pitch x M + yaw x N of row i. The rows hold halves and quarters, so in the
   // Q formats each part is (+-2 L or +-2 M +- N) / 4, rounded half up as narrow() rounds the
