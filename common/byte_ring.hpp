@@ -27,7 +27,11 @@ class ByteRing {
   // All of `n` bytes or none: a frame is never half queued.
   bool push(const uint8_t* data, size_t n) {
     if (n > space()) return false;
-    for (size_t i = 0; i < n; ++i) push(data[i]);
+    // Room for all was checked once: each byte is a copy, not another check (every frame the QR
+    // sends comes this way).
+    size_t head = head_;
+    for (size_t i = 0; i < n; ++i) bytes_[head++ & kMask] = data[i];
+    head_ = head;
     return true;
   }
   bool peek(uint8_t& byte) const {

@@ -59,8 +59,24 @@ struct UnsignedOf<int64_t> {
 };
 
 // Two's-complement wrap into Raw (C++20 defines narrowing conversions as modular).
+//
+// On RV32 a 64-bit value wrapped to 32 bits goes on as a plain register: GCC (12) otherwise keeps
+// tracking it as the 64-bit value it came from, and a later widening product of it (mul_wide of a
+// narrowed sum, the filters' and estimator's usual step) is lowered as a 64 x 32 one, mulhu and a
+// multiply per sign to correct it, where mul + mulh is the whole product. The empty asm statement
+// only hides where the register came from; the value is the same, and constant evaluation and
+// other targets take the plain conversion.
 template <typename Raw, typename V>
 constexpr Raw wrap(V v) {
+#if defined(__riscv) && __riscv_xlen == 32
+  if constexpr (sizeof(V) == 8 && sizeof(Raw) == 4) {
+    if (!__builtin_is_constant_evaluated()) {
+      Raw r = static_cast<Raw>(v);
+      asm("" : "+r"(r));
+      return r;
+    }
+  }
+#endif
   return static_cast<Raw>(v);
 }
 

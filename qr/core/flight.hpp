@@ -165,6 +165,8 @@ class Flight {
   template <class F>
   friend struct FlightRequests;
 
+  void receive_link_bytes();
+  void receive_radio_bytes();
   void on_frame(const wire::Frame& frame);
   void on_radio_sticks(const drivers::RcSticks& sticks);
   void send_download_parts();

@@ -9,17 +9,13 @@ namespace qr {
 
 template <SignalChain Chain>
 void Flight<Chain>::run_link() {
-  uint8_t byte = 0;
-  while (rx_.pop(byte)) {
-    last_byte_us_ = tick_us_;
-    parser_.push(byte, [this](const wire::Frame& frame) { on_frame(frame); });
-  }
+  // Most ticks bring no byte on either line: the bytes' work is out of line, so such a tick only
+  // checks (and does not save the registers the parsers need).
+  if (!rx_.empty()) receive_link_bytes();
   // A frame's bytes come within a millisecond; after 50 ms of silence what the parser holds is
   // the start of a frame whose sender stopped (docs/protocol.md, section 4).
   if (parser_.buffered() != 0 && tick_us_ - last_byte_us_ > 50000u) parser_.line_idle();
-  uint8_t radio_bytes[decltype(radio_rx_)::kCapacity];
-  const size_t radio_count = radio_rx_.pop(radio_bytes, sizeof radio_bytes);
-  radio_.push(radio_bytes, radio_count, tick_us_, [this](const drivers::RcSticks& sticks) { on_radio_sticks(sticks); });
+  if (!radio_rx_.empty()) receive_radio_bytes();
 
   // The set-points change only with the sticks (or a parameter that scales them).
   if (pilot_changed_) {
@@ -38,7 +34,23 @@ void Flight<Chain>::run_link() {
     const wire::ParameterLimits& spec = wire::kParameterLimits[report_next_++];
     send(wire::encode(wire::ParamReport{static_cast<uint8_t>(spec.id), params_.get(spec.id)}));
   }
-  send_download_parts();
+  if (log_.downloading()) send_download_parts();  // the check here: the parts' work is out of line
+}
+
+template <SignalChain Chain>
+[[gnu::noinline]] void Flight<Chain>::receive_link_bytes() {
+  uint8_t byte = 0;
+  while (rx_.pop(byte)) {
+    last_byte_us_ = tick_us_;
+    parser_.push(byte, [this](const wire::Frame& frame) { on_frame(frame); });
+  }
+}
+
+template <SignalChain Chain>
+[[gnu::noinline]] void Flight<Chain>::receive_radio_bytes() {
+  uint8_t radio_bytes[decltype(radio_rx_)::kCapacity];
+  const size_t radio_count = radio_rx_.pop(radio_bytes, sizeof radio_bytes);
+  radio_.push(radio_bytes, radio_count, tick_us_, [this](const drivers::RcSticks& sticks) { on_radio_sticks(sticks); });
 }
 
 template <SignalChain Chain>
@@ -128,8 +140,7 @@ void Flight<Chain>::run_stream() {
 
 // Parts of a download while the link has room for them next to a telemetry period's frames.
 template <SignalChain Chain>
-void Flight<Chain>::send_download_parts() {
-  if (!log_.downloading()) return;
+[[gnu::noinline]] void Flight<Chain>::send_download_parts() {
   // Parts queue only this deep: more than the line sends in a period (11.5 bytes at 1 kHz, 23 at
   // 500 Hz), so it never idles, but an ack queued behind them leaves within a few ms. A deeper
   // queue (the whole ring) held acks 20 ms, and a bad line's log_resend requests, one out at a

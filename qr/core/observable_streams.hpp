@@ -50,6 +50,8 @@ class ObservableStreams {
     slot.count = n;
     for (uint8_t i = 0; i < wire::kStreamObservablesMax; ++i) slot.id[i] = r.id[i];
     slot.packer.start(r.stream, n);
+    running_ = 0;
+    for (const Slot& each : slots_) running_ = static_cast<uint8_t>(running_ + (each.divider != 0 ? 1 : 0));
     return NackReason::none;
   }
 
@@ -68,17 +70,22 @@ class ObservableStreams {
     return NackReason::none;
   }
 
-  bool streaming() const {
-    for (const Slot& slot : slots_) {
-      if (slot.divider != 0) return true;
-    }
-    return false;
-  }
+  bool streaming() const { return running_ != 0; }
 
   // One tick: a sample of every stream that is due; then one owed table row if `room(bytes)` says
-  // the line has that much to spare.
+  // the line has that much to spare. Idle (no stream running, no row owed) it is two compares: the
+  // row runs in every tick of every mode, and a console that plots nothing should not pay for it.
   template <class Send, class Room>
-  void run(const Flight& f, uint32_t control_hz, Send&& send, Room&& room) {
+  [[gnu::always_inline]] inline void run(const Flight& f, uint32_t control_hz, Send&& send, Room&& room) {
+    if (running_ == 0 && next_row_ >= end_row_) return;
+    run_due(f, control_hz, send, room);
+  }
+
+ private:
+  struct Slot;
+
+  template <class Send, class Room>
+  [[gnu::noinline]] void run_due(const Flight& f, uint32_t control_hz, Send& send, Room& room) {
     // Here, not at class scope: the flight is complete only once its members are instantiated.
     static_assert(every_observable_has_a_reader<Flight>(), "kObservableReaders: one reader per table row");
     for (Slot& slot : slots_) {
@@ -89,9 +96,6 @@ class ObservableStreams {
     }
     if (next_row_ < end_row_ && room(wire::kMaxFrameBytes)) send_table_frame(control_hz, send);
   }
-
- private:
-  struct Slot;
 
   // One sample of a stream into its packer; true when that filled a frame, encoded in `out`. Out
   // of line: one copy in the image.
@@ -144,6 +148,7 @@ class ObservableStreams {
     wire::SamplePacker packer;
   };
   Slot slots_[wire::kStreamCount];
+  uint8_t running_ = 0;    // streams with a divider: the run's quick idle check
   uint8_t next_row_ = 0;   // table rows owed: [next_row_, end_row_)
   uint8_t next_part_ = 0;  // of the row next_row_: 0 its info, k its text piece k-1
   uint8_t end_row_ = 0;

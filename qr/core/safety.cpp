@@ -1,3 +1,5 @@
+#include <stddef.h>
+
 #include <qr/core/rate.hpp>
 #include <qr/core/safety.hpp>
 
@@ -90,12 +92,31 @@ constexpr Watchdog kWatchdogs[] = {
                           const Lasting& lasting) { return rule(m).needs_attitude && lasting.tilt; }},
 };
 
+constexpr size_t kWatchdogCount = sizeof(kWatchdogs) / sizeof(kWatchdogs[0]);
+
+// The first watchdog in table order that has tripped (none: PanicCause::none). Unrolled over the
+// table at compile time, so each check is a direct call the compiler inlines: this runs every tick,
+// and three calls through pointers cost more than the checks themselves.
+template <size_t I = 0>
+[[gnu::always_inline]] inline PanicCause first_tripped(const Situation& s, const SafetyLimits& l, Mode m,
+                                                       const Lasting& lasting) {
+  if constexpr (I == kWatchdogCount) {
+    return PanicCause::none;
+  } else {
+    constexpr Watchdog w = kWatchdogs[I];
+    if (w.tripped(s, l, m, lasting)) return w.cause;
+    return first_tripped<I + 1>(s, l, m, lasting);
+  }
+}
+
 // The voltage the pack would show at rest: the measured one plus the sag the engines' load
 // causes. Motor current goes with shaft power, which goes with the cube of rotor speed, and the
 // mixer makes the engine command proportional to rotor speed (engine_mixer.hpp): the load is
 // sum (e_i / 1000)^3 / 4, 0 at rest and 1 at all engines full. In per mille:
 // e^3 / (4 10^6) for each engine (e^3 <= 10^9 fits 32 bits; divisions by constants).
 uint16_t rested_mv(uint16_t measured_mv, const EngineCommand& engines, uint16_t sag_full_mv) {
+  // Engines at rest (every tick on the ground): no load, no sag, no cubes to take.
+  if ((engines.value[0] | engines.value[1] | engines.value[2] | engines.value[3]) == 0) return measured_mv;
   uint32_t load_permille = 0;
   for (const uint16_t e : engines.value) {
     const uint32_t v = e < kEngineMax ? e : kEngineMax;
@@ -221,12 +242,8 @@ void SafetyMachine::supervise(const Situation& s) {
   const Lasting lasting{battery_low_long, tilted && s.now_us - tilted_since_us_ >= limits_.tilt_time_us};
 
   if (rule(mode_).flies) {
-    for (const Watchdog& w : kWatchdogs) {
-      if (w.tripped(s, limits_, mode_, lasting)) {
-        enter_panic(w.cause, s);
-        break;
-      }
-    }
+    const PanicCause cause = first_tripped(s, limits_, mode_, lasting);
+    if (cause != PanicCause::none) enter_panic(cause, s);
   }
 
   if (mode_ == Mode::panic) {

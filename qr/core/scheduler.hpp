@@ -179,8 +179,11 @@ class Scheduler {
   template <uint8_t Id>
   [[gnu::always_inline]] inline void run_task(uint32_t t) {
     constexpr Task<Context> row = Context::task(Id);
-    if constexpr (row.divider != 1 || row.divider_from != nullptr) {
+    if constexpr (row.divider_from != nullptr) {
       if (t % slots_[Id].divider != slots_[Id].phase) return;
+    } else if constexpr (row.divider > 1) {
+      // The table's own rate: constants, so a power of two is a mask and nothing is loaded.
+      if (t % row.divider != row.phase % row.divider) return;
     }
     running_ = Id;
     const uint32_t before = board_.cycles();

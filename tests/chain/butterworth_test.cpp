@@ -179,6 +179,60 @@ TEST(Butterworth, SettledFilterHoldsItsInputExactly) {
   }
 }
 
+// The filter keeps what the rounding dropped in 32 bits (it is under half an output lsb in the
+// sum's units). The error-feedback step written with the whole 64-bit residual, as it was, must
+// give the same outputs bit for bit on the flight's inputs at their extremes: full-scale gyro
+// counts at random and full-scale steps (the largest overshoot), every cut-off, both orders.
+template <int Order>
+class WideResidualLowpass {
+  using Iir = IirOfOrder<Order>;
+
+ public:
+  using Coefficients = typename Iir::template Coefficients<Coefficient>;
+  explicit WideResidualLowpass(const Coefficients& c) : c_(c) {}
+  void settle(Signal x) {
+    Iir::settle(state_, x);
+    residual_ = {};
+  }
+  Signal step(Signal x) {
+    const auto sum = Iir::sum(state_, c_, x) + residual_;
+    const Signal y = fx::narrow<Signal>(sum);
+    residual_ = sum - fx::mul_wide(Coefficient(1.0), y);
+    Iir::shift(state_, x, y);
+    return y;
+  }
+
+ private:
+  const Coefficients& c_;
+  typename Iir::template State<Signal> state_{};
+  decltype(fx::mul_wide(Coefficient{}, Signal{})) residual_{};
+};
+
+template <int Order>
+void check_narrow_residual_is_exact() {
+  using Table = ButterworthTable<Coefficient, Order, 1000>;
+  using Units = SensorUnits<FixedNumbers>;
+  std::mt19937 random(13);
+  std::uniform_int_distribution<int32_t> counts(INT16_MIN, INT16_MAX);
+  for (int32_t fc = 1; fc <= 250; ++fc) {
+    ButterworthLowpass<Signal, Coefficient, Order> filter(Table::for_cutoff(fc));
+    WideResidualLowpass<Order> wide(Table::for_cutoff(fc));
+    filter.settle(Signal{});
+    wide.settle(Signal{});
+    for (int n = 0; n < 4000; ++n) {
+      // Full-scale steps every 500 samples for the first half, full-scale noise after.
+      const int32_t c = n < 2000 ? ((n / 500) % 2 == 0 ? INT16_MAX : INT16_MIN) : counts(random);
+      const Signal x = Units::rate_of(c);
+      ASSERT_EQ(filter.step(x).raw(), wide.step(x).raw()) << "order " << Order << ", " << fc << " Hz, sample " << n;
+    }
+  }
+}
+
+TEST(Butterworth, NarrowResidualGivesTheWideResidualsOutputs) {
+  check_narrow_residual_is_exact<1>();
+  check_narrow_residual_is_exact<2>();
+}
+
 // Impulse response of B/A (or of 1/A with b = {1}), until it has died out.
 std::vector<double> impulse_response(const double (&b)[3], const double (&a)[3]) {
   std::vector<double> h;

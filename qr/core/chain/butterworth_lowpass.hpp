@@ -115,9 +115,12 @@ constexpr typename IirOfOrder<Order>::template Coefficients<C> coefficients_of(c
 // error fed back, the output error is (1 - z^-1)/A(z) e instead: no gain at DC, so no dead band,
 // and the measured worst error against the double filter with the same coefficients drops 450x
 // at 1 Hz and 13x at the default 20 Hz (order 2, 1 kHz; docs/signal-chain.md). Near fs/4, where
-// there is no dead band, (1 - z^-1) doubles the error instead, to about one lsb. It costs a wide
-// add, a wide subtract and a 64-bit residual per filter. In floating point the residual is always
-// 0 and this is the plain direct form I.
+// there is no dead band, (1 - z^-1) doubles the error instead, to about one lsb. In fixed point
+// the residual is less than half an lsb of the output, in the sum's units: for 30-bit coefficients
+// it is within +-2^29, so it is kept in 32 bits (the low word of the sum less y's part of it,
+// exact while y fits its format, which the filters are sized for) and costs a 32-bit subtract and
+// a sign-extended add, not two 64-bit operations. In floating point the residual is always 0 and
+// this is the plain direct form I.
 template <class T, class C, int Order>
 class ButterworthLowpass {
   static_assert(Order == 1 || Order == 2, "Butterworth low-pass of order 1 or 2");
@@ -133,16 +136,25 @@ class ButterworthLowpass {
   constexpr const Coefficients& coefficients() const { return *c_; }
 
   constexpr T step(T x) {
-    const Sum sum = Iir::sum(state_, *c_, x) + residual_;
-    y_ = fx::narrow<T>(sum);
-    residual_ = sum - fx::mul_wide(kOne, y_);  // exactly what the rounding dropped
+    if constexpr (kNarrowResidual) {
+      const Sum sum = Iir::sum(state_, *c_, x) + Sum::from_raw(residual_);
+      y_ = fx::narrow<T>(sum);
+      // Exactly what the rounding dropped: sum - y x 2^shift, whose true value fits 32 bits, so
+      // its low word (mod 2^32) is all of it.
+      residual_ = static_cast<int32_t>(static_cast<uint32_t>(sum.raw()) -
+                                       (static_cast<uint32_t>(y_.raw()) << kResidualShift));
+    } else {
+      const Sum sum = Iir::sum(state_, *c_, x) + residual_;
+      y_ = fx::narrow<T>(sum);
+      residual_ = sum - fx::mul_wide(kOne, y_);  // exactly what the rounding dropped
+    }
     Iir::shift(state_, x, y_);
     return y_;
   }
   // As if x had been the input forever: starts the filter without a transient from zero.
   constexpr void settle(T x) {
     Iir::settle(state_, x);
-    residual_ = Sum{};
+    residual_ = Residual{};
     y_ = x;
   }
   constexpr T output() const { return y_; }
@@ -151,9 +163,31 @@ class ButterworthLowpass {
   using Sum = decltype(fx::mul_wide(C{}, T{}));
   static constexpr C kOne = C(1.0);
 
+  // The rounding residual: an int32 raw in the sum's units for Q formats whose output lsb is at
+  // most 2^31 of the sum's (the residual is within half of it), else the sum type itself.
+  template <class U, class Cf>
+  static constexpr int residual_shift() {
+    if constexpr (fx::is_q<U>) {
+      return decltype(fx::mul_wide(Cf{}, U{}))::frac_bits - U::frac_bits;
+    } else {
+      return 64;
+    }
+  }
+  static constexpr int kResidualShift = residual_shift<T, C>();
+  static constexpr bool kNarrowResidual = kResidualShift >= 0 && kResidualShift <= 31;
+  template <bool Narrow, class Wide>
+  struct ResidualOf {
+    using type = Wide;
+  };
+  template <class Wide>
+  struct ResidualOf<true, Wide> {
+    using type = int32_t;
+  };
+  using Residual = typename ResidualOf<kNarrowResidual, Sum>::type;
+
   const Coefficients* c_;
   typename Iir::template State<T> state_{};
-  Sum residual_{};
+  Residual residual_{};
   T y_{};
 };
 

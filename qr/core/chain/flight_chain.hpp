@@ -260,10 +260,12 @@ class FlightChain {
   uint16_t lift() const { return pilot_.lift(); }
   // On the ground (landed_detector.hpp): the controllers' integrals are held empty.
   bool landed() const { return landed_.landed(); }
+  // The larger magnitude, then one conversion: scaling and rounding keep the order, so this is the
+  // larger of the two converted (the safety machine reads it every tick).
   int32_t tilt_mrad() const {
-    const int32_t roll = Num::round_to_int(fx::mul_wide(chain::magnitude(estimator_.roll()), kThousand));
-    const int32_t pitch = Num::round_to_int(fx::mul_wide(chain::magnitude(estimator_.pitch()), kThousand));
-    return roll > pitch ? roll : pitch;
+    const Angle roll = chain::magnitude(estimator_.roll());
+    const Angle pitch = chain::magnitude(estimator_.pitch());
+    return Num::round_to_int(fx::mul_wide(pitch < roll ? roll : pitch, kThousand));
   }
 
   // For the sensor log and the replay: filtered (not calibrated) sensors in counts, the
