@@ -132,7 +132,7 @@ void release_line() {
   uint8_t byte = 0;
   for (;;) {
     barrier();  // the interrupt pushes meanwhile (one producer, one consumer: no lock)
-    if (!g_line.peek(byte) || !g_ground_rx.take(now)) break;
+    if (!g_line.peek(byte) || !g_ground_rx.take(now, g_line.size() > PacedReceiver::kFifoBytes)) break;
     g_line.pop(byte);
     barrier();
     if (!g_rx.push(byte)) g_rx_overruns = g_rx_overruns + 1;
@@ -180,6 +180,10 @@ VirtBoard::VirtBoard(uint32_t control_hz) : recording_(reinterpret_cast<const ui
   linked_ = g_link.start();
   g_linked = linked_;
   if (linked_) {
+    if (reg<uint32_t>(map::kCoreSpeed) == map::kCoreSpeedMagic) {
+      const uint32_t mhz = reg<uint32_t>(map::kCoreSpeed + 4);
+      core_mhz_ = mhz >= 1 && mhz <= 1000 ? mhz : 0;
+    }
     // The simulator's frames are the kick: the timer is only the watchdog, armed while a tick
     // runs (no timer deadline for QEMU's -icount to jump to while the board waits).
     write_mtimecmp(0xFFFFFFFFFFFFFFFFull);
@@ -210,12 +214,17 @@ uint32_t VirtBoard::wait_kick([[maybe_unused]] uint32_t seen) {
     // wait is before the tick's count starts.
     for (;;) {
       disable_interrupts();
-      // In lock-step every frame is the next kick: no check against `seen` is needed.
+      // In lock-step every frame is the next kick, unless a core of a given speed ran a tick past
+      // the frame's period (the scheduler has counted it seen, a deadline miss).
       if (const simlink::SensorFrame* frame = g_link.take_kick(g_rx_bytes)) {
         enable_interrupts();
-        kick_ = frame->kick;
         time_ns_ += static_cast<uint64_t>(frame->time_us - time_us_) * 1000u;
         time_us_ = frame->time_us;
+        if (core_mhz_ != 0 && static_cast<int32_t>(frame->kick - seen) <= 0) {
+          answer_missed(frame->kick);
+          continue;
+        }
+        kick_ = frame->kick;
         for (int axis = 0; axis < 3; ++axis) {
           sample_.gyro[axis] = frame->gyro[axis];
           sample_.accel[axis] = frame->accel[axis];
@@ -224,6 +233,7 @@ uint32_t VirtBoard::wait_kick([[maybe_unused]] uint32_t seen) {
         sample_.pressure_pa = frame->pressure_pa;
         // The watchdog for this tick, on the virtual clock (instructions under -icount).
         write_mtimecmp(read_mtime() + static_cast<uint64_t>(kStallPeriods) * g_period_ticks);
+        kick_instret_ = instret();
         return kick_;
       }
       g_link.poll();
@@ -251,10 +261,18 @@ uint32_t VirtBoard::wait_kick([[maybe_unused]] uint32_t seen) {
 
 // On the link, the kick flown now: in lock-step no frame comes while a tick runs, and one that
 // came before the scheduler started must not count as seen.
-uint32_t VirtBoard::kicks() const { return linked_ ? kick_ : g_kicks; }
+// With a core speed, the kicks that came while the tick ran are the periods its instructions
+// took beyond the first.
+uint32_t VirtBoard::kicks() const { return linked_ ? kick_ + core_us_since_kick() / g_period_us : g_kicks; }
+
+uint32_t VirtBoard::core_us_since_kick() const {
+  return core_mhz_ == 0 ? 0 : (instret() - kick_instret_) / core_mhz_;  // MHz: instructions a µs
+}
 
 uint32_t VirtBoard::now_us() const {
-  if (linked_) return time_us_;  // stands still while a tick runs, as in the host simulator
+  // On the link, the stamp: standing still while a tick runs, as in the host simulator, or run on
+  // by the core's instructions.
+  if (linked_) return time_us_ + core_us_since_kick();
   disable_interrupts();
   const uint32_t base_us = g_kick_time_us;
   const uint32_t base_mtime = g_kick_mtime_lo;
@@ -313,7 +331,28 @@ void VirtBoard::send_engines(simlink::EngineFrame& frame) {
     frame.stats[frame.count] = s.count, frame.stats[frame.max] = s.max, frame.stats[frame.overruns] = s.overruns;
     frame.stats[frame.sum_low] = s.sum_low, frame.stats[frame.sum_high] = s.sum_high;
   }
+  if (core_mhz_ != 0) {
+    // A tick that ended in a later period: in this one the outputs kept their engines; the new
+    // ones go out with the period it ended in (answer_missed).
+    const uint32_t ended = kicks();
+    if (ended != kick_) {
+      pending_ = engines_;
+      pending_kick_ = ended;
+      for (int i = 0; i < 4; ++i) frame.engines[i] = held_.value[i];
+    } else {
+      held_ = engines_;
+    }
+    last_answer_ = frame;
+  }
   g_link.send_engines(frame);
+}
+
+void VirtBoard::answer_missed(uint32_t kick) {
+  if (kick == pending_kick_) held_ = pending_;
+  simlink::EngineFrame f = last_answer_;
+  f.kick = kick;
+  for (int i = 0; i < 4; ++i) f.engines[i] = held_.value[i];
+  g_link.send_engines(f);
 }
 
 void VirtBoard::cut_engines() {
