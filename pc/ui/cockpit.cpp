@@ -254,7 +254,7 @@ void Cockpit::draw_pilot(const Console& console, int width) {
   const LinkFigures& f = console.link().figures();
   put(12, 0, "link", 0, A_BOLD);
   std::string uplink = t.qr_link ? text("   QR received %u ok, %u bad, %u overrun", t.qr_link->frames_ok,
-                                                      t.qr_link->check_failures, t.qr_link->rx_overruns)
+                                        t.qr_link->check_failures, t.qr_link->rx_overruns)
                                  : "";
   put(12, 10,
       text("resent %u  no answer %u  telemetry lost %u%s", f.resends, f.gave_up, t.attitude_lost, uplink.c_str()));

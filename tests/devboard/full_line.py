@@ -248,7 +248,7 @@ def main():
         peak = max(peak, sum(len(c) for _, c in chunks[start:end + 1]))
     last = counters[-1] if counters else None
     report = {
-        "qr": "devboard pty" if args.devboard else "qrsim --serve --devboard",
+        "ground_line": "devboard pty" if args.devboard else "qrsim --serve --devboard",
         "seconds_sent": round(took, 2),
         "bytes_sent": sum(len(d) for d, _ in frames),
         "send_rate_bytes_per_s": round(sum(len(d) for d, _ in frames) / took),

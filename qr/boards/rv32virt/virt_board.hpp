@@ -105,10 +105,10 @@ class VirtBoard {
   // A core of a given speed (core_mhz_ != 0): the board's clock runs on from the kick's stamp by
   // the instructions retired since it, and an engine value reaches the outputs when its tick ends.
   uint32_t core_mhz_ = 0;
-  uint32_t kick_instret_ = 0;      // minstret when the kick was taken
-  qr::EngineCommand held_;         // on the outputs now
-  qr::EngineCommand pending_;      // from a tick that ended in a later period: out from that period
-  uint32_t pending_kick_ = 0;      // that period
+  uint32_t kick_instret_ = 0;  // minstret when the kick was taken
+  qr::EngineCommand held_;     // on the outputs now
+  qr::EngineCommand pending_;  // from a tick that ended in a later period: out from that period
+  uint32_t pending_kick_ = 0;  // that period
   simlink::EngineFrame last_answer_;
 };
 
