@@ -159,8 +159,8 @@ VirtBoard::VirtBoard(uint32_t control_hz) : recording_(reinterpret_cast<const ui
   // FIFOs on and cleared, the receive interrupt at 14 bytes. QEMU hands the UART at most as many
   // bytes at a time as the trigger level allows: at 1 byte, one byte per trip through its main
   // loop, which on a loaded host took in only 2,300-7,000 of the line's 11,520 bytes a second.
-  // The kick waits drain the FIFO as they spin, so a frame's tail does not wait for the
-  // character timeout.
+  // A frame's tail below the trigger comes with the character timeout (the divisor below), and
+  // on the link the kick wait drains the FIFO as it spins.
   uart[kUartFcr] = 0xC7;
   uart[kUartMcr] = 0x08;                              // OUT2: the 16550's interrupt line enable
   reg<uint32_t>(map::kPlic + 4 * map::kUartIrq) = 1;  // priority
