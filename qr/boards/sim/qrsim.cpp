@@ -29,9 +29,9 @@ namespace {
 
 constexpr const char* kUsage = R"(usage:
   qrsim --serve [--stdio] [--seed N] [--vehicle FILE] [--seconds S] [--status] [--truth-fd N]
-        [--devboard [ELF]]
+        [--devboard [ELF] [--core-mhz N]]
   qrsim --scenario NAME|FILE [--seconds S] [--seed N] [--vehicle FILE] [--param NAME=VALUE]...
-        [--no-noise] [--trace FILE.csv] [--record FILE.csv] [--json] [--devboard [ELF]]
+        [--no-noise] [--trace FILE.csv] [--record FILE.csv] [--json] [--devboard [ELF] [--core-mhz N]]
         [--rc crsf] [--esc dshot]
   qrsim --sweep NAME|FILE [--seeds N] [--no-draw] [--seed N] [--seconds S] [--vehicle FILE]
         [--param NAME=VALUE]... [--rc crsf] [--esc dshot]
