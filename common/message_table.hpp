@@ -103,7 +103,7 @@ inline constexpr MessageSpec kMessageTable[] = {
     {MessageType::telemetry_engines, 8, false, Direction::qr_to_pc, "telemetry_engines", false},
     {MessageType::telemetry_setpoints, 8, false, Direction::qr_to_pc, "telemetry_setpoints", false},
     {MessageType::telemetry_system, 8, false, Direction::qr_to_pc, "telemetry_system", false},
-    {MessageType::telemetry_link, 8, false, Direction::qr_to_pc, "telemetry_link", false},
+    {MessageType::telemetry_link, 9, false, Direction::qr_to_pc, "telemetry_link", false},
     {MessageType::sensor_log_part, 9, false, Direction::qr_to_pc, "sensor_log_part", false},
     {MessageType::telemetry_log_part, 9, false, Direction::qr_to_pc, "telemetry_log_part", false},
     {MessageType::telemetry_task, 7, false, Direction::qr_to_pc, "telemetry_task", false},

@@ -12,9 +12,9 @@
 namespace wire {
 
 inline constexpr uint32_t kLineBytesPerS = 11520;  // 115200 baud, 8N1: 10 bits a byte
-// One telemetry period (section 7): attitude 12 + rates 9 + the largest slow group 11 + a task
-// figure 10.
-inline constexpr uint32_t kTelemetryPeriodBytes = 42;
+// One telemetry period (section 7): attitude 12 + rates 9 + the largest slow group 12
+// (telemetry_link) + a task figure 10.
+inline constexpr uint32_t kTelemetryPeriodBytes = 43;
 // Acks, nacks, parameter reports, debug text, log status: under 500 bytes/s in practice (section
 // 7); twice that is kept free.
 inline constexpr uint32_t kReplyReserveBytesPerS = 1000;

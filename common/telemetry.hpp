@@ -117,14 +117,17 @@ struct TelemetrySystem {
   constexpr bool valid() const { return cpu_load <= kPermilleMax; }
 };
 
-// The QR's receive counters (FrameParser::counters), each modulo 2^16: the PC compares them with
-// what it sent to show the uplink's health.
+// The QR's receive counters (FrameParser::counters), each modulo 2^16, and its serial receiver's
+// overruns (bytes the board had no room for, lost before the parser saw them), saturated at 255
+// so that once bytes were lost it never reads 0 again (a payload holds 9 bytes at most): the PC
+// compares them with what it sent to show the uplink's health.
 struct TelemetryLink {
   static constexpr MessageType kType = MessageType::telemetry_link;
   uint16_t frames_ok = 0;
   uint16_t check_failures = 0;
   uint16_t unknown_types = 0;
   uint16_t bytes_skipped = 0;
+  uint8_t rx_overruns = 0;
 
   constexpr bool operator==(const TelemetryLink&) const = default;
 
@@ -134,6 +137,7 @@ struct TelemetryLink {
     v(m.check_failures);
     v(m.unknown_types);
     v(m.bytes_skipped);
+    v(m.rx_overruns);
   }
   constexpr bool valid() const { return true; }
 };

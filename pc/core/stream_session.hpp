@@ -63,7 +63,7 @@ class StreamSession {
   const ObservableCatalog& catalog() const { return catalog_; }
   const PlotModel& plot() const { return plot_; }
   PlotModel& plot() { return plot_; }
-  // "3 x 200 Hz = 600 samples/s: 2400 of 8420 B/s": the selection's cost beside the room.
+  // "3 x 200 Hz = 600 samples/s: 2400 of 8370 B/s": the selection's cost beside the room.
   std::string cost_text(uint32_t telemetry_hz) const;
   // "streaming", "asking the QR", "refused: ...", "no table yet (12/31)".
   const std::string& state() const { return state_; }

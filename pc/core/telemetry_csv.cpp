@@ -49,6 +49,7 @@ std::vector<std::string> telemetry_csv_header() {
           "qr_check_failures",
           "qr_unknown_types",
           "qr_bytes_skipped",
+          "qr_rx_overruns",
           "ctl_lift",
           "ctl_roll",
           "ctl_pitch",

@@ -253,8 +253,15 @@ void Cockpit::draw_pilot(const Console& console, int width) {
 
   const LinkFigures& f = console.link().figures();
   put(12, 0, "link", 0, A_BOLD);
-  std::string uplink = t.qr_link ? text("   QR received %u ok, %u bad", t.qr_link->frames_ok, t.qr_link->check_failures)
-                                 : "";
+  // Overruns (bytes the QR's receiver had no room for) only when there were any: the line has
+  // room for the usual counts, and lost bytes are what must not go unseen.
+  std::string uplink;
+  if (t.qr_link && t.qr_link->rx_overruns != 0) {
+    uplink = text("   QR rx %u ok, %u bad, %u overrun", t.qr_link->frames_ok, t.qr_link->check_failures,
+                  t.qr_link->rx_overruns);
+  } else if (t.qr_link) {
+    uplink = text("   QR received %u ok, %u bad", t.qr_link->frames_ok, t.qr_link->check_failures);
+  }
   put(12, 10,
       text("resent %u  no answer %u  telemetry lost %u%s", f.resends, f.gave_up, t.attitude_lost, uplink.c_str()));
   (void)width;

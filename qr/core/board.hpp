@@ -83,4 +83,11 @@ concept EscAnswerBoard = requires(B& b, EscAnswers& answers) {
   {b.esc_answers(answers)};
 };
 
+// Optional: a serial receiver that counts the bytes it had no room for.
+//   uint32_t rx_overruns() const       since start
+template <class B>
+concept OverrunCountingBoard = requires(const B& b) {
+  {b.rx_overruns()};
+};
+
 }  // namespace qr

@@ -74,6 +74,9 @@ class Flight {
   }
   uint32_t rx_space() const { return static_cast<uint32_t>(rx_.space()); }
   void receive(uint8_t byte) { rx_.push(byte); }
+  // Bytes the board's serial receiver had no room for (boards that count them), since start.
+  void serial_overruns(uint32_t count) { rx_overruns_ = count; }
+  uint32_t rx_overruns() const { return rx_overruns_; }
   // The radio receiver's line (boards with one, RadioBoard).
   uint32_t radio_space() const { return static_cast<uint32_t>(radio_rx_.space()); }
   void radio_receive(uint8_t byte) { radio_rx_.push(byte); }
@@ -221,6 +224,7 @@ class Flight {
 
   // Receive side: 64 bytes hold more than two ticks of a full-speed line.
   wire::ByteRing<64> rx_;
+  uint32_t rx_overruns_ = 0;
   // Send side: a telemetry period's frames plus replies, with room to spare.
   wire::ByteRing<256> tx_;
   wire::FrameParser parser_{wire::Listen::pc_to_qr};

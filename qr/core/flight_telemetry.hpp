@@ -78,7 +78,8 @@ class FlightTelemetry {
       const wire::LinkCounters& c = f.link_counters();
       send(wire::encode(wire::TelemetryLink{static_cast<uint16_t>(c.frames_ok), static_cast<uint16_t>(c.check_failures),
                                             static_cast<uint16_t>(c.unknown_types),
-                                            static_cast<uint16_t>(c.bytes_skipped)}));
+                                            static_cast<uint16_t>(c.bytes_skipped),
+                                            static_cast<uint8_t>(f.rx_overruns() < 255u ? f.rx_overruns() : 255u)}));
     }
   }
 

@@ -18,7 +18,9 @@
 //
 // A board with a radio receiver (RadioBoard, board.hpp) and a context that takes its bytes
 // (radio_space, radio_receive) also get a bounded number of radio bytes per tick; a board whose
-// ESCs answer (EscAnswerBoard) hands their answers to the context (esc_answers) after the engines.
+// ESCs answer (EscAnswerBoard) hands their answers to the context (esc_answers) after the engines;
+// a board that counts its serial receiver's overruns (OverrunCountingBoard) tells the context
+// (serial_overruns) with the bytes.
 //
 // Every rate, phase and budget is in the context's task table (task.hpp); no task divides itself.
 //
@@ -114,6 +116,9 @@ class Scheduler {
  private:
   void run(uint32_t now_us) {
     context_.begin_tick(now_us, board_.read_sensors());
+    if constexpr (OverrunCountingBoard<B> && requires(Context & c) { c.serial_overruns(uint32_t{}); }) {
+      context_.serial_overruns(board_.rx_overruns());
+    }
     uint8_t byte = 0;
     for (uint16_t n = 0; n < limits_.rx_bytes_per_tick && context_.rx_space() > 0; ++n) {
       if (!board_.serial_read(byte)) break;

@@ -88,7 +88,7 @@ inline std::vector<GoldenFrame> golden_frames() {
       golden("G15", TelemetryEngines{{400, 410, 395, 405}}, "4D 8D 90 01 9A 01 8B 01 95 01 8E"),
       golden("G16", TelemetrySetpoints{450, -873, 0, 500}, "4D 8E C2 01 97 FC 00 00 F4 01 E5"),
       golden("G17", TelemetrySystem{11850, 623, 612, 3}, "4D 90 4A 2E 6F 02 64 02 03 00 A0"),
-      golden("G18", TelemetryLink{5012, 3, 1, 27}, "4D 93 94 13 03 00 01 00 1B 00 2C"),
+      golden("G18", TelemetryLink{5012, 3, 1, 27, 2}, "4D 93 94 13 03 00 01 00 1B 00 02 0C"),
       golden("G19", make_log_part(golden_sensor_record(), 0), "4D 95 E8 03 00 15 CD 5B 07 F4 FF 6E"),
       golden("G20", make_log_part(golden_sensor_record(), 4), "4D 95 E8 03 04 4F FF FC 3F 4A 2E A2"),
       golden("G21", make_log_part(golden_telemetry_record(), 0), "4D 96 11 00 00 40 4B 4C 00 05 03 AC"),

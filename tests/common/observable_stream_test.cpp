@@ -87,8 +87,8 @@ TEST(SamplePacking, AGapInTheFrameCountIsCountedAsLostSamples) {
 
 // docs/protocol.md section 13.4, in numbers.
 TEST(StreamBudget, TheRuleAsTheProtocolDocumentStatesIt) {
-  EXPECT_EQ(wire::stream_room_bytes_per_s(50), 8420u);
-  EXPECT_EQ(wire::stream_room_bytes_per_s(100), 6320u);
+  EXPECT_EQ(wire::stream_room_bytes_per_s(50), 8370u);
+  EXPECT_EQ(wire::stream_room_bytes_per_s(100), 6220u);
   EXPECT_EQ(wire::stream_room_bytes_per_s(300), 0u) << "never negative";
   EXPECT_EQ(wire::samples_per_frame(1), 4);
   EXPECT_EQ(wire::samples_per_frame(2), 2);

@@ -123,7 +123,7 @@ TEST(ProtocolDocument, ParametersAreListedInParametersMdOnly) {
 
 namespace {
 
-// A number as the document writes it: "11 520" or "7320".
+// A number as the document writes it: "11 520" or "7220".
 long number_in(const std::string& text) {
   std::string digits;
   for (char c : text) {

@@ -12,7 +12,7 @@ DEVBOARD = os.path.join(HERE, "..", "..", "scripts", "devboard")
 CONTROL, MODE_CHANGE, PARAM_SET, EXIT = 0x11, 0x12, 0x14, 0x1E
 ACK, NACK, TELEMETRY_ATTITUDE, TELEMETRY_SYSTEM = 0x81, 0x82, 0x88, 0x90
 PAYLOAD = {0x81: 2, 0x82: 3, 0x84: 5, 0x87: 9, 0x88: 9, 0x8B: 6, 0x8D: 8, 0x8E: 8, 0x90: 8,
-           0x93: 8, 0x95: 9, 0x96: 9, 0x99: 7, 0x9C: 7}
+           0x93: 9, 0x95: 9, 0x96: 9, 0x99: 7, 0x9C: 7}
 TELEMETRY_RATE_HZ = 7  # parameter id
 # The requests that carry a guard (docs/protocol.md, sections 2 and 3): mode_change, param_set,
 # log_start, log_stop, exit.

@@ -62,13 +62,13 @@ right=$(rows_of_phi right <<<"$after" | head -1)
 grep -q '^rad ' <<<"$after" || fail "no unit on the axis"
 echo "e2e: ok: the phi trace went up from row $left to row $right"
 
-# Over budget: four traces at 1 kHz need 12000 B/s, the line has 8420 beside the telemetry.
+# Over budget: four traces at 1 kHz need 12000 B/s, the line has 8370 beside the telemetry.
 keys /
 keys -l 'theta psi'
 keys Enter
 wait_for '4 x 200 Hz' 5 "four traces"
 keys . .
-wait_for '4 x 1000 Hz = 4000 samples/s: 12000 of 8420 B/s OVER' 5 "the cost shown before the QR answers"
+wait_for '4 x 1000 Hz = 4000 samples/s: 12000 of 8370 B/s OVER' 5 "the cost shown before the QR answers"
 wait_for 'refused: over_budget' 10 "the QR refuses the selection"
 wait_for 'QR refused the stream: the line cannot carry it' 3 "with its reason in the log"
 

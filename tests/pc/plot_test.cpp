@@ -87,7 +87,7 @@ TEST(StreamSession, SamplesReachThePlotAndTheCsvWithUnitsInTheColumnNames) {
   EXPECT_EQ(session.plot().traces().size(), 2u);
   ASSERT_FALSE(notes.empty());
   EXPECT_NE(notes.back().find("no observable \"nothing\""), std::string::npos);
-  EXPECT_EQ(session.cost_text(50), "2 x 200 Hz = 400 samples/s: 1200 of 8420 B/s");
+  EXPECT_EQ(session.cost_text(50), "2 x 200 Hz = 400 samples/s: 1200 of 8370 B/s");
 
   session.on_answer(wire::MessageType::stream_request, wire::NackReason::none, 50);  // nothing asked: ignored
   LinkSession link(0, 1);

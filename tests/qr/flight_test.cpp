@@ -98,6 +98,20 @@ TEST_F(FlightTest, StartsInSafeAndStreamsTelemetryAtTheParameterRate) {
   EXPECT_EQ(scheduler.stats().task[kAttitudeControlTask].count, 0u) << "not in safe's task set";
 }
 
+// Bytes the board's receiver had no room for never reach the parser: only the board can count
+// them, and the console sees them in telemetry_link, saturated so a count never reads 0 again.
+TEST_F(FlightTest, TheBoardsReceiveOverrunsReachTheConsole) {
+  run_ms(500);
+  ASSERT_FALSE(got<wire::TelemetryLink>().empty());
+  EXPECT_EQ(got<wire::TelemetryLink>().back().rx_overruns, 0);
+  board.overruns = 3;
+  run_ms(500);
+  EXPECT_EQ(got<wire::TelemetryLink>().back().rx_overruns, 3);
+  board.overruns = 300;
+  run_ms(500);
+  EXPECT_EQ(got<wire::TelemetryLink>().back().rx_overruns, 255);
+}
+
 TEST_F(FlightTest, ModeChangeIsAckedWithItsSequenceNumberAndApplied) {
   const uint8_t s = request_mode(Mode::manual);
   run_ms(30);  // long enough for the debug text to get through the bounded transmitter

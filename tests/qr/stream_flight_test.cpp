@@ -147,7 +147,7 @@ TEST_F(StreamFlightTest, AStreamSamplesAtItsDividerTheValuesOfTheTick) {
 
 TEST_F(StreamFlightTest, ASelectionTheLineCannotCarryIsRefusedAndChangesNothing) {
   // 250 Hz: 3000 bytes/s; then every tick: 12 bytes a tick, 6000 or 12000 bytes/s; beside the
-  // first, over the 8420 there is room for at 50 Hz telemetry.
+  // first, over the 8370 there is room for at 50 Hz telemetry.
   const uint8_t fits = request_stream(0, static_cast<uint16_t>(kControlHz / 250), {0, 1, 2, 3});
   const uint8_t too_much = request_stream(1, 1, {0, 1, 2, 3});
   const uint8_t unknown = request_stream(2, 5, {wire::kObservableCount});

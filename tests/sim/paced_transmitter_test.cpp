@@ -46,4 +46,48 @@ TEST(PacedTransmitter, RefusesExactlyWhenTheSimulatedLineDoes) {
   EXPECT_GT(refusals, 1000) << "the bursts must fill the buffer often for the comparison to mean something";
 }
 
+// The receiving end (docs/devboard.md, "The ground line"): bytes are taken no faster than the
+// line brings them, a FIFO's worth at once after a pause, twice the pace while a backlog waits.
+TEST(PacedReceiver, OnceCaughtUpTakesOneByteAByteTime) {
+  rv32virt::PacedReceiver rx;
+  const uint64_t t0 = 50'000'000;
+  while (rx.take(t0, false)) {
+  }
+  for (uint64_t k = 1; k <= 100; ++k) {
+    EXPECT_FALSE(rx.take(t0 + k * qrsim::kByteTimeNs - 1, false)) << k;
+    EXPECT_TRUE(rx.take(t0 + k * qrsim::kByteTimeNs, false)) << k;
+    EXPECT_FALSE(rx.take(t0 + k * qrsim::kByteTimeNs, false)) << k;
+  }
+}
+
+TEST(PacedReceiver, TakesAtMostTheLinesRateOverAnyStretch) {
+  // Polled once a millisecond, as the board's kick wait does, with bytes always waiting: over 10 s
+  // no more than the line's 11,520 bytes a second (and its FIFO's 16 once), and no fewer.
+  rv32virt::PacedReceiver rx;
+  uint64_t taken = 0;
+  for (uint64_t ms = 1; ms <= 10000; ++ms) {
+    while (rx.take(ms * 1'000'000, false)) ++taken;
+  }
+  const uint64_t line = 10'000'000'000ull / qrsim::kByteTimeNs;
+  EXPECT_LE(taken, line + rv32virt::PacedReceiver::kFifoBytes);
+  EXPECT_GE(taken, line - 1);
+}
+
+TEST(PacedReceiver, AfterAPauseTakesAFifosWorthAtOnce) {
+  rv32virt::PacedReceiver rx;
+  int burst = 0;
+  while (rx.take(1'000'000'000, false)) ++burst;
+  EXPECT_EQ(burst, static_cast<int>(rv32virt::PacedReceiver::kFifoBytes) + 1);
+}
+
+TEST(PacedReceiver, CatchesUpAtTwiceThePaceWhileBehind) {
+  rv32virt::PacedReceiver fast, plain;
+  uint64_t taken_fast = 0, taken_plain = 0;
+  for (uint64_t ms = 1; ms <= 1000; ++ms) {
+    while (fast.take(ms * 1'000'000, true)) ++taken_fast;
+    while (plain.take(ms * 1'000'000, false)) ++taken_plain;
+  }
+  EXPECT_NEAR(static_cast<double>(taken_fast), 2.0 * static_cast<double>(taken_plain), 20.0);
+}
+
 }  // namespace

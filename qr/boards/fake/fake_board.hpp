@@ -54,6 +54,7 @@ class FakeBoard {
     return true;
   }
   LogArea log_area() { return {log_memory, sizeof log_memory}; }
+  uint32_t rx_overruns() const { return overruns; }  // scripted: bytes the receiver "lost"
 
   // Simulated work: a task calls this to take time.
   void spend_us(uint32_t us) { now_us_ += us; }
@@ -62,6 +63,7 @@ class FakeBoard {
   EngineCommand engines;
   uint8_t leds = 0;
   std::deque<uint8_t> rx;
+  uint32_t overruns = 0;
   std::deque<uint8_t> radio;
   EscAnswers esc;
   std::vector<uint8_t> tx;
@@ -73,6 +75,7 @@ class FakeBoard {
   uint32_t now_us_ = 0;
 };
 
-static_assert(Board<FakeBoard> && RadioBoard<FakeBoard> && EscAnswerBoard<FakeBoard>);
+static_assert(Board<FakeBoard> && RadioBoard<FakeBoard> && EscAnswerBoard<FakeBoard> &&
+              OverrunCountingBoard<FakeBoard>);
 
 }  // namespace qr::fake

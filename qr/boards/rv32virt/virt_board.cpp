@@ -11,7 +11,8 @@ namespace {
 
 using map::reg;
 
-constexpr uint32_t kUartRbr = 0, kUartThr = 0, kUartIer = 1, kUartFcr = 2, kUartMcr = 4, kUartLsr = 5;
+constexpr uint32_t kUartRbr = 0, kUartThr = 0, kUartIer = 1, kUartFcr = 2, kUartLcr = 3, kUartMcr = 4, kUartLsr = 5;
+constexpr uint32_t kUartDll = 0, kUartDlm = 1;  // with LCR's divisor latch bit set
 constexpr uint8_t kLsrDataReady = 0x01, kLsrThrEmpty = 0x20;
 constexpr uint32_t kMieTimer = 1u << 7, kMieExternal = 1u << 11, kMstatusMie = 1u << 3;
 
@@ -40,6 +41,12 @@ volatile bool g_watching = false;    // from the first wait: start-up may take l
 VirtBoard* g_board = nullptr;  // the one board, for the fail-safe's cut
 SensorLinkPort g_link;         // the sensor link, when QEMU has it
 PacedTransmitter g_ground_tx;
+PacedReceiver g_ground_rx;
+bool g_linked = false;  // on the sensor link (VirtBoard::on_sensor_link), for the interrupt
+// On its own: the bytes QEMU has handed the UART that the line has not brought yet (a console
+// can write to the pty faster than the line runs, and QEMU, held up by the host, hands over the
+// backlog at once). 2 KiB: 180 ms of the line.
+wire::ByteRing<2048> g_line;
 
 // 256 KiB: 3640 lines in each log, 36 s of flight at the default 100 lines a second.
 uint8_t g_log_memory[256 * 1024];
@@ -53,6 +60,10 @@ uint64_t read_mtime() {
     if (reg<uint32_t>(map::kMtime + 4) == hi) return (static_cast<uint64_t>(hi) << 32) | lo;
   }
 }
+
+// The board's own clock, on its own: mtime at the 10 MHz timebase (the instruction count under
+// -icount).
+uint64_t board_time_ns() { return read_mtime() * (1000000000u / map::kTimebaseHz); }
 
 void write_mtimecmp(uint64_t t) {
   // High word to all ones first, so no value between the two writes is reached by mtime.
@@ -92,15 +103,49 @@ extern "C" void rv32virt_timer_interrupt() {
   g_kicks = g_kicks + 1;
 }
 
-extern "C" void rv32virt_external_interrupt() {
-  const uint32_t source = reg<uint32_t>(map::kPlicClaim);
-  if (source == map::kUartIrq) {
-    volatile uint8_t* uart = &reg<uint8_t>(map::kUart);
-    while ((uart[kUartLsr] & kLsrDataReady) != 0) {
+namespace rv32virt {
+namespace {
+// What the UART holds, taken by its interrupt (and by the link's kick wait, interrupts off).
+// On the link the bytes go straight to the receive ring: the simulator's line has paced them, and
+// every byte a sensors frame counts must be in before that frame's kick. On its own the board
+// takes them into the line buffer, which the kick wait passes on to the ring at the line's pace
+// (release_line); when the buffer is full the interrupt is turned off and QEMU keeps the rest.
+void drain_uart() {
+  volatile uint8_t* uart = &reg<uint8_t>(map::kUart);
+  while ((uart[kUartLsr] & kLsrDataReady) != 0) {
+    if (g_linked) {
       if (!g_rx.push(uart[kUartRbr])) g_rx_overruns = g_rx_overruns + 1;
       g_rx_bytes = g_rx_bytes + 1;
+    } else if (g_line.space() == 0) {
+      uart[kUartIer] = 0x00;
+      return;
+    } else {
+      g_line.push(uart[kUartRbr]);
     }
   }
+}
+
+// On its own, once a kick: the bytes the line has brought by now, from the line buffer into the
+// receive ring, where the firmware reads them. A byte the ring has no room for is an overrun.
+void release_line() {
+  const uint64_t now = board_time_ns();
+  uint8_t byte = 0;
+  for (;;) {
+    barrier();  // the interrupt pushes meanwhile (one producer, one consumer: no lock)
+    if (!g_line.peek(byte) || !g_ground_rx.take(now, g_line.size() > PacedReceiver::kFifoBytes)) break;
+    g_line.pop(byte);
+    barrier();
+    if (!g_rx.push(byte)) g_rx_overruns = g_rx_overruns + 1;
+    g_rx_bytes = g_rx_bytes + 1;
+  }
+  reg<uint8_t>(map::kUart + kUartIer) = 0x01;  // room again, if the buffer had filled
+}
+}  // namespace
+}  // namespace rv32virt
+
+extern "C" void rv32virt_external_interrupt() {
+  const uint32_t source = reg<uint32_t>(map::kPlicClaim);
+  if (source == map::kUartIrq) drain_uart();
   reg<uint32_t>(map::kPlicClaim) = source;  // complete
 }
 
@@ -111,16 +156,34 @@ VirtBoard::VirtBoard(uint32_t control_hz) : recording_(reinterpret_cast<const ui
   g_period_us = 1000000u / control_hz;
 
   volatile uint8_t* uart = &reg<uint8_t>(map::kUart);
-  uart[kUartFcr] = 0x07;                              // FIFOs on and cleared
+  // FIFOs on and cleared, the receive interrupt at 14 bytes. QEMU hands the UART at most as many
+  // bytes at a time as the trigger level allows: at 1 byte, one byte per trip through its main
+  // loop, which on a loaded host took in only 2,300-7,000 of the line's 11,520 bytes a second.
+  // A frame's tail below the trigger comes with the character timeout (the divisor below), and
+  // on the link the kick wait drains the FIFO as it spins.
+  uart[kUartFcr] = 0xC7;
   uart[kUartMcr] = 0x08;                              // OUT2: the 16550's interrupt line enable
-  uart[kUartIer] = 0x01;                              // interrupt on received data
   reg<uint32_t>(map::kPlic + 4 * map::kUartIrq) = 1;  // priority
   reg<uint32_t>(map::kPlicEnable) = 1u << map::kUartIrq;
   reg<uint32_t>(map::kPlicThreshold) = 0;
 
+  // The divisor for 115200 baud on virt's 399 193 Hz baud base (3: 133 kbaud, the nearest),
+  // which only sets the receive FIFO's character timeout in QEMU: 4 characters, 0.3 ms, so a
+  // frame's tail below the trigger level comes promptly.
+  uart[kUartLcr] = 0x80;
+  uart[kUartDll] = 3;
+  uart[kUartDlm] = 0;
+  uart[kUartLcr] = 0x03;  // 8N1
+  uart[kUartIer] = 0x01;  // interrupt on received data
+
   g_board = this;
   linked_ = g_link.start();
+  g_linked = linked_;
   if (linked_) {
+    if (reg<uint32_t>(map::kCoreSpeed) == map::kCoreSpeedMagic) {
+      const uint32_t mhz = reg<uint32_t>(map::kCoreSpeed + 4);
+      core_mhz_ = mhz >= 1 && mhz <= 1000 ? mhz : 0;
+    }
     // The simulator's frames are the kick: the timer is only the watchdog, armed while a tick
     // runs (no timer deadline for QEMU's -icount to jump to while the board waits).
     write_mtimecmp(0xFFFFFFFFFFFFFFFFull);
@@ -151,12 +214,17 @@ uint32_t VirtBoard::wait_kick([[maybe_unused]] uint32_t seen) {
     // wait is before the tick's count starts.
     for (;;) {
       disable_interrupts();
-      // In lock-step every frame is the next kick: no check against `seen` is needed.
+      // In lock-step every frame is the next kick, unless a core of a given speed ran a tick past
+      // the frame's period (the scheduler has counted it seen, a deadline miss).
       if (const simlink::SensorFrame* frame = g_link.take_kick(g_rx_bytes)) {
         enable_interrupts();
-        kick_ = frame->kick;
         time_ns_ += static_cast<uint64_t>(frame->time_us - time_us_) * 1000u;
         time_us_ = frame->time_us;
+        if (core_mhz_ != 0 && static_cast<int32_t>(frame->kick - seen) <= 0) {
+          answer_missed(frame->kick);
+          continue;
+        }
+        kick_ = frame->kick;
         for (int axis = 0; axis < 3; ++axis) {
           sample_.gyro[axis] = frame->gyro[axis];
           sample_.accel[axis] = frame->accel[axis];
@@ -165,10 +233,12 @@ uint32_t VirtBoard::wait_kick([[maybe_unused]] uint32_t seen) {
         sample_.pressure_pa = frame->pressure_pa;
         // The watchdog for this tick, on the virtual clock (instructions under -icount).
         write_mtimecmp(read_mtime() + static_cast<uint64_t>(kStallPeriods) * g_period_ticks);
+        kick_instret_ = instret();
         return kick_;
       }
       g_link.poll();
-      enable_interrupts();  // the ground UART's bytes come in meanwhile
+      drain_uart();
+      enable_interrupts();
     }
   }
   // The main loop is here, so the tick before has completed: the watchdog's sign of life.
@@ -182,16 +252,27 @@ uint32_t VirtBoard::wait_kick([[maybe_unused]] uint32_t seen) {
     disable_interrupts();
     const uint32_t k = g_kicks;
     enable_interrupts();
-    if (k != seen) return k;
+    if (k != seen) {
+      release_line();
+      return k;
+    }
   }
 }
 
 // On the link, the kick flown now: in lock-step no frame comes while a tick runs, and one that
 // came before the scheduler started must not count as seen.
-uint32_t VirtBoard::kicks() const { return linked_ ? kick_ : g_kicks; }
+// With a core speed, the kicks that came while the tick ran are the periods its instructions
+// took beyond the first.
+uint32_t VirtBoard::kicks() const { return linked_ ? kick_ + core_us_since_kick() / g_period_us : g_kicks; }
+
+uint32_t VirtBoard::core_us_since_kick() const {
+  return core_mhz_ == 0 ? 0 : (instret() - kick_instret_) / core_mhz_;  // MHz: instructions a µs
+}
 
 uint32_t VirtBoard::now_us() const {
-  if (linked_) return time_us_;  // stands still while a tick runs, as in the host simulator
+  // On the link, the stamp: standing still while a tick runs, as in the host simulator, or run on
+  // by the core's instructions.
+  if (linked_) return time_us_ + core_us_since_kick();
   disable_interrupts();
   const uint32_t base_us = g_kick_time_us;
   const uint32_t base_mtime = g_kick_mtime_lo;
@@ -231,10 +312,9 @@ bool VirtBoard::serial_read(uint8_t& byte) {
 bool VirtBoard::serial_write(uint8_t byte) {
   volatile uint8_t* uart = &reg<uint8_t>(map::kUart);
   if ((uart[kUartLsr] & kLsrThrEmpty) == 0) return false;
-  if (linked_) {
-    if (!g_ground_tx.accept(time_ns_)) return false;
-    ++ground_sent_;
-  }
+  // At the line's pace on the board's clock: the frame's stamp on the link, else mtime (100 ns).
+  if (!g_ground_tx.accept(linked_ ? time_ns_ : board_time_ns())) return false;
+  ++ground_sent_;
   uart[kUartThr] = byte;
   return true;
 }
@@ -251,7 +331,28 @@ void VirtBoard::send_engines(simlink::EngineFrame& frame) {
     frame.stats[frame.count] = s.count, frame.stats[frame.max] = s.max, frame.stats[frame.overruns] = s.overruns;
     frame.stats[frame.sum_low] = s.sum_low, frame.stats[frame.sum_high] = s.sum_high;
   }
+  if (core_mhz_ != 0) {
+    // A tick that ended in a later period: in this one the outputs kept their engines; the new
+    // ones go out with the period it ended in (answer_missed).
+    const uint32_t ended = kicks();
+    if (ended != kick_) {
+      pending_ = engines_;
+      pending_kick_ = ended;
+      for (int i = 0; i < 4; ++i) frame.engines[i] = held_.value[i];
+    } else {
+      held_ = engines_;
+    }
+    last_answer_ = frame;
+  }
   g_link.send_engines(frame);
+}
+
+void VirtBoard::answer_missed(uint32_t kick) {
+  if (kick == pending_kick_) held_ = pending_;
+  simlink::EngineFrame f = last_answer_;
+  f.kick = kick;
+  for (int i = 0; i < 4; ++i) f.engines[i] = held_.value[i];
+  g_link.send_engines(f);
 }
 
 void VirtBoard::cut_engines() {

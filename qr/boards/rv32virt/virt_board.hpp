@@ -46,6 +46,9 @@ class VirtBoard {
 
   // ---- the sensor link ----
   bool on_sensor_link() const { return linked_; }
+  // The core's speed in MHz when the simulator gave one (docs/devboard.md, "A core of a given
+  // speed"), else 0: time stands still while a tick runs.
+  uint32_t core_mhz() const { return core_mhz_; }
   // Where the scheduler keeps its statistics, reported to the simulator a row a tick.
   void attach_statistics(const qr::CycleStats* tasks, uint8_t task_count, const qr::CycleStats* tick) {
     task_stats_ = tasks;
@@ -75,8 +78,14 @@ class VirtBoard {
   }
 
  private:
-  // Adds this tick's row of the statistics and sends the frame.
+  // Adds this tick's row of the statistics and sends the frame; with a core speed, a tick that
+  // ran past its period answers with the engines the outputs still held.
   void send_engines(simlink::EngineFrame& frame);
+  // With a core speed: the periods gone by since the kick, at core_mhz_ instructions a µs.
+  uint32_t core_us_since_kick() const;
+  // With a core speed, a sensors frame whose period the core missed: answered with the engines
+  // on the outputs in that period, and no tick.
+  void answer_missed(uint32_t kick);
 
   Recording recording_;
   uint32_t first_kick_ = 0;
@@ -92,6 +101,15 @@ class VirtBoard {
   const qr::CycleStats* task_stats_ = nullptr;
   const qr::CycleStats* tick_stats_ = nullptr;
   uint8_t task_count_ = 0;
+
+  // A core of a given speed (core_mhz_ != 0): the board's clock runs on from the kick's stamp by
+  // the instructions retired since it, and an engine value reaches the outputs when its tick ends.
+  uint32_t core_mhz_ = 0;
+  uint32_t kick_instret_ = 0;  // minstret when the kick was taken
+  qr::EngineCommand held_;     // on the outputs now
+  qr::EngineCommand pending_;  // from a tick that ended in a later period: out from that period
+  uint32_t pending_kick_ = 0;  // that period
+  simlink::EngineFrame last_answer_;
 };
 
 }  // namespace rv32virt

@@ -30,6 +30,12 @@ inline constexpr uint32_t kVirtioSlots = 8;
 // 0x8000'0000; the program and its stack stay below 1 MiB).
 inline constexpr uintptr_t kRecording = 0x80400000u;
 
+// The core-speed word (docs/devboard.md, "A core of a given speed"): qrsim --core-mhz N has
+// QEMU's generic loader put kCoreSpeedMagic and N here, in the last 8 bytes of virt's 128 MiB of
+// RAM; without it the word reads 0 and the board keeps the simulator's time.
+inline constexpr uintptr_t kCoreSpeed = 0x87FFFFF8u;
+inline constexpr uint32_t kCoreSpeedMagic = 0x45524F43u;  // "CORE"
+
 template <class T>
 volatile T& reg(uintptr_t address) {
   return *reinterpret_cast<volatile T*>(address);

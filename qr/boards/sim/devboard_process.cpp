@@ -50,7 +50,7 @@ int accept_from(int listener, pid_t qemu, int timeout_ms) {
 
 }  // namespace
 
-bool DevboardProcess::start(const std::string& elf, std::string& error) {
+bool DevboardProcess::start(const std::string& elf, uint32_t core_mhz, std::string& error) {
   if (access(elf.c_str(), R_OK) != 0) {
     error = "no devboard firmware at " + elf + " (build it: cmake --preset rv32 && cmake --build --preset rv32)";
     return false;
@@ -70,7 +70,7 @@ bool DevboardProcess::start(const std::string& elf, std::string& error) {
     return false;
   }
 
-  const std::vector<std::string> args = {
+  std::vector<std::string> args = {
       "qemu-system-riscv32", "-M", "virt", "-bios", "none", "-nographic", "-monitor", "none",
       // Instructions counted exactly; no virtual clock to keep: the simulator stamps the time.
       "-icount", "shift=0,sleep=off",
@@ -78,6 +78,12 @@ bool DevboardProcess::start(const std::string& elf, std::string& error) {
       "-global", "virtio-mmio.force-legacy=false", "-chardev", "socket,id=ground,path=" + ground_path, "-serial",
       "chardev:ground", "-chardev", "socket,id=link,path=" + link_path, "-device", "virtio-serial-device", "-device",
       "virtconsole,chardev=link", "-kernel", elf};
+  if (core_mhz > 0) {
+    // The core-speed word (qr/boards/rv32virt/virt_map.hpp): "CORE", then the MHz, little-endian.
+    char data[32];
+    std::snprintf(data, sizeof data, "0x%08X45524F43", static_cast<unsigned>(core_mhz));
+    args.insert(args.end() - 2, {"-device", std::string("loader,addr=0x87FFFFF8,data-len=8,data=") + data});
+  }
   const std::string log_path = dir_ + "/qemu.log";
   pid_ = fork();
   if (pid_ == 0) {

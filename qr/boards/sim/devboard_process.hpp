@@ -22,7 +22,9 @@ class DevboardProcess {
 
   // Starts QEMU with `elf` and waits (at most 10 s) until it has connected both streams; on
   // failure says why in `error`.
-  bool start(const std::string& elf, std::string& error);
+  // core_mhz > 0: the board's time runs on by its instructions at that speed while a tick runs
+  // (docs/devboard.md, "A core of a given speed"); 0: it stands still.
+  bool start(const std::string& elf, uint32_t core_mhz, std::string& error);
 
   int ground() const { return ground_fd_; }
   int link() const { return link_fd_; }

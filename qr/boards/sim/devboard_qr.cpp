@@ -12,9 +12,10 @@ constexpr int kAnswerTimeoutMs = 10000;
 
 }  // namespace
 
-DevboardQr::DevboardQr(const sim::VehicleParams& vehicle, const sim::WorldConfig& config, const std::string& elf)
-    : world_(vehicle, config), board_(world_), instructions_(wire::kTaskCount + 1u) {
-  if (!process_.start(elf, error_)) return;
+DevboardQr::DevboardQr(const sim::VehicleParams& vehicle, const sim::WorldConfig& config, const std::string& elf,
+                       uint32_t core_mhz)
+    : world_(vehicle, config), board_(world_), instructions_(wire::kTaskCount + 1u), core_mhz_(core_mhz) {
+  if (!process_.start(elf, core_mhz, error_)) return;
   // The board's engines frame for kick 0 says its UART is ready: from now on every ground byte
   // is counted (one sent before could be lost in its FIFO reset).
   simlink::EngineFrame ready;

@@ -31,7 +31,9 @@ struct InstructionStats {
 class DevboardQr final : public FlyingQr {
  public:
   // Starts QEMU with `elf` and waits for the board's first frame; error() says why it did not.
-  DevboardQr(const sim::VehicleParams& vehicle, const sim::WorldConfig& config, const std::string& elf);
+  // core_mhz > 0: a core of that speed, whose ticks can run past their period (DevboardProcess).
+  DevboardQr(const sim::VehicleParams& vehicle, const sim::WorldConfig& config, const std::string& elf,
+             uint32_t core_mhz = 0);
 
   sim::World& world() override { return world_; }
   SimBoard& board() override { return board_; }
@@ -46,6 +48,7 @@ class DevboardQr final : public FlyingQr {
   // Bytes the board wrote to its UART that the simulated line refused: 0 when its paced
   // transmitter keeps the line's pace, as it should.
   uint64_t ground_bytes_refused() const { return ground_refused_; }
+  uint32_t core_mhz() const { return core_mhz_; }  // 0: time stands still while a tick runs
 
  private:
   bool await_engines(uint32_t kick, simlink::EngineFrame& out);
@@ -66,6 +69,7 @@ class DevboardQr final : public FlyingQr {
   uint32_t ground_from_qr_ = 0;  // bytes the board wrote to it so far
   uint64_t ground_refused_ = 0;
   uint32_t late_kicks_ = 0;  // real time only: periods the round trip ran past
+  uint32_t core_mhz_ = 0;
   std::string error_;
   bool stopped_ = false;
 };

@@ -29,9 +29,9 @@ namespace {
 
 constexpr const char* kUsage = R"(usage:
   qrsim --serve [--stdio] [--seed N] [--vehicle FILE] [--seconds S] [--status] [--truth-fd N]
-        [--devboard [ELF]]
+        [--devboard [ELF] [--core-mhz N]]
   qrsim --scenario NAME|FILE [--seconds S] [--seed N] [--vehicle FILE] [--param NAME=VALUE]...
-        [--no-noise] [--trace FILE.csv] [--record FILE.csv] [--json] [--devboard [ELF]]
+        [--no-noise] [--trace FILE.csv] [--record FILE.csv] [--json] [--devboard [ELF] [--core-mhz N]]
         [--rc crsf] [--esc dshot]
   qrsim --sweep NAME|FILE [--seeds N] [--no-draw] [--seed N] [--seconds S] [--vehicle FILE]
         [--param NAME=VALUE]... [--rc crsf] [--esc dshot]
@@ -77,6 +77,10 @@ rate) flying in a simulated IN4073-class quadrotor.
                    on the emulated devboard (QEMU virt, riscv32) instead of the host build, in
                    lock-step over the sensor link (docs/devboard.md); a scenario's figures add
                    "firmware": "rv32" and the binary's instructions per tick and task (instr_*)
+  --core-mhz N     with --devboard: the board's core runs at N MHz (1 to 1000): its clock runs on
+                   by its instructions while a tick runs, so a tick longer than its period is a
+                   deadline miss, and its engines go out late (docs/devboard.md); the figures
+                   add "core_mhz". Without it the clock stands still while a tick runs
   --soak           an hour (--seconds S of flight) of full control over a damaged line, logging,
                    the log downloaded at the end, judged by a referee; one JSON line {"soak": ...}
                    (docs/simulator.md section 9); exit status 1 when it failed
@@ -154,6 +158,13 @@ int main(int argc, char** argv) {
       // The ELF is optional: the next argument is it unless it is another option.
       scenario.devboard_elf = QR_DEVBOARD_ELF;
       if (i + 1 < argc && argv[i + 1][0] != '-') scenario.devboard_elf = argv[++i];
+    } else if (arg == "--core-mhz") {
+      const char* v = value("N");
+      double n = 0;
+      if (v == nullptr || !qrsim::parse_real(v, n) || n < 1 || n > 1000 || n != std::floor(n)) {
+        return usage_error("--core-mhz needs a whole number of MHz, 1 to 1000");
+      }
+      scenario.devboard_core_mhz = static_cast<uint32_t>(n);
     } else if (arg == "--no-noise") {
       scenario.sensor_noise = false;
     } else if (arg == "--scenario" || arg == "--sweep") {
@@ -226,6 +237,9 @@ int main(int argc, char** argv) {
     }
   }
 
+  if (scenario.devboard_core_mhz != 0 && scenario.devboard_elf.empty()) {
+    return usage_error("--core-mhz goes with --devboard");
+  }
   switch (command) {
     case Command::none:
     case Command::help:
@@ -259,6 +273,7 @@ int main(int argc, char** argv) {
       serve.seconds = seconds;
       serve.seed = seed;
       serve.devboard_elf = scenario.devboard_elf;
+      serve.devboard_core_mhz = scenario.devboard_core_mhz;
       serve.vehicle = vehicle ? *vehicle : sim::default_vehicle();
       return qrsim::serve(serve);
     case Command::sweep: {

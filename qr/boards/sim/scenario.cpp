@@ -251,6 +251,7 @@ void add_instruction_figures(const DevboardQr& devboard, std::vector<Figure>& f)
     if (rows[task].runs > 0) add(wire::task_name(task), rows[task]);
   }
   f.push_back({"ground_bytes_refused", static_cast<double>(devboard.ground_bytes_refused())});
+  if (devboard.core_mhz() != 0) f.push_back({"core_mhz", static_cast<double>(devboard.core_mhz())});
 }
 
 }  // namespace
@@ -281,7 +282,8 @@ ScenarioResult run_scenario(const ScenarioScript& script, const RunOptions& opti
   if (options.devboard_elf.empty()) {
     qr = std::make_unique<HostQr>(vehicle, sim::WorldConfig{.seed = options.seed});
   } else {
-    qr = std::make_unique<DevboardQr>(vehicle, sim::WorldConfig{.seed = options.seed}, options.devboard_elf);
+    qr = std::make_unique<DevboardQr>(vehicle, sim::WorldConfig{.seed = options.seed}, options.devboard_elf,
+                                      options.devboard_core_mhz);
   }
   result.firmware = qr->firmware();
   if (options.radio && !options.devboard_elf.empty()) {

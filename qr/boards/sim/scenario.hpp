@@ -39,6 +39,8 @@ struct RunOptions {
   // Non-empty: fly this RV32 ELF on the emulated devboard, in lock-step over the sensor link
   // (devboard_qr.hpp), instead of the host build.
   std::string devboard_elf;
+  // With devboard_elf, --core-mhz N: the board's core runs at N MHz, its ticks can run late.
+  uint32_t devboard_core_mhz = 0;
   // --rc crsf: the pilot flies through a radio (CRSF frames at 150 Hz on the receiver line, armed
   // by its switch; the pilot parameter set to the radio), the PC link keeping the rest.
   bool radio = false;

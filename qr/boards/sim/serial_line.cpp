@@ -30,10 +30,13 @@ bool SerialLine::next_sent_at(uint64_t& sent_ns) const {
 
 size_t SerialLine::in_flight(uint64_t now_ns) const {
   // Bytes already arrived but not yet taken by the receiver sit in its receive buffer, not in
-  // the sender's transmit buffer.
-  size_t n = 0;
-  for (auto it = bytes_.rbegin(); it != bytes_.rend() && it->arrives_ns > now_ns; ++it) ++n;
-  return n;
+  // the sender's transmit buffer. Those still on their way follow each other back to back (one
+  // queued while an earlier one was on its way goes straight after it), the first of them less
+  // than a byte time from arriving, so the time the line is busy until says how many there are.
+  // Counted one by one, a console sending at the full rate into a simulator that had fallen
+  // behind cost a walk over the whole backlog per byte, and the simulator fell further behind.
+  if (line_free_ns_ <= now_ns) return 0;
+  return static_cast<size_t>((line_free_ns_ - now_ns + kByteTimeNs - 1) / kByteTimeNs);
 }
 
 }  // namespace qrsim

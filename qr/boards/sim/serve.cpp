@@ -156,7 +156,8 @@ int serve(const ServeOptions& options) {
   if (options.devboard_elf.empty()) {
     qr = std::make_unique<HostQr>(options.vehicle, sim::WorldConfig{.seed = options.seed});
   } else {
-    qr = std::make_unique<DevboardQr>(options.vehicle, sim::WorldConfig{.seed = options.seed}, options.devboard_elf);
+    qr = std::make_unique<DevboardQr>(options.vehicle, sim::WorldConfig{.seed = options.seed}, options.devboard_elf,
+                                      options.devboard_core_mhz);
     if (!qr->error().empty()) {
       std::fprintf(stderr, "qrsim: devboard: %s\n", qr->error().c_str());
       return 1;

@@ -20,6 +20,7 @@ struct ServeOptions {
   // Non-empty: this RV32 ELF flies on the emulated devboard (devboard_qr.hpp) instead of the host
   // build; the console's bytes reach its UART through the simulated line, as the host build's do.
   std::string devboard_elf;
+  uint32_t devboard_core_mhz = 0;  // --core-mhz N (scenario.hpp)
 };
 
 // Runs until the firmware stops (the console sent exit), a signal, or `seconds`. Returns the
