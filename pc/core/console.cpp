@@ -157,7 +157,8 @@ void Console::truth_line(const std::string& line) {
   truth_ = text;
   constexpr double kRadPerDeg = 0.017453292519943295;
   if (!field("climb", climb)) climb = std::nan("");  // an older simulator's line: no climb truth
-  streams_.plot().add_truth(uptime_ms() / 1000.0, {roll * kRadPerDeg, pitch * kRadPerDeg, yaw * kRadPerDeg, height, climb});
+  streams_.plot().add_truth(uptime_ms() / 1000.0,
+                            {roll * kRadPerDeg, pitch * kRadPerDeg, yaw * kRadPerDeg, height, climb});
 }
 
 std::vector<std::string> Console::take_sim_commands() {

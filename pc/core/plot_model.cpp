@@ -17,7 +17,8 @@ struct TruthOver {
   const char* name;
   const char* unit;
 };
-constexpr TruthOver kTruthOver[] = {{"phi", "rad"}, {"theta", "rad"}, {"psi", "rad"}, {"height", "m"}, {"climb", "m/s"}};
+constexpr TruthOver kTruthOver[] = {
+    {"phi", "rad"}, {"theta", "rad"}, {"psi", "rad"}, {"height", "m"}, {"climb", "m/s"}};
 
 }  // namespace
 

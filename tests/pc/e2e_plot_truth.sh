@@ -3,7 +3,9 @@
 # the simulator's truth channel exists, truth can be drawn over the estimate"): pick height and
 # climb, take off in full control, and read from the captured pane that the true height and
 # climb stand beside the estimates in the same units (m, m/s) and that the true traces are drawn
-# ('.' under the estimate, plain characters: the pane runs under the C locale). Then land.
+# ('.' under the estimate, plain characters: the pane runs under the C locale). Then, the
+# simulator's ESCs answering bidirectional DShot (issue 18), the four engines' RPM while the panic
+# lands, and 0 once the engines have stopped.
 set -euo pipefail
 
 qrterm=${1:?usage: e2e_plot_truth.sh QRTERM QRSIM}
@@ -15,7 +17,8 @@ source "$(dirname "$0")/e2e_lib.sh"
 e2e_start
 
 export LC_ALL=C
-e2e_pane "$qrterm" --sim "$sim" --no-joystick --log-dir "$work/logs" --params "$work/params.txt"
+e2e_pane "$qrterm" --sim "$sim" --sim-arg --esc --sim-arg dshot --no-joystick --log-dir "$work/logs" \
+  --params "$work/params.txt"
 wait_for 'MODE +safe ' 30 "start: safe"
 keys 3
 wait_for 'QR calibrated' 30 "calibrated"
@@ -50,9 +53,26 @@ dots=$(awk 'NR >= 7 && NR <= 19 { line = substr($0, 10); n += gsub(/\./, "", lin
 ((dots > 0)) || fail "no true trace ('.') in the plot"
 echo "e2e: ok: $dots cells of the true traces drawn"
 
-# Down: the lift to zero lands it (the panic would land it too, at 0.5 m/s).
+# Down: the panic lands it at 0.5 m/s. Meanwhile the engines' RPM, from the ESCs' eRPM answers.
 keys Escape
 wait_for 'MODE +panic ' 3 "ESC: panic"
+keys BSpace BSpace
+keys /
+keys -l 'rpm_front rpm_right rpm_back rpm_left'
+keys Enter
+wait_for '\* rpm_front \+[0-9.]+ rpm +o rpm_right \+[0-9.]+ rpm' 5 "the four engines' RPM stream"
+sleep 1
+landing=$(screen)
+rpm=""
+for engine in front right back left; do
+  r=$(sed -nE "s/.* rpm_$engine \+([0-9.]+) rpm.*/\1/p" <<<"$landing" | head -1)
+  # Spinning, not stopped and not wild: the default vehicle's engines read 3720 RPM each here.
+  awk -v r="$r" 'BEGIN { exit !(r > 1000 && r < 40000) }' || fail "rpm_$engine '$r' while the panic lands"
+  rpm+="$r "
+done
+echo "e2e: ok: the engines at ${rpm}RPM while the panic lands"
 wait_for 'MODE +safe ' 40 "panic lands and settles in safe"
+wait_for '\* rpm_front \+0\.0000 rpm +o rpm_right \+0\.0000 rpm' 3 "stopped engines read 0 RPM"
+wait_for '\+ rpm_back \+0\.0000 rpm +x rpm_left \+0\.0000 rpm' 1 "all four"
 exit_and_check_terminal
 echo "e2e: passed"

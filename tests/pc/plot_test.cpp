@@ -145,7 +145,7 @@ TEST(PlotModel, TheTruthIsDrawnUnderHeightAndTheAttitude) {
   ASSERT_TRUE(plot.add(6, phi_sp));
   for (int i = 0; i <= 100; ++i) {
     const double t = i * 0.05;
-    plot.add_sample(t, {0.7 * t / 5, 0.0});  // the estimate climbs to 0.7 m
+    plot.add_sample(t, {0.7 * t / 5, 0.0});       // the estimate climbs to 0.7 m
     plot.add_truth(t, {0.01, 0, 0, t / 5, 0.2});  // the truth to 1 m, and rolled 0.01 rad
   }
   ASSERT_NE(plot.truth_for(plot.traces()[0]), nullptr);

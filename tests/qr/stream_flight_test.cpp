@@ -167,14 +167,22 @@ TEST_F(StreamFlightTest, ControllerTermsAreReadFromTheirOwnTermAndAxis) {
   run_ms(10);
   using wire::ObservableId;
   const std::pair<ObservableId, int32_t> expected[] = {
-      {ObservableId::p_sp, 100},           {ObservableId::q_sp, 101},
-      {ObservableId::roll_p_term, 200},    {ObservableId::roll_d_term, -300},
-      {ObservableId::roll_integral, 400},  {ObservableId::pitch_p_term, 201},
-      {ObservableId::pitch_d_term, -301},  {ObservableId::pitch_integral, 401},
-      {ObservableId::yaw_p_term, 202},     {ObservableId::yaw_integral, 402},
-      {ObservableId::roll_moment, -500},   {ObservableId::pitch_moment, -501},
-      {ObservableId::yaw_moment, -502},    {ObservableId::climb_sp, 601},
-      {ObservableId::vertical_p_term, -602}, {ObservableId::vertical_integral, 603},
+      {ObservableId::p_sp, 100},
+      {ObservableId::q_sp, 101},
+      {ObservableId::roll_p_term, 200},
+      {ObservableId::roll_d_term, -300},
+      {ObservableId::roll_integral, 400},
+      {ObservableId::pitch_p_term, 201},
+      {ObservableId::pitch_d_term, -301},
+      {ObservableId::pitch_integral, 401},
+      {ObservableId::yaw_p_term, 202},
+      {ObservableId::yaw_integral, 402},
+      {ObservableId::roll_moment, -500},
+      {ObservableId::pitch_moment, -501},
+      {ObservableId::yaw_moment, -502},
+      {ObservableId::climb_sp, 601},
+      {ObservableId::vertical_p_term, -602},
+      {ObservableId::vertical_integral, 603},
       {ObservableId::vertical_thrust, 2604},
   };
   for (const auto& [id, value] : expected)
@@ -204,7 +212,8 @@ TEST(StreamTaskCycles, EachCyclesRowIsItsTasksLastRun) {
     scheduler.tick();
     for (uint8_t task = 0; task < wire::kTaskCount; ++task) {
       const uint8_t id = static_cast<uint8_t>(wire::kFirstTaskCyclesObservable + task);
-      EXPECT_EQ(read_observable(flight, id), static_cast<int32_t>(wire::saturate_u16(scheduler.stats().task[task].last)))
+      EXPECT_EQ(read_observable(flight, id),
+                static_cast<int32_t>(wire::saturate_u16(scheduler.stats().task[task].last)))
           << wire::kObservableTable[id].name << " at tick " << tick;
     }
   }
@@ -219,9 +228,10 @@ TEST(StreamTaskCycles, EachCyclesRowIsItsTasksLastRun) {
 // period of 428 us is 140 186 eRPM, 20 026 RPM; a stopped motor reads 0).
 TEST_F(StreamFlightTest, EngineRpmStreamsFromTheEscAnswers) {
   using wire::ObservableId;
-  const uint8_t s = request_stream(2, static_cast<uint16_t>(kControlHz / 50),
-                                   {static_cast<uint8_t>(ObservableId::rpm_front), static_cast<uint8_t>(ObservableId::rpm_right),
-                                    static_cast<uint8_t>(ObservableId::rpm_back), static_cast<uint8_t>(ObservableId::rpm_left)});
+  const uint8_t s = request_stream(
+      2, static_cast<uint16_t>(kControlHz / 50),
+      {static_cast<uint8_t>(ObservableId::rpm_front), static_cast<uint8_t>(ObservableId::rpm_right),
+       static_cast<uint8_t>(ObservableId::rpm_back), static_cast<uint8_t>(ObservableId::rpm_left)});
   run_ms(100);
   EXPECT_EQ(answer_to(s), wire::NackReason::none);
   for (uint32_t& raw : board.esc.raw) raw = drivers::encode_erpm_answer(drivers::erpm_period_code(428));

@@ -20,6 +20,9 @@ struct ServeOptions {
   // Non-empty: this RV32 ELF flies on the emulated devboard (devboard_qr.hpp) instead of the host
   // build; the console's bytes reach its UART through the simulated line, as the host build's do.
   std::string devboard_elf;
+  // --esc dshot: the engines go out as DShot frames to simulated ESCs that answer with their eRPM
+  // (the QR reports RPM: telemetry_rpm, the rpm_* observables).
+  bool dshot = false;
 };
 
 // Runs until the firmware stops (the console sent exit), a signal, or `seconds`. Returns the

@@ -312,13 +312,9 @@ class FlightChain {
   }
   // The vertical loops' last run (height hold, a landing): climb set-point in mm/s, the speed
   // loop's P term and integral in mm/s², the per-engine thrust in 0.1 thrust units.
-  int32_t climb_setpoint_mm_s() const {
-    return Num::round_to_int(fx::mul_wide(vertical_.climb_setpoint(), kThousand));
-  }
+  int32_t climb_setpoint_mm_s() const { return Num::round_to_int(fx::mul_wide(vertical_.climb_setpoint(), kThousand)); }
   int32_t vertical_p_term_mm_s2() const { return Num::round_to_int(fx::mul_wide(vertical_.p_term(), kThousand)); }
-  int32_t vertical_integral_mm_s2() const {
-    return Num::round_to_int(fx::mul_wide(vertical_.integral(), kThousand));
-  }
+  int32_t vertical_integral_mm_s2() const { return Num::round_to_int(fx::mul_wide(vertical_.integral(), kThousand)); }
   int32_t vertical_thrust_e1() const { return thrust_e1(vertical_.thrust()); }
 
   // The blocks themselves, for tests and tools that look inside.
