@@ -8,6 +8,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include <common/task_names.hpp>
+
 namespace wire {
 
 // How a sample travels: 16 bits, signed or not. Wider quantities are scaled to fit.
@@ -48,7 +50,43 @@ enum class ObservableType : uint8_t { i16 = 0, u16 = 1 };
   ROW(climb, 28, "m/s", i16, -3, "vertical speed estimate, up positive") \
   ROW(tilt, 29, "rad", u16, -3, "tilt from level, estimated") \
   ROW(tick_busy, 30, "us", u16, 0, "time the last tick's tasks took (the board's clock)") \
-  ROW(time_ms, 31, "ms", u16, 0, "the QR's clock, wrapping every 65.536 s: when a sample was taken")
+  ROW(time_ms, 31, "ms", u16, 0, "the QR's clock, wrapping every 65.536 s: when a sample was taken") \
+  ROW(p_sp, 32, "rad/s", i16, -3, "roll rate set-point: the roll angle loop's output") \
+  ROW(q_sp, 33, "rad/s", i16, -3, "pitch rate set-point: the pitch angle loop's output") \
+  ROW(roll_p_term, 34, "thrust", i16, -1, "roll rate loop's proportional term, P2 x (p_sp - p)") \
+  ROW(roll_d_term, 35, "thrust", i16, -1, "roll rate loop's derivative term, -D x dp/dt") \
+  ROW(roll_integral, 36, "thrust", i16, -1, "roll rate loop's integral (a trim moment)") \
+  ROW(pitch_p_term, 37, "thrust", i16, -1, "pitch rate loop's proportional term, P2 x (q_sp - q)") \
+  ROW(pitch_d_term, 38, "thrust", i16, -1, "pitch rate loop's derivative term, -D x dq/dt") \
+  ROW(pitch_integral, 39, "thrust", i16, -1, "pitch rate loop's integral (a trim moment)") \
+  ROW(yaw_p_term, 40, "thrust", i16, -1, "yaw rate loop's proportional term, yaw_p x (r_sp - r)") \
+  ROW(yaw_integral, 41, "thrust", i16, -1, "yaw rate loop's integral") \
+  ROW(roll_moment, 42, "thrust", i16, -1, "roll moment the mixer was asked for (controller or stick)") \
+  ROW(pitch_moment, 43, "thrust", i16, -1, "pitch moment the mixer was asked for") \
+  ROW(yaw_moment, 44, "thrust", i16, -1, "yaw moment the mixer was asked for") \
+  ROW(climb_sp, 45, "m/s", i16, -3, "vertical loop's climb set-point (height hold, landing): its last run's") \
+  ROW(vertical_p_term, 46, "m/s2", i16, -3, "vertical speed loop's proportional term, Kv x (climb_sp - climb)") \
+  ROW(vertical_integral, 47, "m/s2", i16, -3, "vertical speed loop's integral") \
+  ROW(vertical_thrust, 48, "thrust", i16, -1, "per-engine thrust the vertical loops ask for") \
+  ROW(cycles_link, 49, "cycles", u16, 0, "the link task's last run, in the board's cycles") \
+  ROW(cycles_filter, 50, "cycles", u16, 0, "the filter task's last run") \
+  ROW(cycles_calibration, 51, "cycles", u16, 0, "the calibration task's last run") \
+  ROW(cycles_accel_angles, 52, "cycles", u16, 0, "the accelerometer angles task's last run") \
+  ROW(cycles_estimator, 53, "cycles", u16, 0, "the attitude estimator task's last run") \
+  ROW(cycles_height, 54, "cycles", u16, 0, "the height estimate task's last run") \
+  ROW(cycles_attitude, 55, "cycles", u16, 0, "the attitude control task's last run") \
+  ROW(cycles_yaw, 56, "cycles", u16, 0, "the yaw control task's last run") \
+  ROW(cycles_mixer, 57, "cycles", u16, 0, "the mixer task's last run") \
+  ROW(cycles_manual, 58, "cycles", u16, 0, "the manual mixer task's last run") \
+  ROW(cycles_safety, 59, "cycles", u16, 0, "the safety task's last run") \
+  ROW(cycles_telemetry, 60, "cycles", u16, 0, "the telemetry task's last run (before this sample's tick)") \
+  ROW(cycles_logger, 61, "cycles", u16, 0, "the logger task's last run (before this sample's tick)") \
+  ROW(cycles_vertical, 62, "cycles", u16, 0, "the vertical loops task's last run") \
+  ROW(cycles_stream, 63, "cycles", u16, 0, "the stream task's last run (before this sample's tick)") \
+  ROW(rpm_front, 64, "rpm", u16, 0, "engine 0's speed from its ESC's eRPM answer (bidirectional DShot)") \
+  ROW(rpm_right, 65, "rpm", u16, 0, "engine 1's speed") \
+  ROW(rpm_back, 66, "rpm", u16, 0, "engine 2's speed") \
+  ROW(rpm_left, 67, "rpm", u16, 0, "engine 3's speed")
 
 enum class ObservableId : uint8_t {
 #define WIRE_OBSERVABLE_ENUMERATOR(name, id, unit, type, scale, meaning) name = id,
@@ -130,6 +168,29 @@ constexpr bool observable_texts_fit() {
   }
   return true;
 }
+// The per-task cycle rows, cycles_<task>, one per task in the wire's task order
+// (common/task_names.hpp), from cycles_link on.
+inline constexpr uint8_t kFirstTaskCyclesObservable = static_cast<uint8_t>(ObservableId::cycles_link);
+
+// `a` starts with `prefix` (whole: a == prefix when `whole`).
+constexpr bool starts_with(const char* a, const char* prefix, bool whole = false) {
+  size_t i = 0;
+  for (; prefix[i] != '\0'; ++i) {
+    if (a[i] != prefix[i]) return false;
+  }
+  return !whole || a[i] == '\0';
+}
+
+constexpr bool task_cycle_rows_follow_the_tasks() {
+  if (kFirstTaskCyclesObservable + kTaskCount > kObservableCount) return false;
+  for (uint8_t task = 0; task < kTaskCount; ++task) {
+    const char* name = kObservableTable[kFirstTaskCyclesObservable + task].name;
+    if (!starts_with(name, "cycles_") || !starts_with(name + 7, kTaskNames[task], true)) return false;
+  }
+  return true;
+}
+static_assert(task_cycle_rows_follow_the_tasks(), "cycles_<task>: one row per task, in the wire's task order");
+
 static_assert(observable_texts_fit(),
               "name, space, unit and a NUL fit four observable_text frames; units have no space");
 

@@ -146,7 +146,7 @@ void Console::truth_line(const std::string& line) {
     out = std::strtod(line.c_str() + at + key.size(), &end);
     return end != line.c_str() + at + key.size();
   };
-  double roll = 0, pitch = 0, yaw = 0, height = 0, t_s = 0;
+  double roll = 0, pitch = 0, yaw = 0, height = 0, climb = 0, t_s = 0;
   if (field("t", t_s)) {
     const int64_t offset = static_cast<int64_t>(now_ms_) - std::llround(t_s * 1000);
     if (!sim_clock_offset_ms_ || offset < *sim_clock_offset_ms_) sim_clock_offset_ms_ = offset;
@@ -156,7 +156,9 @@ void Console::truth_line(const std::string& line) {
   std::snprintf(text, sizeof text, "truth roll %+.1f pitch %+.1f yaw %+.1f height %.2f m", roll, pitch, yaw, height);
   truth_ = text;
   constexpr double kRadPerDeg = 0.017453292519943295;
-  streams_.plot().add_truth(uptime_ms() / 1000.0, roll * kRadPerDeg, pitch * kRadPerDeg, yaw * kRadPerDeg);
+  if (!field("climb", climb)) climb = std::nan("");  // an older simulator's line: no climb truth
+  streams_.plot().add_truth(uptime_ms() / 1000.0,
+                            {roll * kRadPerDeg, pitch * kRadPerDeg, yaw * kRadPerDeg, height, climb});
 }
 
 std::vector<std::string> Console::take_sim_commands() {

@@ -74,4 +74,19 @@ std::vector<std::vector<PlotCell>> draw_plot(const PlotFrame& frame, const std::
   return cells;
 }
 
+std::vector<PlotSeries> plot_series(const PlotModel& plot) {
+  const std::vector<Trace>& traces = plot.traces();
+  std::vector<PlotSeries> series;
+  for (const Trace& t : traces) {
+    if (const auto* truth = plot.truth_for(t)) series.push_back({truth, kTruthStyle, '.'});
+  }
+  for (int pass = 0; pass < 2; ++pass) {
+    for (size_t i = 0; i < traces.size(); ++i) {
+      if (traces[i].is_setpoint() == (pass == 0))
+        series.push_back({&traces[i].points, static_cast<int>(i), kTraceGlyphs[i]});
+    }
+  }
+  return series;
+}
+
 }  // namespace qrterm

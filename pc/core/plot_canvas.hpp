@@ -35,4 +35,11 @@ struct PlotFrame {
 // Rows of cells, top row first. Later series draw over earlier ones where they share a cell.
 std::vector<std::vector<PlotCell>> draw_plot(const PlotFrame& frame, const std::vector<PlotSeries>& series);
 
+// The plot's traces as the screen draws them, in drawing order: the simulator's truth under
+// the traces it belongs to (style kTruthStyle, glyph '.'), then the set-points, then what follows
+// them, so the followers end on top. Trace i has style i and glyph kTraceGlyphs[i].
+inline constexpr char kTraceGlyphs[kMaxTraces] = {'*', 'o', '+', 'x'};
+inline constexpr int kTruthStyle = static_cast<int>(kMaxTraces);
+std::vector<PlotSeries> plot_series(const PlotModel& plot);
+
 }  // namespace qrterm

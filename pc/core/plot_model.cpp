@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <tuple>
+#include <type_traits>
 
 namespace qrterm {
 namespace {
@@ -11,7 +12,13 @@ namespace {
 // Samples older than the longest window, and a little, are let go.
 constexpr double kKeepS = kPlotWindowsS[std::size(kPlotWindowsS) - 1] + 1;
 
-constexpr const char* kTruthOf[] = {"phi", "theta", "psi"};
+// The observable each truth series is drawn over, with the unit both are in (TrueState's order).
+struct TruthOver {
+  const char* name;
+  const char* unit;
+};
+constexpr TruthOver kTruthOver[] = {
+    {"phi", "rad"}, {"theta", "rad"}, {"psi", "rad"}, {"height", "m"}, {"climb", "m/s"}};
 
 }  // namespace
 
@@ -101,17 +108,19 @@ void PlotModel::clear_points() {
   for (Trace& t : traces_) t.points.clear();
 }
 
-void PlotModel::add_truth(double t_s, double roll, double pitch, double yaw) {
-  const double values[] = {roll, pitch, yaw};
-  for (size_t i = 0; i < 3; ++i) {
+void PlotModel::add_truth(double t_s, const TrueState& truth) {
+  const double values[] = {truth.roll, truth.pitch, truth.yaw, truth.height, truth.climb};
+  static_assert(std::size(values) == std::size(kTruthOver) && std::size(values) == std::extent_v<decltype(truth_)>);
+  for (size_t i = 0; i < std::size(values); ++i) {
+    if (!std::isfinite(values[i])) continue;  // not in this truth line
     truth_[i].push_back({t_s, values[i]});
     trim(truth_[i], t_s);
   }
 }
 
 const std::deque<PlotPoint>* PlotModel::truth_for(const Trace& trace) const {
-  for (size_t i = 0; i < 3; ++i) {
-    if (trace.name == kTruthOf[i] && trace.unit == "rad" && !truth_[i].empty()) return &truth_[i];
+  for (size_t i = 0; i < std::size(kTruthOver); ++i) {
+    if (trace.name == kTruthOver[i].name && trace.unit == kTruthOver[i].unit && !truth_[i].empty()) return &truth_[i];
   }
   return nullptr;
 }

@@ -1,7 +1,7 @@
 // The plot screen's state, without a terminal: which observables are traced (up to four, picked
 // by name from the QR's table), at what rate, the time window, the scale, freeze; the samples of
-// each trace over the longest window; and the simulator's true attitude when the console has it,
-// to draw over the estimate. Times are the console's seconds since start.
+// each trace over the longest window; and the simulator's true attitude, height and climb when the
+// console has them, to draw over the estimate. Times are the console's seconds since start.
 #pragma once
 
 #include <stddef.h>
@@ -67,9 +67,13 @@ class PlotModel {
   // One sample of every trace, the values in their units, at `t_s`.
   void add_sample(double t_s, const std::vector<double>& values);
   void clear_points();
-  // The simulator's truth (rad): drawn over phi, theta, psi.
-  void add_truth(double t_s, double roll, double pitch, double yaw);
-  // The truth series that belongs to a trace, if any ("phi" -> roll).
+  // The simulator's truth, in the units of the observables it is drawn over: roll, pitch, yaw
+  // (rad) over phi, theta, psi; height (m) and climb (m/s, up) over height and climb.
+  struct TrueState {
+    double roll = 0, pitch = 0, yaw = 0, height = 0, climb = 0;
+  };
+  void add_truth(double t_s, const TrueState& truth);
+  // The truth series that belongs to a trace, if any ("phi" -> roll, "height" -> height).
   const std::deque<PlotPoint>* truth_for(const Trace& trace) const;
 
  private:
@@ -82,7 +86,7 @@ class PlotModel {
   double fixed_low_ = -1;
   double fixed_high_ = 1;
   std::optional<double> frozen_at_;
-  std::deque<PlotPoint> truth_[3];  // roll, pitch, yaw
+  std::deque<PlotPoint> truth_[5];  // roll, pitch, yaw, height, climb
 };
 
 }  // namespace qrterm

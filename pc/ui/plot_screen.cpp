@@ -10,10 +10,8 @@
 namespace qrterm {
 namespace {
 
-// Trace i's colour and plain glyph; the truth is drawn dim, in dots.
+// Trace i's colour (its glyph: plot_canvas.hpp); the truth is drawn dim, in dots.
 constexpr short kTraceColors[kMaxTraces] = {kInfo, kWarning, kQr, kMagenta};
-constexpr char kTraceGlyphs[kMaxTraces] = {'*', 'o', '+', 'x'};
-constexpr int kTruthStyle = static_cast<int>(kMaxTraces);
 constexpr int kLabelColumns = 9;
 
 std::string value_text(double v) {
@@ -68,18 +66,8 @@ void draw_plot_screen(const Console& console, int top, int rows, int width, bool
   const auto [low, high] = plot.scale(now_s);
 
   // Truth first, then set-points, then what follows them: the followers end on top.
-  std::vector<PlotSeries> series;
-  for (const Trace& t : traces) {
-    if (const auto* truth = plot.truth_for(t)) series.push_back({truth, kTruthStyle, '.'});
-  }
-  for (int pass = 0; pass < 2; ++pass) {
-    for (size_t i = 0; i < traces.size(); ++i) {
-      if (traces[i].is_setpoint() == (pass == 0))
-        series.push_back({&traces[i].points, static_cast<int>(i), kTraceGlyphs[i]});
-    }
-  }
   const PlotFrame frame{begin, end, low, high, area_columns, area_rows, braille};
-  const auto cells = draw_plot(frame, series);
+  const auto cells = draw_plot(frame, plot_series(plot));
   for (int r = 0; r < area_rows; ++r) {
     put(area_top + r, kLabelColumns - 1, "|", kDim);
     for (int c = 0; c < area_columns; ++c) {

@@ -18,12 +18,14 @@ struct CycleStats {
   uint32_t min = 0;
   uint32_t max = 0;
   uint32_t overruns = 0;  // measurements over the budget
+  uint32_t last = 0;      // the latest measurement (a live plot's per-task cycles): one store
   // The sum in two words: a million ticks of 4,000 cycles overflows 32 bits, and a 64-bit add
   // costs RV32 twice a 32-bit one with a carry that is almost never taken.
   uint32_t sum_low = 0;
   uint32_t sum_high = 0;
 
   [[gnu::always_inline]] inline void add(uint32_t cycles, uint32_t budget = kNoBudget) {
+    last = cycles;
     if (cycles - min < usual_span_) {
       count_and_sum(cycles);
       return;

@@ -148,6 +148,8 @@ class Flight {
     for (int i = 0; i < 4; ++i) out[i] = rpm_[i];
     return rpm_heard_;
   }
+  // Engine i's RPM as last heard (0 until then).
+  uint16_t engine_rpm(uint8_t i) const { return rpm_[i]; }
   // The pilot's input as of the last control frame this tick's link task read.
   const ControlInput& controls() const { return controls_; }
   const SensorSample& sample() const { return sample_; }

@@ -61,6 +61,16 @@ concept SignalChain = requires(C& c, const C& cc, const wire::ParameterValues& p
   {cc.yaw_rate_setpoint_e3()};
   {cc.gyro_filtered(0)};
   {cc.accel_filtered(0)};
+  // the controllers' terms as last formed (observables: a live plot's, read by the stream task)
+  {cc.rate_setpoint_e3(0)};
+  {cc.p_term_e1(0)};
+  {cc.d_term_e1(0)};
+  {cc.integral_e1(0)};
+  {cc.moment_e1(0)};
+  {cc.climb_setpoint_mm_s()};
+  {cc.vertical_p_term_mm_s2()};
+  {cc.vertical_integral_mm_s2()};
+  {cc.vertical_thrust_e1()};
 };
 
 }  // namespace qr

@@ -206,6 +206,38 @@ TEST(Controllers, DerivativeOpposesRateChangesAndIgnoresSetPointSteps) {
   EXPECT_NEAR(c.moment(FAngle{}, FAngle{}, test::quantise<FRate>(0.5)).to_double(), -25.0, 1e-3);
 }
 
+// The terms a live plot shows (roll_p_term, roll_d_term, roll_integral, yaw_p_term, ...) are the
+// ones the moment was made of: P2 x error, -D x the rate's change and the integral add up to the
+// moment while it is inside its clamp, on random inputs and gains.
+TEST(Controllers, TheTermsAPlotShowsAddUpToTheMoment) {
+  auto c = tilt_controller<F>(1024, 800, 0, 768);
+  c.moment(FAngle{}, FAngle{}, FRate{});
+  c.moment(FAngle{}, FAngle{}, test::quantise<FRate>(0.01));  // 10 rad/s^2: D x 10 = 30, P2 x 0.01
+  EXPECT_NEAR(c.p_term().to_double(), -0.5, 1e-3);
+  EXPECT_NEAR(c.d_term().to_double(), -30.0, 1e-3);
+
+  std::mt19937_64 rng(31);
+  std::uniform_real_distribution<double> angle(-0.2, 0.2), rate(-0.01, 0.01);
+  std::uniform_int_distribution<int32_t> p1(0, 2560), p2(0, 2400), i(0, 3200), d(0, 1280);
+  int checked = 0;
+  for (int run = 0; run < 100; ++run) {
+    AttitudeController<F> tilt;
+    tilt.set_gains(p1(rng), p2(rng), i(rng), d(rng));
+    YawRateController<F> yaw;
+    yaw.set_gains(p2(rng), i(rng));
+    for (int n = 0; n < 100; ++n) {
+      const F::Rate r = to<F::Rate>(rate(rng));
+      const double m = tilt.moment(to<F::Angle>(angle(rng)), to<F::Angle>(angle(rng)), r, n % 5 != 0).to_double();
+      const double sum = tilt.p_term().to_double() + tilt.d_term().to_double() + tilt.integral().to_double();
+      EXPECT_NEAR(m, sum, 3 * 0x1p-16) << "run " << run << " tick " << n;  // each part rounded to a Thrust lsb
+      const double y = yaw.moment(to<F::Rate>(angle(rng)), r, n % 3 != 0).to_double();
+      EXPECT_NEAR(y, yaw.p_term().to_double() + yaw.integral().to_double(), 1e-9);
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, 10000);
+}
+
 // Sequences of random inputs and gains through the PID cascade, Q against double, with the
 // inputs quantised alike. Gains and inputs are drawn so that the moment never reaches its clamp
 // (P2 <= 150 x 4 rad/s, D <= 5 x 0.02 rad/s per tick x 1000, integral <= 200: at most 900), so

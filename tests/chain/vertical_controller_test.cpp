@@ -52,6 +52,10 @@ void AClimbErrorAsksForItsAccelerationAsAShareOfTheWeight() {
   loop.start(typename T::Thrust(282.0), typename T::Height(0.0));
   const double thrust = real(loop.update(typename T::Climb(-0.5), typename T::Climb(0.0), false));
   EXPECT_NEAR(thrust, 282.0 * (1 - 2.0 / kG0), 0.01);
+  // What a live plot shows of that run: the set-point, the P term that is all of u, no integral.
+  EXPECT_NEAR(real(loop.climb_setpoint()), -0.5, 1e-6);
+  EXPECT_NEAR(real(loop.p_term()), -2.0, 1e-5);
+  EXPECT_NEAR(real(loop.integral()), 0.0, 1e-9);
   // Held for a second, the integral adds Ki x -0.5 x 1 s = -2 m/s² more.
   for (uint32_t i = 0; i < kRunHz; ++i) loop.update(typename T::Climb(-0.5), typename T::Climb(0.0), true);
   EXPECT_NEAR(real(loop.thrust()), 282.0 * (1 - 4.0 / kG0), 0.05);

@@ -102,7 +102,7 @@ inline std::vector<GoldenFrame> golden_frames() {
       golden("G28", TelemetryHeight{1523, -412, kHeightValid}, "4D 9F F3 05 00 00 64 FE 01 7C"),
       golden("G29", ObservableGet{6, kAllObservables}, "4D 22 06 FF 22"),
       golden("G30", StreamRequest{8, 0, 5, {0, 6, kNoObservable, kNoObservable}}, "4D 41 08 00 05 00 00 06 FF FF 34"),
-      golden("G31", ObservableInfo{0, 32, ObservableType::i16, -4, 1000}, "4D EB 00 20 00 FC E8 03 8C"),
+      golden("G31", ObservableInfo{0, 68, ObservableType::i16, -4, 1000}, "4D EB 00 44 00 FC E8 03 1E"),
       golden("G32", ObservableText{0, 0, {'p', 'h', 'i', ' ', 'r', 'a', 'd'}}, "4D E7 00 00 70 68 69 20 72 61 64 89"),
       golden("G33", ObservableSamples{sample_header(0, 5), {1234, 1500, 1250, 1500}},
              "4D E8 05 D2 04 DC 05 E2 04 DC 05 1B"),

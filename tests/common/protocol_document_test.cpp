@@ -14,6 +14,7 @@
 #include <common/log_records.hpp>
 #include <common/message_table.hpp>
 #include <common/nack_reason.hpp>
+#include <common/observable_table.hpp>
 #include <common/parameter_table.hpp>
 #include <common/requests.hpp>
 
@@ -88,6 +89,24 @@ TEST(ProtocolDocument, NackReasonsMatchTheCode) {
   ASSERT_EQ(field.size(), 1u) << "the nack's reason row";
   EXPECT_EQ(std::stoi(field[0][1].str()), 1);
   EXPECT_EQ(std::stoi(field[0][2].str()), last);
+}
+
+// Section 13.1's table of observables is the code's, row for row: id, name, unit, type, scale and
+// meaning (a row added to the code and not to the document, or the other way, fails).
+TEST(ProtocolDocument, ObservableTableMatchesTheCode) {
+  std::vector<std::string> lines;
+  const auto rows = rows_matching(
+      std::regex(R"(^\| (\d+) \| `([a-z0-9_]+)` \| ([^ |]+) \| (i16|u16) \| (-?\d+) \| ([^|]+) \|$)"), lines);
+  ASSERT_EQ(rows.size(), size_t{wire::kObservableCount});
+  for (size_t i = 0; i < rows.size(); ++i) {
+    const wire::ObservableSpec& spec = wire::kObservableTable[i];
+    EXPECT_EQ(std::stoi(rows[i][1].str()), static_cast<int>(spec.id)) << spec.name;
+    EXPECT_EQ(rows[i][2].str(), spec.name);
+    EXPECT_EQ(rows[i][3].str(), spec.unit) << spec.name;
+    EXPECT_EQ(rows[i][4].str(), spec.type == wire::ObservableType::i16 ? "i16" : "u16") << spec.name;
+    EXPECT_EQ(std::stoi(rows[i][5].str()), spec.scale) << spec.name;
+    EXPECT_EQ(rows[i][6].str(), wire::kObservableMeanings[i]) << spec.name;
+  }
 }
 
 // The mode numbers the document lists are the modes; every other number is answered, not refused

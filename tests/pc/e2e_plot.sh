@@ -48,6 +48,8 @@ phi_sp=$(sed -nE 's/.*o phi_sp ([+-][0-9.]+) rad.*/\1/p' <<<"$after" | head -1)
 awk -v p="$phi" -v s="$phi_sp" 'BEGIN { exit !(s > 0.04 && p > 0.03) }' ||
   fail "after the roll step phi $phi, phi_sp $phi_sp (expected both > 0.03 rad)"
 echo "e2e: ok: phi $phi rad follows phi_sp $phi_sp rad"
+# The simulator's true roll beside the estimate (the truth under height: e2e_plot_truth.sh).
+grep -Eq '\* phi [+-][0-9.]+ truth [+-][0-9.]+ rad' <<<"$after" || fail "no true roll beside phi"
 
 # The trace: the newest '*' (phi) stands higher on the screen than the oldest one in the window,
 # and the axis says the unit.

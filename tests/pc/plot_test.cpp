@@ -2,6 +2,7 @@
 // the wire, the samples of a stream into the plot and its CSV, the canvas a trace is drawn on.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -129,9 +130,80 @@ TEST(PlotCanvas, ARisingTraceEndsHigherThanItStartsInBothCellKinds) {
   }
 }
 
+// The simulator's truth is drawn under the trace it belongs to, in its own style and dots: the
+// true height (m) under `height`, the true roll (rad) under `phi`; nothing under a trace without
+// a truth (phi_sp), nor under one whose unit is not the truth's.
+TEST(PlotModel, TheTruthIsDrawnUnderHeightAndTheAttitude) {
+  PlotModel plot;
+  ObservableRow height;
+  height.name = "height";
+  height.unit = "m";
+  ObservableRow phi_sp;
+  phi_sp.name = "phi_sp";
+  phi_sp.unit = "rad";
+  ASSERT_TRUE(plot.add(27, height));
+  ASSERT_TRUE(plot.add(6, phi_sp));
+  for (int i = 0; i <= 100; ++i) {
+    const double t = i * 0.05;
+    plot.add_sample(t, {0.7 * t / 5, 0.0});       // the estimate climbs to 0.7 m
+    plot.add_truth(t, {0.01, 0, 0, t / 5, 0.2});  // the truth to 1 m, and rolled 0.01 rad
+  }
+  ASSERT_NE(plot.truth_for(plot.traces()[0]), nullptr);
+  EXPECT_DOUBLE_EQ(plot.truth_for(plot.traces()[0])->back().value, 1.0);
+  EXPECT_EQ(plot.truth_for(plot.traces()[1]), nullptr) << "a set-point has no truth";
+
+  const std::vector<PlotSeries> series = plot_series(plot);
+  ASSERT_EQ(series.size(), 3u);
+  EXPECT_EQ(series[0].style, kTruthStyle) << "the truth first, under the traces";
+  EXPECT_EQ(series[0].glyph, '.');
+  EXPECT_EQ(series[1].style, 1) << "then the set-point";
+  EXPECT_EQ(series[2].style, 0) << "and what follows it on top";
+
+  // On the screen: at the right end the truth (1 m) stands above the estimate (0.7 m).
+  const PlotFrame frame{0, 5, 0, 1, 40, 10, false};
+  const auto cells = draw_plot(frame, series);
+  int truth_cells = 0, truth_row = -1, estimate_row = -1;
+  for (int r = 0; r < 10; ++r) {
+    for (int c = 0; c < 40; ++c) {
+      const PlotCell& cell = cells[size_t(r)][size_t(c)];
+      if (cell.style == kTruthStyle) {
+        ++truth_cells;
+        EXPECT_EQ(cell.text, ".");
+      }
+    }
+    if (cells[size_t(r)][39].style == kTruthStyle && truth_row < 0) truth_row = r;
+    if (cells[size_t(r)][39].style == 0 && estimate_row < 0) estimate_row = r;
+  }
+  EXPECT_GT(truth_cells, 10) << "the truth is drawn where the estimate does not cover it";
+  EXPECT_EQ(truth_row, 0);
+  EXPECT_GT(estimate_row, truth_row);
+
+  // A trace named like a truth but in another unit gets none: the wrong unit would draw nonsense.
+  PlotModel other;
+  ObservableRow height_mm;
+  height_mm.name = "height";
+  height_mm.unit = "mm";
+  ASSERT_TRUE(other.add(27, height_mm));
+  other.add_truth(0, {0, 0, 0, 1.0, 0});
+  EXPECT_EQ(other.truth_for(other.traces()[0]), nullptr);
+}
+
+TEST(PlotModel, ATruthLineWithoutAFieldLeavesThatSeriesAlone) {
+  PlotModel plot;
+  ObservableRow climb;
+  climb.name = "climb";
+  climb.unit = "m/s";
+  ASSERT_TRUE(plot.add(28, climb));
+  plot.add_truth(0, {0, 0, 0, 1.0, std::nan("")});
+  EXPECT_EQ(plot.truth_for(plot.traces()[0]), nullptr) << "no climb in the line: nothing to draw";
+  plot.add_truth(0.02, {0, 0, 0, 1.0, -0.5});
+  ASSERT_NE(plot.truth_for(plot.traces()[0]), nullptr);
+  EXPECT_DOUBLE_EQ(plot.truth_for(plot.traces()[0])->back().value, -0.5);
+}
+
 TEST(PlotModel, FreezeHoldsTheViewAndFixedScaleHoldsTheRange) {
   PlotModel plot;
-  plot.add_truth(0, 0.1, 0, 0);
+  plot.add_truth(0, {0.1, 0, 0, 0, 0});
   plot.toggle_freeze(5.0);
   EXPECT_EQ(plot.view_end_s(9.0), 5.0);
   plot.toggle_freeze(9.0);

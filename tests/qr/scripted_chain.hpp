@@ -101,6 +101,17 @@ struct ScriptedChain {
   int32_t tilt_mrad() const { return tilt; }
   int16_t gyro_filtered(int axis) const { return static_cast<int16_t>(10 + axis); }
   int16_t accel_filtered(int axis) const { return static_cast<int16_t>(-20 - axis); }
+  // The controllers' terms: a distinct value for each term and axis, so a test sees which one a
+  // reader took.
+  int16_t rate_setpoint_e3(int axis) const { return static_cast<int16_t>(100 + axis); }
+  int32_t p_term_e1(int axis) const { return 200 + axis; }
+  int32_t d_term_e1(int axis) const { return -300 - axis; }
+  int32_t integral_e1(int axis) const { return 400 + axis; }
+  int32_t moment_e1(int axis) const { return -500 - axis; }
+  int32_t climb_setpoint_mm_s() const { return 601; }
+  int32_t vertical_p_term_mm_s2() const { return -602; }
+  int32_t vertical_integral_mm_s2() const { return 603; }
+  int32_t vertical_thrust_e1() const { return 2604; }
 
  private:
   static EngineCommand all(uint16_t v) { return EngineCommand{{v, v, v, v}}; }

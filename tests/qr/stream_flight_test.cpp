@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include <common/drivers/erpm.hpp>
 #include <common/messages.hpp>
 #include <common/sample_packing.hpp>
 #include <qr/boards/fake/fake_board.hpp>
@@ -94,7 +95,9 @@ struct StreamFlightTest : ::testing::Test {
 
 TEST_F(StreamFlightTest, TheWholeTableComesOverTheWireWithNamesAndUnits) {
   send(wire::ObservableGet{++seq, wire::kAllObservables});
-  run_ms(400);
+  // A row a tick while the line has room: 68 rows of about four frames each, some 0.3 s at
+  // 1 kHz and twice that at 500 Hz.
+  run_ms(1500);
   std::map<uint8_t, wire::ObservableInfo> info;
   for (const auto& i : got<wire::ObservableInfo>()) info[i.id] = i;
   std::map<uint8_t, std::string> text;
@@ -156,6 +159,99 @@ TEST_F(StreamFlightTest, ASelectionTheLineCannotCarryIsRefusedAndChangesNothing)
   EXPECT_EQ(answer_to(too_much), wire::NackReason::over_budget);
   EXPECT_EQ(answer_to(unknown), wire::NackReason::bad_value);
   for (const auto& frame : got<wire::ObservableSamples>()) EXPECT_EQ(frame.stream(), 0) << "stream 1 never started";
+}
+
+// The controllers' terms are read where the chain keeps them, each row from its own term and
+// axis (the scripted chain gives every one a different value), in the row's wire units.
+TEST_F(StreamFlightTest, ControllerTermsAreReadFromTheirOwnTermAndAxis) {
+  run_ms(10);
+  using wire::ObservableId;
+  const std::pair<ObservableId, int32_t> expected[] = {
+      {ObservableId::p_sp, 100},
+      {ObservableId::q_sp, 101},
+      {ObservableId::roll_p_term, 200},
+      {ObservableId::roll_d_term, -300},
+      {ObservableId::roll_integral, 400},
+      {ObservableId::pitch_p_term, 201},
+      {ObservableId::pitch_d_term, -301},
+      {ObservableId::pitch_integral, 401},
+      {ObservableId::yaw_p_term, 202},
+      {ObservableId::yaw_integral, 402},
+      {ObservableId::roll_moment, -500},
+      {ObservableId::pitch_moment, -501},
+      {ObservableId::yaw_moment, -502},
+      {ObservableId::climb_sp, 601},
+      {ObservableId::vertical_p_term, -602},
+      {ObservableId::vertical_integral, 603},
+      {ObservableId::vertical_thrust, 2604},
+  };
+  for (const auto& [id, value] : expected)
+    EXPECT_EQ(read_observable(flight, static_cast<uint8_t>(id)), value) << wire::kObservableTable[uint8_t(id)].name;
+}
+
+// A board whose cycle counter moves by a different amount at every read, so each task's last run
+// measures differently from its neighbours'.
+struct UnevenCyclesBoard : fake::FakeBoard {
+  uint32_t reads = 0;
+  uint32_t counter = 0;
+  uint32_t cycles() {
+    ++reads;
+    counter += 10 + (reads * 7) % 31;
+    return counter;
+  }
+};
+
+// cycles_<task> is the scheduler's last measurement of that task, for every task row.
+TEST(StreamTaskCycles, EachCyclesRowIsItsTasksLastRun) {
+  UnevenCyclesBoard board;
+  board.sensors.battery_mv = 12000;
+  Firmware flight;
+  Scheduler<UnevenCyclesBoard, Firmware> scheduler{board, flight};
+  EXPECT_EQ(read_observable(flight, wire::kFirstTaskCyclesObservable), 0) << "nothing measured yet";
+  for (int tick = 0; tick < 37; ++tick) {
+    scheduler.tick();
+    for (uint8_t task = 0; task < wire::kTaskCount; ++task) {
+      const uint8_t id = static_cast<uint8_t>(wire::kFirstTaskCyclesObservable + task);
+      EXPECT_EQ(read_observable(flight, id),
+                static_cast<int32_t>(wire::saturate_u16(scheduler.stats().task[task].last)))
+          << wire::kObservableTable[id].name << " at tick " << tick;
+    }
+  }
+  const auto link = read_observable(flight, static_cast<uint8_t>(wire::ObservableId::cycles_link));
+  const auto filter = read_observable(flight, static_cast<uint8_t>(wire::ObservableId::cycles_filter));
+  EXPECT_GT(link, 0);
+  EXPECT_GT(filter, 0);
+  EXPECT_NE(link, filter) << "the board measures neighbours differently: a mixed-up row would show";
+}
+
+// Bidirectional DShot: the ESCs' eRPM answers reach a stream as RPM per engine (14 poles: a
+// period of 428 us is 140 186 eRPM, 20 026 RPM; a stopped motor reads 0).
+TEST_F(StreamFlightTest, EngineRpmStreamsFromTheEscAnswers) {
+  using wire::ObservableId;
+  const uint8_t s = request_stream(
+      2, static_cast<uint16_t>(kControlHz / 50),
+      {static_cast<uint8_t>(ObservableId::rpm_front), static_cast<uint8_t>(ObservableId::rpm_right),
+       static_cast<uint8_t>(ObservableId::rpm_back), static_cast<uint8_t>(ObservableId::rpm_left)});
+  run_ms(100);
+  EXPECT_EQ(answer_to(s), wire::NackReason::none);
+  for (uint32_t& raw : board.esc.raw) raw = drivers::encode_erpm_answer(drivers::erpm_period_code(428));
+  board.esc.raw[1] = drivers::encode_erpm_answer(drivers::erpm_period_code(856));
+  board.esc.raw[3] = drivers::encode_erpm_answer(drivers::kErpmStopped);
+  board.esc.fresh = 0xF;
+  run_ms(200);
+  wire::SampleUnpacker unpacker;
+  unpacker.start(4);
+  std::vector<std::vector<uint16_t>> samples;
+  for (const auto& frame : got<wire::ObservableSamples>()) {
+    unpacker.unpack(frame, [&](const int16_t* v) {
+      samples.push_back({static_cast<uint16_t>(v[0]), static_cast<uint16_t>(v[1]), static_cast<uint16_t>(v[2]),
+                         static_cast<uint16_t>(v[3])});
+    });
+  }
+  ASSERT_GE(samples.size(), 12u);
+  EXPECT_EQ(samples.front(), (std::vector<uint16_t>{0, 0, 0, 0})) << "no answer yet: 0";
+  EXPECT_EQ(samples.back(), (std::vector<uint16_t>{20026, 10013, 20026, 0}));
+  EXPECT_EQ(unpacker.lost(), 0u);
 }
 
 // The largest uniform selection the rule accepts (four streams of four observables at the

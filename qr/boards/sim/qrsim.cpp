@@ -29,7 +29,7 @@ namespace {
 
 constexpr const char* kUsage = R"(usage:
   qrsim --serve [--stdio] [--seed N] [--vehicle FILE] [--seconds S] [--status] [--truth-fd N]
-        [--devboard [ELF] [--core-mhz N]]
+        [--devboard [ELF] [--core-mhz N]] [--esc dshot]
   qrsim --scenario NAME|FILE [--seconds S] [--seed N] [--vehicle FILE] [--param NAME=VALUE]...
         [--no-noise] [--trace FILE.csv] [--record FILE.csv] [--json] [--devboard [ELF] [--core-mhz N]]
         [--rc crsf] [--esc dshot]
@@ -88,7 +88,7 @@ rate) flying in a simulated IN4073-class quadrotor.
                    on the QR's receiver line, flight modes armed with the arm switch, the pilot
                    parameter set to the radio; the PC link keeps requests, parameters and the
                    abort key; a `link 0` event silences the radio (docs/drivers.md)
-  --esc dshot      scenario, sweep: the engines go out as bidirectional DShot frames to
+  --esc dshot      scenario, sweep, serve: the engines go out as bidirectional DShot frames to
                    simulated ESCs (a bad check keeps the last good value) that answer with the
                    rotor speed's eRPM, reported in telemetry as RPM
   --replay IN      run a recording through the flight chain tick by tick (test mode) and write
@@ -266,7 +266,8 @@ int main(int argc, char** argv) {
       return qrsim::run_soak(soak) ? 0 : 1;
     }
     case Command::serve:
-      if (scenario.radio || scenario.dshot) return usage_error("--rc and --esc go with --scenario or --sweep");
+      if (scenario.radio) return usage_error("--rc goes with --scenario or --sweep");
+      serve.dshot = scenario.dshot;
       serve.stdio = stdio;
       serve.status = status;
       serve.truth_fd = truth_fd;

@@ -164,6 +164,8 @@ int serve(const ServeOptions& options) {
     }
   }
   qr->board().follow_wall_clock();
+  // The simulated motors have the pole pairs the QR's motor_poles parameter says by default.
+  if (options.dshot) qr->board().use_dshot(static_cast<uint8_t>(qr->parameters().get(wire::ParamId::motor_poles) / 2));
   const uint64_t stop_us = options.seconds > 0 ? static_cast<uint64_t>(std::llround(options.seconds * 1e6)) : 0;
   uint64_t next_status_us = 1000000;
   uint8_t buffer[256];

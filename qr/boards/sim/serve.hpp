@@ -21,6 +21,9 @@ struct ServeOptions {
   // build; the console's bytes reach its UART through the simulated line, as the host build's do.
   std::string devboard_elf;
   uint32_t devboard_core_mhz = 0;  // --core-mhz N (scenario.hpp)
+  // --esc dshot: the engines go out as DShot frames to simulated ESCs that answer with their eRPM
+  // (the QR reports RPM: telemetry_rpm, the rpm_* observables).
+  bool dshot = false;
 };
 
 // Runs until the firmware stops (the console sent exit), a signal, or `seconds`. Returns the

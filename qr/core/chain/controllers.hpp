@@ -69,6 +69,7 @@ class YawRateController {
   }
   Thrust moment(Rate setpoint, Rate r, bool integrate = false) {
     const Thrust p = proportional(gain_, setpoint, r, kMaxMoment<N>);
+    p_term_ = p;
     if (integrate && magnitude(p + integral_) < kMaxMoment<N>) {
       // The error saturates to the rate format (+-16 rad/s): beyond it the P term is at its clamp.
       const Rate error = N::template convert_sat<Rate>(N::widen(setpoint) - N::widen(r));
@@ -85,6 +86,8 @@ class YawRateController {
     return clamp(p + integral_, -kMaxMoment<N>, kMaxMoment<N>);
   }
   Thrust integral() const { return integral_; }
+  // The last moment's proportional term (for a live plot: moment = P term + integral, clamped).
+  Thrust p_term() const { return p_term_; }
 
  private:
   static constexpr typename N::Scale kDt = typename N::Scale(1.0 / SampleHz);
@@ -92,6 +95,7 @@ class YawRateController {
   static_assert(fx::detail::is_same<IntegralSum, decltype(fx::mul_wide(Thrust{}, kOne))>,
                 "the integral's clamp must write back into the sum's own format");
 
+  Thrust p_term_{};
   Gain gain_{};
   IntegralGain i_dt_{};
   IntegralSum integral_sum_{};
@@ -177,8 +181,11 @@ class AttitudeController {
     primed_ = true;
     // P2 error - D fs change in one wide accumulator (P2 in Q<8> holds the Q<4> parameter
     // exactly), rounded and clamped once.
-    const Thrust pd = clamp(N::template convert_sat<Thrust>(fx::mul_wide(p2_, error) - fx::mul_wide(d_fs_, change)),
-                            -kMaxMoment<N>, kMaxMoment<N>) +
+    // The two products are kept as they are (a store each) for a live plot of the terms; they are
+    // turned into moments only when read (p_term(), d_term()).
+    p_wide_ = fx::mul_wide(p2_, error);
+    d_wide_ = fx::mul_wide(d_fs_, change);
+    const Thrust pd = clamp(N::template convert_sat<Thrust>(p_wide_ - d_wide_), -kMaxMoment<N>, kMaxMoment<N>) +
                       clamp(moment_feed_forward, -kMaxMoment<N>, kMaxMoment<N>);  // within +-2000: fits
     if (integrate && magnitude(pd + integral_) < kMaxMoment<N>) {
       integral_sum_ += fx::mul_wide(i_dt_, error);  // at most 2 x 14 per tick onto at most 200
@@ -195,8 +202,15 @@ class AttitudeController {
   }
   Rate rate_setpoint() const { return rate_setpoint_; }
   Thrust integral() const { return integral_; }
+  // The last moment's proportional and derivative terms, P2 (rate_setpoint - rate) and
+  // -D d(rate)/dt, each saturated to the moment format: with the integral and the moment
+  // feed-forward they make the moment (before its clamp). Read for a live plot, never per tick.
+  Thrust p_term() const { return N::template convert_sat<Thrust>(p_wide_); }
+  Thrust d_term() const { return N::template convert_sat<Thrust>(-d_wide_); }
 
  private:
+  using PWide = decltype(fx::mul_wide(P2{}, Rate{}));
+  using DWide = decltype(fx::mul_wide(DerivativeGain{}, Rate{}));
   static_assert(kRollPitchDFrac >= kP2Frac, "P2 moves into D's format without rounding");
   static constexpr Rate kTwice = Rate(8.0);  // twice kMaxTiltRateSetpoint
   static constexpr typename N::Scale kDt = typename N::Scale(1.0 / SampleHz);
@@ -212,6 +226,8 @@ class AttitudeController {
   Thrust integral_{};
   Rate rate_setpoint_{};
   Rate previous_rate_{};
+  PWide p_wide_{};
+  DWide d_wide_{};
   bool primed_ = false;
 };
 

@@ -301,6 +301,24 @@ class FlightChain {
   int32_t vertical_thrust_e3() const { return Num::round_to_int(fx::mul_wide(vertical_.thrust(), kThousand)); }
   int32_t held_height_mm() const { return Num::round_to_int(fx::mul_wide(vertical_.held(), kThousand)); }
 
+  // ---- the controllers' terms as they were last formed, for live plots (observables) ----
+  // Read by the stream task, never per tick: the loops only store them. Moments in 0.1 thrust
+  // units; axis 0 roll, 1 pitch, 2 yaw (which has no derivative).
+  int16_t rate_setpoint_e3(int axis) const { return rate_e3(tilt_[axis].rate_setpoint()); }
+  int32_t p_term_e1(int axis) const { return thrust_e1(axis < 2 ? tilt_[axis].p_term() : yaw_.p_term()); }
+  int32_t d_term_e1(int axis) const { return thrust_e1(tilt_[axis].d_term()); }
+  int32_t integral_e1(int axis) const { return thrust_e1(axis < 2 ? tilt_[axis].integral() : yaw_.integral()); }
+  // What the last mix was asked for (the controllers' outputs, or the sticks' where none ran).
+  int32_t moment_e1(int axis) const {
+    return thrust_e1(axis == 0 ? moments_.roll : axis == 1 ? moments_.pitch : moments_.yaw);
+  }
+  // The vertical loops' last run (height hold, a landing): climb set-point in mm/s, the speed
+  // loop's P term and integral in mm/s², the per-engine thrust in 0.1 thrust units.
+  int32_t climb_setpoint_mm_s() const { return Num::round_to_int(fx::mul_wide(vertical_.climb_setpoint(), kThousand)); }
+  int32_t vertical_p_term_mm_s2() const { return Num::round_to_int(fx::mul_wide(vertical_.p_term(), kThousand)); }
+  int32_t vertical_integral_mm_s2() const { return Num::round_to_int(fx::mul_wide(vertical_.integral(), kThousand)); }
+  int32_t vertical_thrust_e1() const { return thrust_e1(vertical_.thrust()); }
+
   // The blocks themselves, for tests and tools that look inside.
   const chain::AttitudeEstimator<Num, SampleHz>& estimator() const { return estimator_; }
   const chain::SensorCalibration<Num>& calibration() const { return calibration_; }
@@ -318,12 +336,14 @@ class FlightChain {
   Angle pitch_target() const { return lift_ == LiftSource::descend ? Angle{} : pilot_.pitch_angle(); }
   Rate yaw_rate_target() const { return lift_ == LiftSource::descend ? Rate{} : pilot_.yaw_rate(); }
 
+  static constexpr Count kTen = Count(10.0);
   static constexpr Count kThousand = Count(1000.0);
   static constexpr Count kTenThousand = Count(10000.0);
   static constexpr Count kMillion = Count(1000000.0);
 
   static int16_t angle_e4(Angle a) { return wire::saturate_i16(Num::round_to_int(fx::mul_wide(a, kTenThousand))); }
   static int16_t rate_e3(Rate r) { return wire::saturate_i16(Num::round_to_int(fx::mul_wide(r, kThousand))); }
+  static int32_t thrust_e1(Thrust t) { return Num::round_to_int(fx::mul_wide(t, kTen)); }
   static chain::Moments<int32_t> moments_e3(const chain::Moments<Thrust>& m) {
     return {Num::round_to_int(fx::mul_wide(m.roll, kThousand)), Num::round_to_int(fx::mul_wide(m.pitch, kThousand)),
             Num::round_to_int(fx::mul_wide(m.yaw, kThousand))};

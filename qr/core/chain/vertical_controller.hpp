@@ -43,6 +43,8 @@ class VerticalController {
     thrust_per_accel_ = product<Thrust>(hover, kPerG0);
     held_ = height;
     integral_ = {};
+    want_ = {};
+    p_term_ = {};
     thrust_ = hover;
   }
 
@@ -54,10 +56,11 @@ class VerticalController {
   // One run: the per-engine thrust for the climb set-point `want` at the estimated climb. The
   // integral holds while told not to integrate (on the ground).
   Thrust update(Climb want, Climb climb, bool integrate) {
+    want_ = want;
     const Climb error = want - climb;
     if (integrate) integral_ = clamp(integral_ + product<VerticalAccel>(kKiDt, error), -kMaxTrim, kMaxTrim);
-    const VerticalAccel u = clamp(N::template convert_sat<VerticalAccel>(fx::mul_wide(kKv, error)) + integral_,
-                                  -kMaxAccel, kMaxAccel);
+    p_term_ = N::template convert_sat<VerticalAccel>(fx::mul_wide(kKv, error));
+    const VerticalAccel u = clamp(p_term_ + integral_, -kMaxAccel, kMaxAccel);
     thrust_ = hover_ + product_sat<Thrust>(thrust_per_accel_, u);
     return thrust_;
   }
@@ -65,6 +68,10 @@ class VerticalController {
   Thrust thrust() const { return thrust_; }  // the last run's (the hover's before the first)
   Height held() const { return held_; }
   VerticalAccel integral() const { return integral_; }
+  // The last run's climb set-point and its speed loop's proportional term, Kv (w - v) (kept for
+  // a live plot).
+  Climb climb_setpoint() const { return want_; }
+  VerticalAccel p_term() const { return p_term_; }
 
  private:
   using Gain = typename N::HeightGain;  // 1/s and 1/s²
@@ -77,6 +84,8 @@ class VerticalController {
   Thrust hover_{}, thrust_per_accel_{}, thrust_{};
   Height held_{};
   VerticalAccel integral_{};
+  Climb want_{};
+  VerticalAccel p_term_{};
 };
 
 // A landing's touchdown. Both ways count only once the descent has been seen (faster than half
