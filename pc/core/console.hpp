@@ -153,6 +153,8 @@ class Console {
   void set_time(uint32_t now_ms);
   void abort(const std::string& why);
   void request_mode(wire::Mode mode);
+  // True when the request went to the simulator's radio instead (its arm switch arms the mode).
+  bool arm_radio(wire::Mode mode);
   void send_control();
   void print_tasks();
   void record_received(const uint8_t* data, size_t count);

@@ -20,6 +20,9 @@ struct ServeOptions {
   // Non-empty: this RV32 ELF flies on the emulated devboard (devboard_qr.hpp) instead of the host
   // build; the console's bytes reach its UART through the simulated line, as the host build's do.
   std::string devboard_elf;
+  // The QR's receiver line carries a radio (--rc crsf, host build only): the console's sticks go
+  // through it as CRSF frames at 150 Hz and the side channel moves its switches (serve_radio.hpp).
+  bool radio = false;
 };
 
 // Runs until the firmware stops (the console sent exit), a signal, or `seconds`. Returns the
