@@ -37,8 +37,9 @@ Parsed parse(const Bytes& bytes) {
 
 // "capturedData", two RC channels frames captured from a receiver; Betaflight's
 // TestCapturedData asserts their check bytes (0x6C, 0x94) and channels 0..3: 189, 993, 978, 983
-// and 189, 993, 978, 981. They start with address 0x00 (broadcast), which Betaflight's byte
-// receiver does not take as a frame (TestCrsfDataReceive) and ours does not either.
+// and 189, 993, 978, 981. They start with address 0x00 (broadcast); fed byte by byte, Betaflight's
+// receiver completes no frame from them (TestCrsfDataReceive), and ours, which syncs on 0xC8 only,
+// none either.
 const Bytes kCaptured1{0x00, 0x18, 0x16, 0xBD, 0x08, 0x9F, 0xF4, 0xAE, 0xF7, 0xBD, 0xEF, 0x7D, 0xEF,
                        0xFB, 0xAD, 0xFD, 0x45, 0x2B, 0x5A, 0x01, 0x00, 0x00, 0x00, 0x00, 0x00, 0x6C};
 const Bytes kCaptured2{0x00, 0x18, 0x16, 0xBD, 0x08, 0x9F, 0xF4, 0xAA, 0xF7, 0xBD, 0xEF, 0x7D, 0xEF,
