@@ -268,7 +268,8 @@ void Console::act(Action action, uint32_t now_ms) {
       break;
     case Action::sim_radio_off:
       if (!simulator_) {
-        note(Severity::warning, "no simulator: m moves only the arm switch of qrsim's radio (--sim-arg --rc --sim-arg crsf)");
+        note(Severity::warning,
+             "no simulator: m moves only the arm switch of qrsim's radio (--sim-arg --rc --sim-arg crsf)");
       } else {
         sim_commands_.emplace_back("radio off\n");
         note(Severity::info, "sim radio: the arm switch off (in a flight mode: panic)");
@@ -422,11 +423,12 @@ bool Console::arm_radio(wire::Mode mode) {
   // While the simulator's radio flies (docs/safety.md rule 17) a flight-mode key is the pilot's
   // hand on the transmitter: the mode switch to the mode, the arm switch off and on.
   const bool radio_flies = telemetry_.radio && (telemetry_.radio->flags & wire::kRadioPilot) != 0;
-  const bool on_the_mode_switch =
-      mode == wire::Mode::manual || mode == wire::Mode::yaw_control || mode == wire::Mode::full_control;
+  const bool on_the_mode_switch = mode == wire::Mode::manual || mode == wire::Mode::yaw_control ||
+                                  mode == wire::Mode::full_control;
   if (!radio_flies || !on_the_mode_switch) return false;
   sim_commands_.emplace_back(std::string("radio arm ") + wire::mode_key(mode) + "\n");
-  note(Severity::info, std::string("sim radio: mode switch to ") + mode_name(mode) + ", arm switch off and on (m: off)");
+  note(Severity::info,
+       std::string("sim radio: mode switch to ") + mode_name(mode) + ", arm switch off and on (m: off)");
   return true;
 }
 

@@ -53,9 +53,7 @@ TEST(DshotFirmwareVectors, EspFcsCapturedAnswers) {
   EXPECT_EQ(idle.period_us, 0u) << "stopped";
   EXPECT_EQ(drivers::erpm_of_period(idle.period_us), 0u);
 
-  const struct {
-    uint32_t line, period_us, erpm_hundreds;
-  } cases[] = {{0x77675, 0x13A0, 119}, {0xD499D, 0x08D0, 266}};
+  const struct { uint32_t line, period_us, erpm_hundreds; } cases[] = {{0x77675, 0x13A0, 119}, {0xD499D, 0x08D0, 266}};
   for (const auto& c : cases) {
     const drivers::ErpmReading r = drivers::decode_erpm_answer(c.line);
     ASSERT_TRUE(r.valid) << std::hex << c.line;

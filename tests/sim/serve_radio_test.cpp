@@ -102,9 +102,9 @@ class ServedRadio {
   uint8_t attitude_flags = 0;
   uint8_t radio_flags = 0;
   int radio_frames = 0;
-  std::string text;                      // the QR's debug text
-  std::vector<std::string> side_lines;   // everything the side channel said
-  double height = 0;                     // the last truth line's
+  std::string text;                     // the QR's debug text
+  std::vector<std::string> side_lines;  // everything the side channel said
+  double height = 0;                    // the last truth line's
   std::vector<wire::Nack> nacks;
   std::vector<wire::Ack> acks;
 
@@ -174,9 +174,14 @@ void make_the_radio_the_pilot(ServedRadio& c) {
   ASSERT_TRUE(c.until([&] { return c.acked(wire::MessageType::param_set, 0x21); }, 3.0)) << c.text;
   c.send(wire::encode(wire::ModeChange{0x22, wire::Mode::calibration}));
   ASSERT_TRUE(c.until([&] { return c.text.find("mode: calibration\n") != std::string::npos; }, 3.0)) << c.text;
-  ASSERT_TRUE(c.until([&] { return c.mode == wire::Mode::safe && (c.attitude_flags & wire::kFlagCalibrated) != 0; }, 5.0))
+  ASSERT_TRUE(
+      c.until([&] { return c.mode == wire::Mode::safe && (c.attitude_flags & wire::kFlagCalibrated) != 0; }, 5.0))
       << c.text;
-  ASSERT_TRUE(c.until([&] { return (c.radio_flags & (wire::kRadioPilot | wire::kRadioLinkUp)) == (wire::kRadioPilot | wire::kRadioLinkUp); }, 2.0))
+  ASSERT_TRUE(c.until(
+      [&] {
+        return (c.radio_flags & (wire::kRadioPilot | wire::kRadioLinkUp)) == (wire::kRadioPilot | wire::kRadioLinkUp);
+      },
+      2.0))
       << "the console's sticks reach the QR through the radio: flags " << int{c.radio_flags};
 }
 
@@ -196,7 +201,8 @@ TEST(ServeRadio, ArmsByTheSwitchFliesAndTheSwitchOffIsAPanic) {
   c.side("radio arm full\n");
   ASSERT_TRUE(c.until([&] { return c.mode == wire::Mode::full_control; }, 2.0)) << c.text;
   EXPECT_TRUE(c.said("ok radio arm full"));
-  EXPECT_TRUE(c.until([&] { return (c.radio_flags & wire::kRadioArmSwitch) != 0; }, 1.0)) << "the console shows the switch";
+  EXPECT_TRUE(c.until([&] { return (c.radio_flags & wire::kRadioArmSwitch) != 0; }, 1.0))
+      << "the console shows the switch";
 
   // The console's lift stick, through the radio: the QR climbs on the simulator's truth.
   const double ground = c.height;

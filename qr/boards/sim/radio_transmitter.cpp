@@ -50,7 +50,8 @@ void RadioTransmitter::step(uint64_t now_us, bool silent, SimBoard& board) {
   next_rc_ns_ += kRcPeriodNs;
   if (next_rc_ns_ < now_us * 1000) next_rc_ns_ = now_us * 1000 + kRcPeriodNs;
   if (silent) return;
-  const drivers::CrsfFrameBytes f = drivers::encode_rc_channels(transmitter_channels(sticks_, arm_switch_on(now_us), mode_));
+  const drivers::CrsfFrameBytes f = drivers::encode_rc_channels(
+      transmitter_channels(sticks_, arm_switch_on(now_us), mode_));
   board.radio_send(f.bytes, f.size);
   if (++rc_frames_ % kStatsEvery == 0) {
     const drivers::CrsfFrameBytes s = drivers::encode_link_statistics(nearby_link());

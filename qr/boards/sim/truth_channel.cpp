@@ -49,7 +49,8 @@ bool parse_truth_command(std::string_view line, TruthCommand& push, std::string&
   }
   if (words[0] == "radio") return parse_radio_command(words, push, error);
   if (words[0] != "push") {
-    error = "unknown command '" + words[0].substr(0, 40) + "' (push TX TY TZ SECONDS, reset, radio arm MODE, radio off)";
+    error = "unknown command '" + words[0].substr(0, 40) +
+            "' (push TX TY TZ SECONDS, reset, radio arm MODE, radio off)";
     return false;
   }
   if (words.size() != 5) {
