@@ -239,6 +239,12 @@ int serve(const ServeOptions& options) {
                    static_cast<unsigned long long>(qr->board().host_timing().caught_up_periods),
                    static_cast<double>(qr->board().host_timing().max_late_us) * 1e-3,
                    static_cast<unsigned long long>(qr->board().host_timing().skipped_periods));
+      if (radio) {
+        std::fprintf(stderr, "qrsim: radio %s, arm switch %s, mode switch %s, %u RC frames sent\n",
+                     radio->sending(now) ? "sending" : "silent (no control frames from the console)",
+                     radio->transmitter().arm_switch_on(now) ? "on" : "off",
+                     wire::mode_key(radio->transmitter().mode_switch()), radio->transmitter().rc_frames());
+      }
     }
     if (stop_us != 0 && now >= stop_us) break;
   }
