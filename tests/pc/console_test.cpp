@@ -864,6 +864,17 @@ TEST(Console, WhileTheRadioFliesTheModeKeysMoveTheSimulatedRadiosSwitches) {
   EXPECT_EQ(commands[2], "radio arm manual\n");
   EXPECT_EQ(commands[3], "radio off\n");
   EXPECT_TRUE(sim.logged("sim radio: mode switch to manual"));
+  // In flight the keys leave the switches alone: their off-and-on would be a panic.
+  wire::TelemetryAttitude flying;
+  flying.mode = wire::Mode::full_control;
+  const wire::FrameBytes a = wire::encode(flying);
+  sim.console.receive(a.bytes, a.size, sim.now);
+  sim.key('4');
+  EXPECT_TRUE(sim.console.take_sim_commands().empty());
+  EXPECT_TRUE(sim.logged("not moving the radio's switches for yaw control"));
+  flying.mode = wire::Mode::safe;
+  const wire::FrameBytes back = wire::encode(flying);
+  sim.console.receive(back.bytes, back.size, sim.now);
   sim.run(100);
   EXPECT_EQ(count_requests(sim, wire::MessageType::mode_change), 0u) << "the QR is not asked";
   sim.key('3');  // calibration is the PC's
