@@ -268,6 +268,15 @@ void Console::act(Action action, uint32_t now_ms) {
         note(Severity::info, "sim: asking to set the QR down upright (engines must be off)");
       }
       break;
+    case Action::sim_radio_off:
+      if (!simulator_) {
+        note(Severity::warning,
+             "no simulator: m moves only the arm switch of qrsim's radio (--sim-arg --rc --sim-arg crsf)");
+      } else {
+        sim_commands_.emplace_back("radio off\n");
+        note(Severity::info, "sim radio: the arm switch off (in a flight mode: panic)");
+      }
+      break;
     default: break;
   }
 }
@@ -399,6 +408,7 @@ void Console::request_mode(wire::Mode mode) {
       return;
     }
   }
+  if (simulator_ && leaving_safe && arm_radio(mode, in_safe)) return;
   const bool flying = telemetry_.attitude && is_flight_mode(telemetry_.attitude->mode);
   note(Severity::info,
        std::string("asking for mode ") + mode_name(mode) +
@@ -409,6 +419,25 @@ void Console::request_mode(wire::Mode mode) {
   // with the sticks as they are now goes first; frames arrive in order.
   send_control();
   link_.request(wire::ModeChange{0, mode}, now_ms_);
+}
+
+bool Console::arm_radio(wire::Mode mode, bool in_safe) {
+  // While the simulator's radio flies (docs/safety.md rule 17) a flight-mode key is the pilot's
+  // hand on the transmitter: the mode switch to the mode, the arm switch off and on.
+  const bool radio_flies = telemetry_.radio && (telemetry_.radio->flags & wire::kRadioPilot) != 0;
+  const bool on_the_mode_switch = mode == wire::Mode::manual || mode == wire::Mode::yaw_control ||
+                                  mode == wire::Mode::full_control;
+  if (!radio_flies || !on_the_mode_switch) return false;
+  if (!in_safe) {
+    // The switch's off-and-on would be the emergency stop of rule 17 in flight.
+    note(Severity::warning, std::string("not moving the radio's switches for ") + mode_name(mode) +
+                                ": the radio arms from safe only, and its arm switch off in flight is a panic (m)");
+    return true;
+  }
+  sim_commands_.emplace_back(std::string("radio arm ") + wire::mode_key(mode) + "\n");
+  note(Severity::info,
+       std::string("sim radio: mode switch to ") + mode_name(mode) + ", arm switch off and on (m: off)");
+  return true;
 }
 
 void Console::send_control() {

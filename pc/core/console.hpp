@@ -153,6 +153,9 @@ class Console {
   void set_time(uint32_t now_ms);
   void abort(const std::string& why);
   void request_mode(wire::Mode mode);
+  // True when the request was the simulator's radio's: its switches moved to arm the mode (from
+  // safe), or nothing sent (in flight, where the switch's off-and-on would be a panic).
+  bool arm_radio(wire::Mode mode, bool in_safe);
   void send_control();
   void print_tasks();
   void record_received(const uint8_t* data, size_t count);

@@ -90,4 +90,13 @@ concept OverrunCountingBoard = requires(const B& b) {
   {b.rx_overruns()};
 };
 
+// Optional: DShot ESCs that take special commands (common/drivers/dshot_commands.hpp), sent in
+// place of the throttle frames while an engine is stopped.
+//   bool esc_command(uint8_t command)   for every engine; false: refused (no such ESCs, or an
+//                                       engine turns)
+template <class B>
+concept EscCommandBoard = requires(B& b, uint8_t command) {
+  {b.esc_command(command)};
+};
+
 }  // namespace qr

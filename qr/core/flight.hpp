@@ -25,6 +25,7 @@
 #include <qr/core/flight_tasks.hpp>
 #include <qr/core/flight_telemetry.hpp>
 #include <qr/core/led_map.hpp>
+#include <qr/core/lost_model_beacon.hpp>
 #include <qr/core/observable_streams.hpp>
 #include <qr/core/radio_receiver.hpp>
 #include <qr/core/rate.hpp>
@@ -90,6 +91,12 @@ class Flight {
       if (r.valid) rpm_[i] = wire::saturate_u16(drivers::rpm_of_period(r.period_us, pole_pairs));
     }
     rpm_heard_ = true;
+  }
+  // A DShot command for the ESCs this tick, 0 for none (boards whose ESCs take them,
+  // EscCommandBoard): the lost-model beacon (lost_model_beacon.hpp, docs/safety.md rule 18).
+  uint8_t esc_command_due() const {
+    const uint32_t timeout_us = static_cast<uint32_t>(params_.get(wire::ParamId::link_timeout_ms)) * 1000u;
+    return lost_model_beacon(safety_.mode(), engines_, tick_us_, situation().last_frame_us, timeout_us, kPeriodUs);
   }
   bool tx_peek(uint8_t& byte) const { return tx_.peek(byte); }
   void tx_pop() { tx_.drop(); }

@@ -21,6 +21,7 @@
 // ESCs answer (EscAnswerBoard) hands their answers to the context (esc_answers) after the engines;
 // a board that counts its serial receiver's overruns (OverrunCountingBoard) tells the context
 // (serial_overruns) with the bytes.
+// one whose ESCs take commands (EscCommandBoard) sends them the context's (esc_command_due).
 //
 // Every rate, phase and budget is in the context's task table (task.hpp); no task divides itself.
 //
@@ -138,6 +139,10 @@ class Scheduler {
     if constexpr (EscAnswerBoard<B> && requires(Context & c, const EscAnswers& a) { c.esc_answers(a); }) {
       EscAnswers answers;
       if (board_.esc_answers(answers)) context_.esc_answers(answers);
+    }
+    if constexpr (EscCommandBoard<B> && requires(const Context& c) { c.esc_command_due(); }) {
+      const uint8_t command = context_.esc_command_due();
+      if (command != 0) board_.esc_command(command);
     }
     board_.set_leds(context_.leds());
     for (uint16_t n = 0; n < limits_.tx_bytes_per_tick && context_.tx_peek(byte); ++n) {

@@ -1,6 +1,7 @@
 // Fuzz target: arbitrary lines into the simulator's truth channel (qrsim --truth-fd,
 // qr/boards/sim/truth_channel.cpp). Beyond what ASan and UBSan catch: a refused line says why; an
-// accepted push is finite and within the channel's bounds (10 N m, 10 s).
+// accepted push is finite and within the channel's bounds (10 N m, 10 s); an accepted radio arm names
+// a mode the radio's arm switch arms.
 #include <stddef.h>
 #include <stdint.h>
 
@@ -22,7 +23,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     require(!error.empty());
     return 0;
   }
-  if (push.kind == qrsim::TruthCommand::Kind::reset) return 0;
+  if (push.kind == qrsim::TruthCommand::Kind::reset || push.kind == qrsim::TruthCommand::Kind::radio_off) return 0;
+  if (push.kind == qrsim::TruthCommand::Kind::radio_arm) {
+    require(wire::flies(push.mode) && push.mode != wire::Mode::height_hold);  // what an arm switch can arm
+    return 0;
+  }
   for (const double t : {push.torque.x, push.torque.y, push.torque.z}) require(std::isfinite(t) && std::fabs(t) <= 10);
   require(std::isfinite(push.seconds) && push.seconds > 0 && push.seconds <= 10);
   return 0;

@@ -835,6 +835,64 @@ TEST(Console, ResetKeySetsTheSimulatedQrUpright) {
   EXPECT_TRUE(sim.logged("sim: error reset: the engines are running"));
 }
 
+// The simulator's radio (qrsim --rc crsf): while the QR says the radio flies, a flight-mode key
+// moves the radio's switches (the mode switch, the arm switch off and on) instead of asking the QR,
+// which would refuse; `m` puts the arm switch off. Other requests still go to the QR, and on a real
+// serial port (no simulator) `m` sends nothing.
+TEST(Console, WhileTheRadioFliesTheModeKeysMoveTheSimulatedRadiosSwitches) {
+  Bench real;
+  real.key('m');
+  EXPECT_TRUE(real.logged("no simulator"));
+  EXPECT_TRUE(real.console.take_sim_commands().empty());
+
+  qrterm::Console::Setup setup;
+  setup.simulator = true;
+  Bench sim(setup);
+  sim.connect();
+  wire::TelemetryRadio radio;
+  radio.flags = wire::kRadioPilot | wire::kRadioLinkUp;
+  const wire::FrameBytes f = wire::encode(radio);
+  sim.console.receive(f.bytes, f.size, sim.now);
+  sim.key('5');
+  sim.key('4');
+  sim.key('2');
+  sim.key('m');
+  const std::vector<std::string> commands = sim.console.take_sim_commands();
+  ASSERT_EQ(commands.size(), 4u);
+  EXPECT_EQ(commands[0], "radio arm full\n");
+  EXPECT_EQ(commands[1], "radio arm yaw\n");
+  EXPECT_EQ(commands[2], "radio arm manual\n");
+  EXPECT_EQ(commands[3], "radio off\n");
+  EXPECT_TRUE(sim.logged("sim radio: mode switch to manual"));
+  // In flight the keys leave the switches alone: their off-and-on would be a panic.
+  wire::TelemetryAttitude flying;
+  flying.mode = wire::Mode::full_control;
+  const wire::FrameBytes a = wire::encode(flying);
+  sim.console.receive(a.bytes, a.size, sim.now);
+  sim.key('4');
+  EXPECT_TRUE(sim.console.take_sim_commands().empty());
+  EXPECT_TRUE(sim.logged("not moving the radio's switches for yaw control"));
+  flying.mode = wire::Mode::safe;
+  const wire::FrameBytes back = wire::encode(flying);
+  sim.console.receive(back.bytes, back.size, sim.now);
+  sim.run(100);
+  EXPECT_EQ(count_requests(sim, wire::MessageType::mode_change), 0u) << "the QR is not asked";
+  sim.key('3');  // calibration is the PC's
+  sim.run(100);
+  EXPECT_EQ(count_requests(sim, wire::MessageType::mode_change), 1u);
+  EXPECT_TRUE(sim.console.take_sim_commands().empty());
+
+  // The radio no longer the pilot: the keys ask the QR again.
+  radio.flags = wire::kRadioLinkUp;
+  const wire::FrameBytes g = wire::encode(radio);
+  sim.console.receive(g.bytes, g.size, sim.now);
+  sim.run(2000);  // calibration over
+  sim.key('2');
+  sim.run(100);
+  EXPECT_TRUE(sim.console.take_sim_commands().empty());
+  EXPECT_EQ(count_requests(sim, wire::MessageType::mode_change), 2u);
+}
+
 // One of every message the QR may send, as the wire library lists them: the console must have a
 // use for each (a new message type added to the wire shows up here first).
 template <class... Msgs>

@@ -54,6 +54,19 @@ TEST(DriversClosedLoop, TheRadiosLinkLossLandsLikeTheCables) {
   EXPECT_EQ(r.figure("entered_panic"), 1);
 }
 
+// The PC's link lost in hover with DShot ESCs: the panic sets the QR down and stops the engines,
+// and then, in safe, the ESCs get the lost-model beacon (docs/safety.md rule 18), never while a
+// motor turns. In hover before the loss (link alive, engines turning) none.
+TEST(DriversClosedLoop, TheBeaconSoundsOnlyOnceTheEnginesStopped) {
+  const qrsim::ScenarioResult hover = fly("hover", false, true);
+  EXPECT_EQ(hover.figure("esc_commands"), 0);
+  const qrsim::ScenarioResult r = fly("link-loss", false, true);
+  expect_bands_hold(r);
+  EXPECT_EQ(r.final_mode, "safe");
+  EXPECT_GE(r.figure("esc_commands"), 4) << "a beacon frame to each of the four ESCs at least";
+  EXPECT_EQ(r.figure("esc_commands_while_turning"), 0);
+}
+
 // Hover with the engines as DShot only (the PC flies).
 TEST(DriversClosedLoop, HoverOnDshotEngines) {
   const qrsim::ScenarioResult r = fly("hover", false, true);

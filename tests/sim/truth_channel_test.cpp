@@ -29,6 +29,26 @@ TEST(TruthChannel, ParsesAReset) {
   EXPECT_EQ(command.kind, qrsim::TruthCommand::Kind::push) << "a push after a reset is a push";
 }
 
+// The radio's switches (qrsim --serve --rc crsf): arm one of the three modes its mode switch
+// picks, or the arm switch off; anything else names what the radio takes.
+TEST(TruthChannel, ParsesTheRadiosSwitches) {
+  qrsim::TruthCommand command;
+  std::string error;
+  ASSERT_TRUE(qrsim::parse_truth_command("radio arm manual", command, error)) << error;
+  EXPECT_EQ(command.kind, qrsim::TruthCommand::Kind::radio_arm);
+  EXPECT_EQ(command.mode, wire::Mode::manual);
+  ASSERT_TRUE(qrsim::parse_truth_command("radio arm yaw", command, error)) << error;
+  EXPECT_EQ(command.mode, wire::Mode::yaw_control);
+  ASSERT_TRUE(qrsim::parse_truth_command(" radio  arm full\r", command, error)) << error;
+  EXPECT_EQ(command.mode, wire::Mode::full_control);
+  ASSERT_TRUE(qrsim::parse_truth_command("radio off", command, error)) << error;
+  EXPECT_EQ(command.kind, qrsim::TruthCommand::Kind::radio_off);
+  for (const char* bad : {"radio", "radio arm", "radio arm height", "radio arm safe", "radio on", "radio off now"}) {
+    EXPECT_FALSE(qrsim::parse_truth_command(bad, command, error)) << bad;
+    EXPECT_EQ(error, "radio takes 'arm manual', 'arm yaw', 'arm full' or 'off'") << bad;
+  }
+}
+
 // After a panic the vehicle may lie on its side: a reset sets it level and still at the ground,
 // where it lay and facing the way it faced.
 TEST(TruthChannel, ResetSetsTheVehicleDownUpright) {

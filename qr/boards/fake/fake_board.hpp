@@ -53,6 +53,16 @@ class FakeBoard {
     esc.fresh = 0;
     return true;
   }
+  // DShot special commands, recorded with the engine values the board was last given.
+  struct EscCommandSent {
+    uint8_t command;
+    EngineCommand engines;
+    uint32_t at_us;
+  };
+  bool esc_command(uint8_t command) {
+    esc_commands.push_back({command, engines, now_us_});
+    return true;
+  }
   LogArea log_area() { return {log_memory, sizeof log_memory}; }
   uint32_t rx_overruns() const { return overruns; }  // scripted: bytes the receiver "lost"
 
@@ -66,6 +76,7 @@ class FakeBoard {
   uint32_t overruns = 0;
   std::deque<uint8_t> radio;
   EscAnswers esc;
+  std::vector<EscCommandSent> esc_commands;
   std::vector<uint8_t> tx;
   size_t tx_capacity = 1u << 20;
   std::vector<uint32_t> kick_times_us;  // when each tick's kick was taken
@@ -75,7 +86,7 @@ class FakeBoard {
   uint32_t now_us_ = 0;
 };
 
-static_assert(Board<FakeBoard> && RadioBoard<FakeBoard> && EscAnswerBoard<FakeBoard> &&
+static_assert(Board<FakeBoard> && RadioBoard<FakeBoard> && EscAnswerBoard<FakeBoard> && EscCommandBoard<FakeBoard> &&
               OverrunCountingBoard<FakeBoard>);
 
 }  // namespace qr::fake

@@ -3,30 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include <common/drivers/crsf.hpp>
-#include <common/drivers/rc_sticks.hpp>
 #include <common/link_timing.hpp>
 
 namespace qrsim {
 
 Pilot::Pilot(SimBoard& board, uint8_t first_seq) : board_(board), resend_(first_seq) {}
-
-namespace {
-
-// The radio sends an RC frame every 1/150 s and link statistics every 15th frame (10 Hz).
-constexpr uint64_t kRcPeriodNs = 1000000000ull / 150;
-constexpr uint32_t kStatsEvery = 15;
-// The arm switch stays off this long before it goes on (a receiver frame or more sees it off).
-constexpr uint64_t kArmSwitchOffUs = 50000;
-
-// The mode switch's position for a mode the arm switch arms (qr::kRadioArmingModes).
-uint16_t mode_switch_for(wire::Mode mode) {
-  return mode == wire::Mode::manual        ? drivers::kCrsfChannelMin
-         : mode == wire::Mode::yaw_control ? drivers::kCrsfChannelMid
-                                           : drivers::kCrsfChannelMax;
-}
-
-}  // namespace
 
 void Pilot::send(const wire::FrameBytes& frame) {
   if (silent_ && !radio_) return;  // with a radio, silence is the radio's
@@ -54,9 +35,7 @@ void Pilot::put(uint8_t byte) {
 
 void Pilot::request_mode(wire::Mode mode) {
   if (radio_ && wire::flies(mode)) {  // the radio arms: the switch off, then on
-    arming_ = true;
-    arm_mode_ = mode;
-    arm_at_us_ = board_.world().now_us() + kArmSwitchOffUs;
+    transmitter_.arm(mode, board_.world().now_us());
     return;
   }
   const uint32_t now_ms = static_cast<uint32_t>(board_.world().now_us() / 1000);
@@ -109,37 +88,9 @@ void Pilot::step() {
     next_control_us_ = now_us + wire::kControlPeriodMs * 1000;
     send(wire::encode(sticks_));
   }
-  if (radio_ && now_us * 1000 >= next_rc_ns_) {
-    next_rc_ns_ += kRcPeriodNs;
-    if (next_rc_ns_ < now_us * 1000) next_rc_ns_ = now_us * 1000 + kRcPeriodNs;
-    if (!silent_) send_radio(now_us);
-  }
-}
-
-void Pilot::send_radio(uint64_t now_us) {
-  drivers::CrsfChannels c;
-  for (uint16_t& v : c.value) v = drivers::kCrsfChannelMid;
-  c.value[0] = drivers::rc_channel_of_stick(sticks_.roll);
-  c.value[1] = drivers::rc_channel_of_stick(sticks_.pitch);
-  c.value[2] = drivers::rc_channel_of_lift(sticks_.lift);
-  c.value[3] = drivers::rc_channel_of_stick(sticks_.yaw);
-  c.value[4] = arming_ && now_us >= arm_at_us_ ? drivers::kCrsfChannelMax : drivers::kCrsfChannelMin;
-  c.value[5] = mode_switch_for(arm_mode_);
-  const drivers::CrsfFrameBytes f = drivers::encode_rc_channels(c);
-  board_.radio_send(f.bytes, f.size);
-  if (++rc_frames_ % kStatsEvery == 0) {
-    drivers::CrsfLinkStatistics stats;
-    stats.uplink_rssi_ant1 = 45;
-    stats.uplink_rssi_ant2 = 47;
-    stats.uplink_link_quality = 100;
-    stats.uplink_snr = 10;
-    stats.rf_mode = 4;
-    stats.uplink_tx_power = 3;
-    stats.downlink_rssi = 50;
-    stats.downlink_link_quality = 100;
-    stats.downlink_snr = 8;
-    const drivers::CrsfFrameBytes s = drivers::encode_link_statistics(stats);
-    board_.radio_send(s.bytes, s.size);
+  if (radio_) {
+    transmitter_.set_sticks(sticks_);
+    transmitter_.step(now_us, silent_, board_);
   }
 }
 

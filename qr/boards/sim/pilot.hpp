@@ -19,6 +19,7 @@
 #include <common/messages.hpp>
 #include <common/parameter_table.hpp>
 #include <common/resend_queue.hpp>
+#include <qr/boards/sim/radio_transmitter.hpp>
 #include <qr/boards/sim/sim_board.hpp>
 #include <sim/quadrotor.hpp>
 
@@ -100,7 +101,6 @@ class Pilot {
   void send(const wire::FrameBytes& frame);
   void put(uint8_t byte);
   bool lost();
-  void send_radio(uint64_t now_us);
   void on_frame(const wire::Frame& frame, uint64_t sent_at_us);
 
   SimBoard& board_;
@@ -118,11 +118,7 @@ class Pilot {
   std::function<void(const wire::Frame&, const wire::LinkCounters&)> on_every_frame_;
   std::function<void(uint8_t)> on_bytes_up_;
   bool radio_ = false;
-  uint64_t next_rc_ns_ = 0;
-  uint32_t rc_frames_ = 0;
-  bool arming_ = false;  // the arm switch goes on once arm_at_us_ has come
-  uint64_t arm_at_us_ = 0;
-  wire::Mode arm_mode_ = wire::Mode::manual;
+  RadioTransmitter transmitter_;
 };
 
 // The pilot's thumb on the lift stick, watching the vehicle: lift for the weight (what the pilot

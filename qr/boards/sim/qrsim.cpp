@@ -29,7 +29,7 @@ namespace {
 
 constexpr const char* kUsage = R"(usage:
   qrsim --serve [--stdio] [--seed N] [--vehicle FILE] [--seconds S] [--status] [--truth-fd N]
-        [--devboard [ELF] [--core-mhz N]] [--esc dshot]
+        [--devboard [ELF] [--core-mhz N] | --rc crsf] [--esc dshot]
   qrsim --scenario NAME|FILE [--seconds S] [--seed N] [--vehicle FILE] [--param NAME=VALUE]...
         [--no-noise] [--trace FILE.csv] [--record FILE.csv] [--json] [--devboard [ELF] [--core-mhz N]]
         [--rc crsf] [--esc dshot]
@@ -50,7 +50,7 @@ rate) flying in a simulated IN4073-class quadrotor.
   --status         with --serve: one status line a second on stderr
   --truth-fd N     with --serve: N is an open, two-way descriptor (a socketpair end) for the
                    simulator's side channel: a truth line per 20 ms of simulated time out, push
-                   commands in (docs/simulator.md); the firmware never sees it
+                   and radio commands in (docs/simulator.md); the firmware never sees it
   --scenario NAME  fly a scenario headless, in simulated time, and score it on the simulator's
                    truth; exit status 0 when every pass band holds, 1 when one does not. NAME is
                    a built-in (qrsim --list) or a scenario file (format in docs/simulator.md)
@@ -87,7 +87,11 @@ rate) flying in a simulated IN4073-class quadrotor.
   --rc crsf        scenario, sweep: the pilot flies through a radio: CRSF RC frames at 150 Hz
                    on the QR's receiver line, flight modes armed with the arm switch, the pilot
                    parameter set to the radio; the PC link keeps requests, parameters and the
-                   abort key; a `link 0` event silences the radio (docs/drivers.md)
+                   abort key; a `link 0` event silences the radio (docs/drivers.md).
+                   serve: the console's sticks reach the QR through the radio (CRSF at 150 Hz;
+                   silent once its control frames stop for 0.1 s) and the side channel's
+                   "radio arm manual|yaw|full" and "radio off" move its switches; the QR flies
+                   by them when its pilot parameter says radio (docs/simulator.md)
   --esc dshot      scenario, sweep, serve: the engines go out as bidirectional DShot frames to
                    simulated ESCs (a bad check keeps the last good value) that answer with the
                    rotor speed's eRPM, reported in telemetry as RPM
@@ -266,7 +270,9 @@ int main(int argc, char** argv) {
       return qrsim::run_soak(soak) ? 0 : 1;
     }
     case Command::serve:
-      if (scenario.radio) return usage_error("--rc goes with --scenario or --sweep");
+      if (scenario.radio && !scenario.devboard_elf.empty())
+        return usage_error("--rc crsf flies the host firmware only: the devboard's sensor link carries no radio");
+      serve.radio = scenario.radio;
       serve.dshot = scenario.dshot;
       serve.stdio = stdio;
       serve.status = status;

@@ -469,13 +469,19 @@ ScenarioResult run_scenario(const ScenarioScript& script, const RunOptions& opti
   if (options.dshot) {
     // The ESCs' side (frames taken, frames dropped for their check) and the front engine's speed
     // as the QR last reported it from the ESC's answer, beside the truth.
-    uint64_t accepted = 0, rejected = 0;
+    // Special command frames (the lost-model beacon, docs/safety.md rule 18), and those that came
+    // while an ESC's motor ran (none may).
+    uint64_t accepted = 0, rejected = 0, commands = 0, commands_turning = 0;
     for (const SimEsc& esc : qr->board().escs()) {
       accepted += esc.accepted();
       rejected += esc.rejected();
+      commands += esc.commands();
+      commands_turning += esc.commands_while_turning();
     }
     f.push_back({"esc_frames", static_cast<double>(accepted)});
     f.push_back({"esc_frames_rejected", static_cast<double>(rejected)});
+    f.push_back({"esc_commands", static_cast<double>(commands)});
+    f.push_back({"esc_commands_while_turning", static_cast<double>(commands_turning)});
     f.push_back({"rpm_front_reported", static_cast<double>(pilot.view().rpm[0])});
     f.push_back({"rpm_front_truth", std::abs(plant.state().rotor_speed[0]) * 60.0 / (2.0 * M_PI)});
   }

@@ -14,6 +14,7 @@
 
 #include <qr/boards/sim/devboard_qr.hpp>
 #include <qr/boards/sim/flying_qr.hpp>
+#include <qr/boards/sim/serve_radio.hpp>
 #include <qr/boards/sim/truth_channel.hpp>
 
 namespace qrsim {
@@ -96,7 +97,8 @@ class TruthChannel {
   // Reads what has arrived; a push found starts now (the latest push replaces the one acting), a
   // reset sets the vehicle down upright at once (refused while an engine runs: a hand in the
   // rotors).
-  void poll_commands(FlyingQr& qr, sim::Vec3& torque, uint64_t& until_us) {
+  // The radio's switches move the serve-mode radio's (`radio`, null without --rc crsf).
+  void poll_commands(FlyingQr& qr, ServeRadio* radio, sim::Vec3& torque, uint64_t& until_us) {
     if (fd_ < 0) return;
     char buffer[256];
     for (;;) {
@@ -115,6 +117,8 @@ class TruthChannel {
         std::string error;
         if (!parse_truth_command(pending_, command, error)) {
           send("error " + error + "\n");
+        } else if (command.kind == TruthCommand::Kind::radio_arm || command.kind == TruthCommand::Kind::radio_off) {
+          move_switches(command, qr.world().now_us(), radio);
         } else if (command.kind == TruthCommand::Kind::push) {
           torque = command.torque;
           until_us = qr.world().now_us() + static_cast<uint64_t>(std::llround(command.seconds * 1e6));
@@ -131,6 +135,16 @@ class TruthChannel {
   }
 
  private:
+  void move_switches(const TruthCommand& command, uint64_t now_us, ServeRadio* radio) {
+    if (radio == nullptr) return send("error radio: this simulator has no radio (qrsim --serve --rc crsf)\n");
+    if (command.kind == TruthCommand::Kind::radio_off) {
+      radio->transmitter().disarm();
+      return send("ok radio off\n");
+    }
+    radio->transmitter().arm(command.mode, now_us);
+    send(std::string("ok radio arm ") + wire::mode_key(command.mode) + "\n");
+  }
+
   int fd_;
   std::string pending_;
 };
@@ -175,13 +189,18 @@ int serve(const ServeOptions& options) {
   sim::Vec3 push_torque;
   uint64_t push_until_us = 0;
   bool pushing = false;
+  std::unique_ptr<ServeRadio> radio;
+  if (options.radio) radio = std::make_unique<ServeRadio>();
 
   while (g_stop == 0) {
     // Bytes from the console go onto the line now; the line delivers them at 115200 baud.
     while (input_open) {
       const ssize_t n = read(in_fd, buffer, sizeof buffer);
       if (n > 0) {
-        for (ssize_t i = 0; i < n; ++i) qr->board().pc_send(buffer[i]);
+        for (ssize_t i = 0; i < n; ++i) {
+          qr->board().pc_send(buffer[i]);
+          if (radio) radio->hear(buffer[i], qr->world().now_us());
+        }
       } else {
         if (n == 0 && options.stdio) input_open = false;  // stdin closed: keep flying, silent
         break;                                            // EAGAIN, or EIO: no console attached
@@ -191,12 +210,13 @@ int serve(const ServeOptions& options) {
 
     if (truth.open()) {
       const uint64_t before = qr->world().now_us();
-      truth.poll_commands(*qr, push_torque, push_until_us);
+      truth.poll_commands(*qr, radio.get(), push_torque, push_until_us);
       const bool push_now = before < push_until_us;
       if (push_now || pushing) qr->world().plant().set_disturbance(push_now ? push_torque : sim::Vec3{}, sim::Vec3{});
       pushing = push_now;
     }
 
+    if (radio) radio->step(qr->world().now_us(), qr->board());
     if (!qr->tick()) {  // sleeps until the next kick, then runs the firmware
       if (!qr->error().empty()) std::fprintf(stderr, "qrsim: devboard: %s\n", qr->error().c_str());
       else let_the_line_finish(*qr, out_fd, /*linger=*/!options.stdio);
@@ -222,6 +242,12 @@ int serve(const ServeOptions& options) {
                    static_cast<unsigned long long>(qr->board().host_timing().caught_up_periods),
                    static_cast<double>(qr->board().host_timing().max_late_us) * 1e-3,
                    static_cast<unsigned long long>(qr->board().host_timing().skipped_periods));
+      if (radio) {
+        std::fprintf(stderr, "qrsim: radio %s, arm switch %s, mode switch %s, %u RC frames sent\n",
+                     radio->sending(now) ? "sending" : "silent (no control frames from the console)",
+                     radio->transmitter().arm_switch_on(now) ? "on" : "off",
+                     wire::mode_key(radio->transmitter().mode_switch()), radio->transmitter().rc_frames());
+      }
     }
     if (stop_us != 0 && now >= stop_us) break;
   }

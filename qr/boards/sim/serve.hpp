@@ -24,6 +24,9 @@ struct ServeOptions {
   // --esc dshot: the engines go out as DShot frames to simulated ESCs that answer with their eRPM
   // (the QR reports RPM: telemetry_rpm, the rpm_* observables).
   bool dshot = false;
+  // The QR's receiver line carries a radio (--rc crsf, host build only): the console's sticks go
+  // through it as CRSF frames at 150 Hz and the side channel moves its switches (serve_radio.hpp).
+  bool radio = false;
 };
 
 // Runs until the firmware stops (the console sent exit), a signal, or `seconds`. Returns the

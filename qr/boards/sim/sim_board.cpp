@@ -97,6 +97,13 @@ bool SimBoard::esc_answers(qr::EscAnswers& answers) {
   return true;
 }
 
+bool SimBoard::esc_command(uint8_t command) {
+  if (!dshot_) return false;
+  bool all = true;
+  for (size_t i = 0; i < 4; ++i) all = sequencers_[i].request(command, engines_.value[i]) && all;
+  return all;
+}
+
 bool SimBoard::pc_next_sent_at_us(uint64_t& us) const {
   uint64_t ns = 0;
   if (!to_pc_.next_sent_at(ns)) return false;

@@ -14,7 +14,8 @@
 //   radio       a receiver's line (CRSF, qrsim --rc crsf): what the simulated radio sends arrives
 //               at once (a 26-byte frame takes 0.6 ms at 420 000 baud);
 //   engines     plain 0..1000 commands to the plant, or (qrsim --esc dshot) DShot frames to four
-//               simulated ESCs (sim_esc.hpp) that drive the plant and answer with their eRPM;
+//               simulated ESCs (sim_esc.hpp) that drive the plant and answer with their eRPM, and
+//               take special commands (the lost-model beacon) while stopped;
 //   log_area    128 KiB of RAM, the size of the IN4073 board's log flash.
 #pragma once
 
@@ -67,6 +68,9 @@ class SimBoard {
   // ---- qr::RadioBoard, qr::EscAnswerBoard ----
   bool radio_read(uint8_t& byte);
   bool esc_answers(qr::EscAnswers& answers);
+  // A DShot special command for every engine (with --esc dshot; false without, or while an engine
+  // turns): each engine's sequencer sends it in place of its next throttle frames.
+  bool esc_command(uint8_t command);
 
   // ---- the radio's end of the receiver line ----
   void radio_send(const uint8_t* bytes, size_t size) { radio_.insert(radio_.end(), bytes, bytes + size); }

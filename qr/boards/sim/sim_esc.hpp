@@ -24,7 +24,12 @@ class SimEsc {
       return engine_;
     }
     ++accepted_;
-    if (d.value == 0 || d.value >= drivers::kDshotThrottleMin) engine_ = drivers::dshot_engine(d.value);
+    if (d.value == 0 || d.value >= drivers::kDshotThrottleMin) {
+      engine_ = drivers::dshot_engine(d.value);
+    } else {
+      ++commands_;
+      if (engine_ != 0) ++commands_while_turning_;  // an ESC ignores them; the flight must not send them
+    }
     return engine_;
   }
 
@@ -39,11 +44,16 @@ class SimEsc {
   uint16_t engine() const { return engine_; }
   uint64_t rejected() const { return rejected_; }
   uint64_t accepted() const { return accepted_; }
+  // Special command frames received (values 1..47), and those that came while the motor ran.
+  uint64_t commands() const { return commands_; }
+  uint64_t commands_while_turning() const { return commands_while_turning_; }
 
  private:
   uint16_t engine_ = 0;
   uint64_t rejected_ = 0;
   uint64_t accepted_ = 0;
+  uint64_t commands_ = 0;
+  uint64_t commands_while_turning_ = 0;
 };
 
 }  // namespace qrsim

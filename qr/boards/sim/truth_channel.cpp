@@ -9,6 +9,29 @@
 #include <sim/quaternion.hpp>
 
 namespace qrsim {
+namespace {
+
+// The modes the radio's arm switch arms, by their mode switch position (qr::kRadioArmingModes).
+constexpr wire::Mode kArmedByTheRadio[] = {wire::Mode::manual, wire::Mode::yaw_control, wire::Mode::full_control};
+
+bool parse_radio_command(const std::vector<std::string>& words, TruthCommand& command, std::string& error) {
+  if (words.size() == 2 && words[1] == "off") {
+    command = TruthCommand{.kind = TruthCommand::Kind::radio_off};
+    return true;
+  }
+  if (words.size() == 3 && words[1] == "arm") {
+    for (const wire::Mode mode : kArmedByTheRadio) {
+      if (words[2] == wire::mode_key(mode)) {
+        command = TruthCommand{.kind = TruthCommand::Kind::radio_arm, .mode = mode};
+        return true;
+      }
+    }
+  }
+  error = "radio takes 'arm manual', 'arm yaw', 'arm full' or 'off'";
+  return false;
+}
+
+}  // namespace
 
 bool parse_truth_command(std::string_view line, TruthCommand& push, std::string& error) {
   const std::vector<std::string> words = words_of(line);
@@ -24,8 +47,10 @@ bool parse_truth_command(std::string_view line, TruthCommand& push, std::string&
     push = TruthCommand{.kind = TruthCommand::Kind::reset};
     return true;
   }
+  if (words[0] == "radio") return parse_radio_command(words, push, error);
   if (words[0] != "push") {
-    error = "unknown command '" + words[0].substr(0, 40) + "' (push TX TY TZ SECONDS, reset)";
+    error = "unknown command '" + words[0].substr(0, 40) +
+            "' (push TX TY TZ SECONDS, reset, radio arm MODE, radio off)";
     return false;
   }
   if (words.size() != 5) {
