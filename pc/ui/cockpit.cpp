@@ -274,7 +274,7 @@ void Cockpit::draw_height(const Console& console, int width) {
   if (!t.height) {
     put(13, 10, "-- m  climb -- m/s", kDim);
   } else if ((t.height->flags & wire::kHeightValid) == 0) {
-    put(13, 10, "-- m  (no barometer reference: calibrate)", kDim);
+    put(13, 10, "-- m  (no reference: calibrate)", kDim);  // ends before column 44
   } else {
     put(13, 10, text("%+7.2f m  climb %+5.2f m/s", t.height->height_mm / 1000.0, t.height->climb_mm_s / 1000.0));
   }
