@@ -8,46 +8,27 @@
 
 #include <common/drivers/dshot_commands.hpp>
 #include <common/messages.hpp>
-#include <qr/boards/fake/fake_board.hpp>
-#include <qr/core/flight.hpp>
-#include <qr/core/scheduler.hpp>
 
-#include "scripted_chain.hpp"
+#include "fake_flight.hpp"
 
 namespace qr {
 namespace {
 
-using fake::FakeBoard;
-using test::ScriptedChain;
-using Firmware = Flight<ScriptedChain>;
+using test::Firmware;
 
-struct BeaconSafety : ::testing::Test {
-  FakeBoard board;
-  Firmware flight;
-  Scheduler<FakeBoard, Firmware> scheduler{board, flight};
+struct BeaconSafety : test::FakeFlight<> {
   wire::Control sticks;
-  uint8_t seq = 0;
-  uint32_t elapsed_us = 0;
-  uint32_t ticked_us = 0;
   std::vector<Mode> mode_at_command;  // the flight's mode at each command the board was given
 
-  BeaconSafety() { board.sensors.battery_mv = 12000; }
-
-  template <class M>
-  void send(const M& m) {
-    const wire::FrameBytes f = wire::encode(m);
-    board.rx.insert(board.rx.end(), f.bytes, f.bytes + f.size);
-  }
   // `ms` of time; the console's control frame every 20 ms while `heartbeat`.
   void run_ms(uint32_t ms, bool heartbeat = true) {
     for (uint32_t t = 0; t < ms; ++t) {
       if (heartbeat && t % 20 == 0) send(sticks);
-      elapsed_us += 1000;
-      for (; ticked_us + kPeriodUs <= elapsed_us; ticked_us += kPeriodUs) {
-        const size_t before = board.esc_commands.size();
-        scheduler.tick();
+      size_t before = board.esc_commands.size();
+      pass_ms([&] {
         if (board.esc_commands.size() != before) mode_at_command.push_back(flight.mode());
-      }
+        before = board.esc_commands.size();
+      });
       board.tx.clear();
     }
   }

@@ -6,38 +6,16 @@
 #include <string>
 #include <vector>
 
-#include <common/messages.hpp>
-#include <qr/boards/fake/fake_board.hpp>
-#include <qr/core/flight.hpp>
-#include <qr/core/scheduler.hpp>
-
-#include "scripted_chain.hpp"
+#include "fake_flight.hpp"
 
 namespace qr {
 namespace {
 
-using fake::FakeBoard;
-using test::ScriptedChain;
-using Firmware = Flight<ScriptedChain>;
+using test::Firmware;
 
-struct FlightTest : ::testing::Test {
-  FakeBoard board;
-  Firmware flight;
-  Scheduler<FakeBoard, Firmware> scheduler{board, flight};
-  wire::FrameParser pc{wire::Listen::qr_to_pc};
-  std::vector<wire::Frame> received;
+struct FlightTest : test::FakeFlight<> {
   wire::Control sticks;
-  uint8_t seq = 0;
-  uint32_t elapsed_us = 0;  // console time
-  uint32_t ticked_us = 0;   // firmware periods run so far
 
-  FlightTest() { board.sensors.battery_mv = 12000; }
-
-  template <class M>
-  void send(const M& m) {
-    const wire::FrameBytes f = wire::encode(m);
-    board.rx.insert(board.rx.end(), f.bytes, f.bytes + f.size);
-  }
   uint8_t request_mode(Mode mode) {
     send(wire::ModeChange{++seq, mode});
     return seq;
@@ -46,20 +24,9 @@ struct FlightTest : ::testing::Test {
   void run_ms(uint32_t ms, bool heartbeat = true) {
     for (uint32_t t = 0; t < ms; ++t) {
       if (heartbeat && t % 20 == 0) send(sticks);
-      elapsed_us += 1000;
-      for (; ticked_us + kPeriodUs <= elapsed_us; ticked_us += kPeriodUs) scheduler.tick();
-      for (uint8_t b : board.tx) pc.push(b, [&](const wire::Frame& f) { received.push_back(f); });
-      board.tx.clear();
+      pass_ms();
+      receive();
     }
-  }
-  template <class M>
-  std::vector<M> got() const {
-    std::vector<M> out;
-    for (const wire::Frame& f : received) {
-      M m;
-      if (f.type == M::kType && wire::decode(f, m)) out.push_back(m);
-    }
-    return out;
   }
   std::string debug_text() const {
     std::string s;

@@ -9,46 +9,27 @@
 #include <common/drivers/erpm.hpp>
 #include <common/drivers/rc_sticks.hpp>
 #include <common/messages.hpp>
-#include <qr/boards/fake/fake_board.hpp>
-#include <qr/core/flight.hpp>
-#include <qr/core/scheduler.hpp>
 
-#include "scripted_chain.hpp"
+#include "fake_flight.hpp"
 
 namespace qr {
 namespace {
 
-using fake::FakeBoard;
-using test::ScriptedChain;
-using Firmware = Flight<ScriptedChain>;
+using test::Firmware;
 
-struct RadioFlightTest : ::testing::Test {
-  FakeBoard board;
-  Firmware flight;
-  Scheduler<FakeBoard, Firmware> scheduler{board, flight};
-  wire::FrameParser pc{wire::Listen::qr_to_pc};
-  std::vector<wire::Frame> received;
+struct RadioFlightTest : test::FakeFlight<> {
   wire::Control pc_sticks;
   drivers::CrsfChannels radio;  // what the transmitter sends; AETR, arm on channel 5, mode on 6
-  uint8_t seq = 0;
   bool radio_on = true;
   bool pc_on = true;
-  uint32_t elapsed_us = 0;  // the transmitters' time
-  uint32_t ticked_us = 0;   // firmware periods run so far
 
   RadioFlightTest() {
-    board.sensors.battery_mv = 12000;
     for (uint16_t& v : radio.value) v = drivers::kCrsfChannelMid;
     radio.value[2] = drivers::kCrsfChannelMin;  // lift low
     radio.value[4] = drivers::kCrsfChannelMin;  // arm switch off
     radio.value[5] = drivers::kCrsfChannelMin;  // mode switch low: manual
   }
 
-  template <class M>
-  void send(const M& m) {
-    const wire::FrameBytes f = wire::encode(m);
-    board.rx.insert(board.rx.end(), f.bytes, f.bytes + f.size);
-  }
   void radio_frame(const drivers::CrsfFrameBytes& f) {
     board.radio.insert(board.radio.end(), f.bytes, f.bytes + f.size);
   }
@@ -57,10 +38,8 @@ struct RadioFlightTest : ::testing::Test {
     for (uint32_t t = 0; t < ms; ++t) {
       if (radio_on && t % 7 == 0) radio_frame(drivers::encode_rc_channels(radio));
       if (pc_on && t % 20 == 0) send(pc_sticks);
-      elapsed_us += 1000;
-      for (; ticked_us + kPeriodUs <= elapsed_us; ticked_us += kPeriodUs) scheduler.tick();
-      for (uint8_t b : board.tx) pc.push(b, [&](const wire::Frame& f) { received.push_back(f); });
-      board.tx.clear();
+      pass_ms();
+      receive();
     }
   }
   NackReason set_param(wire::ParamId id, int32_t value) {
@@ -81,15 +60,6 @@ struct RadioFlightTest : ::testing::Test {
       if (it->type == wire::MessageType::ack && wire::decode(*it, a) && a.type == type) return NackReason::none;
     }
     return NackReason::unknown_mode;  // no answer at all
-  }
-  template <class M>
-  std::vector<M> got() const {
-    std::vector<M> out;
-    for (const wire::Frame& f : received) {
-      M m;
-      if (f.type == M::kType && wire::decode(f, m)) out.push_back(m);
-    }
-    return out;
   }
   void arm(bool on) { radio.value[4] = on ? drivers::kCrsfChannelMax : drivers::kCrsfChannelMin; }
   void make_radio_the_pilot() {

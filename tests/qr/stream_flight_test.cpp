@@ -14,45 +14,24 @@
 #include <common/drivers/erpm.hpp>
 #include <common/messages.hpp>
 #include <common/sample_packing.hpp>
-#include <qr/boards/fake/fake_board.hpp>
-#include <qr/core/flight.hpp>
-#include <qr/core/scheduler.hpp>
 
-#include "scripted_chain.hpp"
+#include "fake_flight.hpp"
 
 namespace qr {
 namespace {
 
-using fake::FakeBoard;
-using test::ScriptedChain;
-using Firmware = Flight<ScriptedChain>;
+using test::Firmware;
 
-struct StreamFlightTest : ::testing::Test {
-  FakeBoard board;
-  Firmware flight;
-  Scheduler<FakeBoard, Firmware> scheduler{board, flight};
-  wire::FrameParser pc{wire::Listen::qr_to_pc};
-  std::vector<wire::Frame> received;
+struct StreamFlightTest : test::FakeFlight<> {
   std::deque<uint8_t> line;  // bytes on their way at 115200 baud
   size_t line_backlog_max = 0;
   uint32_t line_credit_milli = 0;  // thousandths of a byte the line may still carry
-  uint8_t seq = 0;
-  uint32_t elapsed_us = 0;
-  uint32_t ticked_us = 0;
 
-  StreamFlightTest() { board.sensors.battery_mv = 12000; }
-
-  template <class M>
-  void send(const M& m) {
-    const wire::FrameBytes f = wire::encode(m);
-    board.rx.insert(board.rx.end(), f.bytes, f.bytes + f.size);
-  }
   // Runs `ms` with the console's control at 50 Hz; the QR's bytes reach the console at line speed.
   void run_ms(uint32_t ms) {
     for (uint32_t t = 0; t < ms; ++t) {
       if (t % 20 == 0) send(wire::Control{});
-      elapsed_us += 1000;
-      for (; ticked_us + kPeriodUs <= elapsed_us; ticked_us += kPeriodUs) scheduler.tick();
+      pass_ms();
       line.insert(line.end(), board.tx.begin(), board.tx.end());
       board.tx.clear();
       line_credit_milli += 115200 / 10;  // bytes per second = thousandths of a byte per ms
@@ -64,15 +43,6 @@ struct StreamFlightTest : ::testing::Test {
       if (line.empty()) line_credit_milli = 0;  // an idle line saves nothing up
       line_backlog_max = std::max(line_backlog_max, line.size());
     }
-  }
-  template <class M>
-  std::vector<M> got() const {
-    std::vector<M> out;
-    for (const wire::Frame& f : received) {
-      M m;
-      if (f.type == M::kType && wire::decode(f, m)) out.push_back(m);
-    }
-    return out;
   }
   wire::NackReason answer_to(uint8_t request_seq) const {
     for (const auto& a : got<wire::Ack>())
