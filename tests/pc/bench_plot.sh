@@ -12,7 +12,6 @@ set -euo pipefail
 qrterm=${1:?usage: bench_plot.sh QRTERM QRSIM [SECONDS]}
 sim=${2:?usage: bench_plot.sh QRTERM QRSIM [SECONDS]}
 seconds=${3:-10}
-command -v tmux >/dev/null || { echo "bench: tmux is not installed (scripts/bootstrap installs it)" >&2; exit 1; }
 [[ -x $qrterm && -x $sim ]] || { echo "bench: no qrterm at $qrterm or no qrsim at $sim" >&2; exit 1; }
 
 source "$(dirname "$0")/e2e_lib.sh"

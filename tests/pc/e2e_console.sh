@@ -16,7 +16,6 @@ qrterm=${1:?usage: e2e_console.sh QRTERM SIMULATOR}
 sim=${2:?usage: e2e_console.sh QRTERM SIMULATOR}
 presses=${E2E_LIFT_PRESSES:-20}
 
-command -v tmux >/dev/null || { echo "e2e: tmux is not installed (scripts/bootstrap installs it)" >&2; exit 1; }
 [[ -x $qrterm ]] || { echo "e2e: no qrterm at $qrterm" >&2; exit 1; }
 [[ -x $sim ]] || { echo "e2e: no simulator at $sim" >&2; exit 1; }
 

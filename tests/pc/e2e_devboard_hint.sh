@@ -10,7 +10,6 @@ set -euo pipefail
 
 fake=${1:?usage: e2e_devboard_hint.sh FAKE_QR}
 root=$(cd "$(dirname "$0")/../.." && pwd)
-command -v tmux >/dev/null || { echo "e2e: tmux is not installed (scripts/bootstrap installs it)" >&2; exit 1; }
 [[ -x $fake ]] || { echo "e2e: no fake QR at $fake" >&2; exit 1; }
 
 source "$(dirname "$0")/e2e_lib.sh"

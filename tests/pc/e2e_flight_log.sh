@@ -10,7 +10,6 @@ qrterm=${1:?usage: e2e_flight_log.sh QRTERM QRSIM}
 sim=${2:?usage: e2e_flight_log.sh QRTERM QRSIM}
 root=$(cd "$(dirname "$0")/../.." && pwd)
 
-command -v tmux >/dev/null || { echo "e2e: tmux is not installed (scripts/bootstrap installs it)" >&2; exit 1; }
 [[ -x $qrterm && -x $sim ]] || { echo "e2e: no qrterm at $qrterm or no qrsim at $sim" >&2; exit 1; }
 
 source "$(dirname "$0")/e2e_lib.sh"

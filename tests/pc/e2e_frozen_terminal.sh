@@ -11,7 +11,6 @@ set -euo pipefail
 qrterm=${1:?usage: e2e_frozen_terminal.sh QRTERM FAKE_QR}
 sim=${2:?usage: e2e_frozen_terminal.sh QRTERM FAKE_QR}
 
-command -v tmux >/dev/null || { echo "e2e: tmux is not installed (scripts/bootstrap installs it)" >&2; exit 1; }
 source "$(dirname "$0")/e2e_lib.sh"
 e2e_start
 tmux_pid=""

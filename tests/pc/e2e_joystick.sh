@@ -10,7 +10,6 @@ set -euo pipefail
 qrterm=${1:?usage: e2e_joystick.sh QRTERM SIMULATOR}
 sim=${2:?usage: e2e_joystick.sh QRTERM SIMULATOR}
 
-command -v tmux >/dev/null || { echo "e2e: tmux is not installed (scripts/bootstrap installs it)" >&2; exit 1; }
 source "$(dirname "$0")/e2e_lib.sh"
 e2e_start
 

@@ -2,6 +2,7 @@
 # removed at exit; screen capture, waiting for a pattern, failing with the screen and the log.
 
 e2e_start() {
+  command -v tmux >/dev/null || { echo "e2e: tmux is not installed (scripts/bootstrap installs it)" >&2; exit 1; }
   socket="qrterm-e2e-$$-$RANDOM"
   work=$(mktemp -d /tmp/qrterm-e2e.XXXXXX)
   tmux=(tmux -L "$socket")

@@ -6,7 +6,6 @@ set -euo pipefail
 
 qrterm=${1:?usage: e2e_parameters.sh QRTERM FAKE_QR}
 sim=${2:?usage: e2e_parameters.sh QRTERM FAKE_QR}
-command -v tmux >/dev/null || { echo "e2e: tmux is not installed (scripts/bootstrap installs it)" >&2; exit 1; }
 [[ -x $qrterm && -x $sim ]] || { echo "e2e: no qrterm at $qrterm or no fake QR at $sim" >&2; exit 1; }
 
 source "$(dirname "$0")/e2e_lib.sh"

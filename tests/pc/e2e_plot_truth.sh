@@ -10,7 +10,6 @@ set -euo pipefail
 
 qrterm=${1:?usage: e2e_plot_truth.sh QRTERM QRSIM}
 sim=${2:?usage: e2e_plot_truth.sh QRTERM QRSIM}
-command -v tmux >/dev/null || { echo "e2e: tmux is not installed (scripts/bootstrap installs it)" >&2; exit 1; }
 [[ -x $qrterm && -x $sim ]] || { echo "e2e: no qrterm at $qrterm or no qrsim at $sim" >&2; exit 1; }
 
 source "$(dirname "$0")/e2e_lib.sh"

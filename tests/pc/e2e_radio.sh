@@ -12,7 +12,6 @@ set -euo pipefail
 qrterm=${1:?usage: e2e_radio.sh QRTERM QRSIM}
 sim=${2:?usage: e2e_radio.sh QRTERM QRSIM}
 
-command -v tmux >/dev/null || { echo "e2e: tmux is not installed (scripts/bootstrap installs it)" >&2; exit 1; }
 [[ -x $qrterm ]] || { echo "e2e: no qrterm at $qrterm" >&2; exit 1; }
 [[ -x $sim ]] || { echo "e2e: no simulator at $sim" >&2; exit 1; }
 
