@@ -71,6 +71,17 @@ TEST(CycleStats, TheSumCarriesPastThirtyTwoBits) {
   EXPECT_EQ(stats.mean(), 0xF0000000u);
 }
 
+TEST(CycleStats, TheMeanIsTheSameBelowAndAboveThirtyTwoBits) {
+  CycleStats below;
+  for (const uint32_t c : {7u, 8u, 8u}) below.add(c);
+  EXPECT_EQ(below.sum_high, 0u);
+  EXPECT_EQ(below.mean(), 7u);  // 23 / 3, rounded down as the 64-bit division rounds
+  CycleStats above;
+  for (const uint32_t c : {0xFFFFFFF0u, 0x20u, 0x10u}) above.add(c);
+  EXPECT_EQ(above.sum_high, 1u);
+  EXPECT_EQ(above.mean(), static_cast<uint32_t>(0x100000020ull / 3));
+}
+
 TEST(CycleStats, AnExtremeRangeStaysCorrect) {
   CycleStats stats;
   Plain plain;
