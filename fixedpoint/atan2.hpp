@@ -11,6 +11,7 @@
 #pragma once
 
 #include <fixedpoint/convert.hpp>
+#include <fixedpoint/detail/divide.hpp>
 #include <fixedpoint/detail/horner.hpp>
 #include <fixedpoint/detail/raw.hpp>
 #include <fixedpoint/detail/series.hpp>
@@ -34,11 +35,14 @@ constexpr Out atan2(Q<F, R> y, Q<F, R> x) {
   const uint32_t ay = detail::magnitude<uint32_t>(static_cast<int32_t>(y.raw()));
   if (ax == 0 && ay == 0) return Out{};
 
-  // Fold into the first octant: t = small / large in [0, 1], truncated to Q<30>.
+  // Fold into the first octant: t = small / large in [0, 1], truncated to Q<30>. The dividend's
+  // high word, small >> 2, is below large, so the quotient fits 32 bits and RV32IM's 32-bit
+  // divisions make it (detail/divide.hpp), not libgcc's 64-bit one.
   const bool steep = ay > ax;
   const uint32_t small = steep ? ax : ay;
   const uint32_t large = steep ? ay : ax;
-  const Q<30> t = Q<30>::from_raw(static_cast<int32_t>((static_cast<uint64_t>(small) << 30) / large));
+  const Q<30> t =
+      Q<30>::from_raw(static_cast<int32_t>(detail::divide_below(static_cast<uint64_t>(small) << 30, large).quotient));
 
   // Unfold, on magnitudes in Q<30> as uint32: pi * 2^30 still fits 32 bits unsigned.
   constexpr uint32_t kHalfPi = static_cast<uint32_t>(Q<30>(detail::kPi / 2).raw());
