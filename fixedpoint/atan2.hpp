@@ -41,8 +41,8 @@ constexpr Out atan2(Q<F, R> y, Q<F, R> x) {
   const bool steep = ay > ax;
   const uint32_t small = steep ? ax : ay;
   const uint32_t large = steep ? ay : ax;
-  const Q<30> t =
-      Q<30>::from_raw(static_cast<int32_t>(detail::divide_below(static_cast<uint64_t>(small) << 30, large).quotient));
+  const Q<30> t = Q<30>::from_raw(
+      static_cast<int32_t>(detail::divide_below(static_cast<uint64_t>(small) << 30, large).quotient));
 
   // Unfold, on magnitudes in Q<30> as uint32: pi * 2^30 still fits 32 bits unsigned.
   constexpr uint32_t kHalfPi = static_cast<uint32_t>(Q<30>(detail::kPi / 2).raw());

@@ -6,6 +6,7 @@
 //   e     = angle - accel_angle               disagreement with the accelerometer's angle
 //   angle = angle - e / C1                    pull toward the accelerometer angle
 //   bias  = bias + e / (C2 dt)                a drifting-ahead angle means the gyro reads high
+//                                             (less while the body yaws: see update())
 //
 // Signs: with a gyro that reads high (bias > 0 in truth), the integrated angle runs ahead of the
 // accelerometer's, e > 0, and the bias estimate grows toward the truth; rate = gyro - bias then
@@ -90,10 +91,7 @@ class TiltEstimator {
   // calibration is far smaller, and the clamp keeps a broken sensor from overflowing the sum.
   static constexpr Rate kMaxBias = Rate(0.5);
 
-  void set_gains(typename N::AngleGain k1, typename N::BiasGain k2) {
-    k1_ = k1;
-    k2_ = k2;
-  }
+  void set_gain(typename N::AngleGain k1) { k1_ = k1; }
   // Starts from this angle (e.g. the accelerometer's) with no bias.
   void start(Angle angle) {
     angle_.set(angle);
@@ -109,8 +107,10 @@ class TiltEstimator {
   // gyro: the axis' body rate; coupling: what the other axes add to this angle's rate (Euler
   // kinematics, AttitudeEstimator::update), already bias-corrected; cross: what the yaw rate
   // turns into this axis' expected accelerometer angle from the other's (the body's velocity
-  // turning with it), already x dt (1 - follow).
-  void update(Rate gyro, Rate coupling, typename AngleIntegral<N>::Sum cross, Angle accel_angle, bool no_lag) {
+  // turning with it), already x dt (1 - follow). bias_gain: fs / C2 while the body holds its
+  // heading, less in a turn (AttitudeEstimator::update says why).
+  void update(Rate gyro, Rate coupling, typename AngleIntegral<N>::Sum cross, Angle accel_angle, bool no_lag,
+              typename N::BiasGain bias_gain) {
     rate_ = gyro - bias_;
     const auto predict = fx::mul_wide(rate_, kDt) + fx::mul_wide(coupling, kDt);
     // The angle the accelerometer should show: the predicted tilt seen through the drag's lag.
@@ -121,7 +121,7 @@ class TiltEstimator {
     const Angle e = wrap_angle(expected_.peek(expect) - accel_angle);
     angle_.add(predict - fx::mul_wide(e, k1_));  // predict and correct, wrapped once
     expected_.add(expect);
-    bias_sum_ += fx::mul_wide(e, k2_);
+    bias_sum_ += fx::mul_wide(e, bias_gain);
     bias_ = N::template convert_sat<Rate>(bias_sum_);
     if (kMaxBias < bias_) {
       bias_ = kMaxBias;
@@ -142,7 +142,6 @@ class TiltEstimator {
   static constexpr typename N::Scale kDt = typename N::Scale(1.0 / SampleHz);
 
   typename N::AngleGain k1_{};
-  typename N::BiasGain k2_{};
   static constexpr typename N::AngleGain kNoLag = typename N::AngleGain(1.0);
   typename N::AngleGain follow_ = kNoLag;  // dt / lag, at most 1
   AngleIntegral<N> angle_;
@@ -167,9 +166,11 @@ class AttitudeEstimator {
   // c1, c2 in samples (parameter table). Two divisions, at parameter changes only.
   void set_divisors(int32_t c1, int32_t c2) {
     const auto k1 = N::template ratio<typename N::AngleGain>(1, c1);
-    const auto k2 = N::template ratio<typename N::BiasGain>(static_cast<int32_t>(SampleHz), c2);
-    roll_.set_gains(k1, k2);
-    pitch_.set_gains(k1, k2);
+    roll_.set_gain(k1);
+    pitch_.set_gain(k1);
+    k2_ = N::template ratio<typename N::BiasGain>(static_cast<int32_t>(SampleHz), c2);
+    c1_dt_ = N::template ratio<Seconds>(c1, static_cast<int32_t>(SampleHz));
+    spin_limit_ = N::template ratio<Rate>(static_cast<int32_t>(SampleHz), c1);  // a radian in C1 samples
   }
 
   // lag_ms: the time constant with which the accelerometer's angle follows a change of tilt in
@@ -231,8 +232,25 @@ class AttitudeEstimator {
     const auto turn = on_ground ? typename N::AngleGain{} : product<typename N::AngleGain>(yaw_rate_, cross_dt_);
     const auto roll_cross = fx::mul_wide(pitch_.expected(), turn);
     const auto pitch_cross = -fx::mul_wide(roll_.expected(), turn);
-    roll_.update(rate[0], roll_coupling, roll_cross, roll_from_accel_, on_ground);
-    pitch_.update(rate[1], pitch_coupling, pitch_cross, pitch_from_accel_, on_ground);
+    // The bias loop adds each axis' error into that axis' bias: right while the body holds its
+    // heading. A yaw turn carries a tilt error from one axis into the other (the kinematics
+    // above), so the loop integrates an error that turns under it, and once the body turns a
+    // sizeable angle within the correction's time constant (C1 samples) it integrates the error
+    // late by a quarter turn and more: it feeds the error instead of taking it out, and a slow
+    // orbit drifts the estimate off the truth by degrees within minutes (sim/scenarios/
+    // long-turn.txt, docs/signal-chain.md). So the bias learns at its full gain only while the
+    // body does not turn, less the more it turns in C1 samples, and not at all beyond a radian
+    // (0.125 rad/s at the default C1 of 8000): a bias does not change within a turn, it is learnt
+    // before and after. ArduPilot's DCM stops its gyro-drift integrator the same way above a spin
+    // rate of 20 deg/s (SPIN_RATE_LIMIT in AP_AHRS_DCM.cpp).
+    const Rate spin = magnitude(yaw_rate_);
+    const auto bias_gain = spin < spin_limit_
+                               ? product<typename N::BiasGain>(
+                                     k2_, max_of(kFullTurn - product<typename N::AngleGain>(spin, c1_dt_),
+                                                 typename N::AngleGain{}))
+                               : typename N::BiasGain{};
+    roll_.update(rate[0], roll_coupling, roll_cross, roll_from_accel_, on_ground, bias_gain);
+    pitch_.update(rate[1], pitch_coupling, pitch_cross, pitch_from_accel_, on_ground, bias_gain);
     yaw_.add(fx::mul_wide(yaw_rate_, kDt));
   }
 
@@ -300,7 +318,13 @@ class AttitudeEstimator {
                         kTwelfth = Unit(1.0 / 12), kTwentieth = Unit(1.0 / 20), kTwoFifths = Unit(2.0 / 5),
                         kFiveTwelfths = Unit(5.0 / 12);
 
+  using Seconds = typename N::template Fixed<22>;  // C1 dt: up to 131 s (C1 65535 at 500 Hz)
+  static constexpr typename N::AngleGain kFullTurn = typename N::AngleGain(1.0);  // rad in C1 samples
+
   TiltEstimator<N, SampleHz> roll_, pitch_;
+  typename N::BiasGain k2_{};  // fs / C2
+  Seconds c1_dt_{};            // the correction's time constant
+  Rate spin_limit_{};          // 1 / c1_dt_: the yaw rate from which the bias learns nothing
   AngleIntegral<N> yaw_;
   Rate yaw_rate_{};
   Angle roll_from_accel_{};

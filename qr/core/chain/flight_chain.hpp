@@ -95,6 +95,11 @@ class FlightChain {
   // restarts the estimator from the accelerometer's angles; until the next run finishes, the
   // previous offsets stay in use.
   bool calibrate() {
+    // At a run's first sample the filters start over: they settle on the next one (the vehicle is
+    // at rest), so what they hold when the run ends is made of the run's own samples, whatever
+    // ran before it. A replay of a recording that starts with the run (docs/replay.md) then
+    // computes what the flight did, bit for bit. The offsets are sums of raw samples: not moved.
+    if (calibration_.samples() == 0) filters_.restart();
     const bool was_done = calibration_.samples() >= chain::kCalibrationSamples;
     height_.add_calibration(sample_.pressure_pa);
     const bool done = calibration_.add(sample_);

@@ -51,6 +51,9 @@ class SensorFilters {
     started_ = true;
   }
 
+  // The next sample settles the filters again, as the first one did.
+  void restart() { started_ = false; }
+
   Rate rate(int axis) const { return gyro_[axis].output(); }
   Accel accel(int axis) const { return accel_[axis].output(); }
 
