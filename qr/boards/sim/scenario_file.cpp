@@ -256,8 +256,17 @@ class Reader {
       } else {
         ok = fail("link is 'on' or 'off'");
       }
+    } else if (action == "console") {
+      e.action = Action::console;
+      if (w.size() == 4 && (w[3] == "full" || w[3] == "normal")) {
+        e.value = w[3] == "full" ? 1 : 0;
+        ok = true;
+      } else {
+        ok = fail("console is 'full' (the line's full rate) or 'normal'");
+      }
     } else {
-      return fail("unknown action '" + action + "' (roll, pitch, yaw, lift, mode, param, torque, force, wind, link)");
+      return fail("unknown action '" + action +
+                  "' (roll, pitch, yaw, lift, mode, param, torque, force, wind, link, console)");
     }
     if (ok) out_.events.push_back(e);
     return ok;
