@@ -53,8 +53,8 @@ class FullLineConsole {
  private:
   struct Request {
     uint8_t seq;
-    uint64_t reached_qr_ns;     // its last byte through
-    uint64_t answered_ns = 0;   // the answer's last byte at the console; 0: none yet
+    uint64_t reached_qr_ns;    // its last byte through
+    uint64_t answered_ns = 0;  // the answer's last byte at the console; 0: none yet
   };
   struct LinkReport {
     wire::TelemetryLink counters;
