@@ -58,6 +58,7 @@ void FullLineConsole::step() {
   const uint64_t now = now_ns();
   if (now >= next_request_ns_) {
     next_request_ns_ += kRequestEveryNs;
+    if (next_request_ns_ <= now) next_request_ns_ = now + kRequestEveryNs;  // after a silence: one, not a burst
     seq_ = static_cast<uint8_t>(seq_ == kLastSeq ? 1 : seq_ + 1);
     send(wire::encode(wire::ModeChange{seq_, pilot_.view().mode}));
     requests_.push_back({seq_, board_.to_qr_busy_until_ns()});
