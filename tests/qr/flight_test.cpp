@@ -90,6 +90,23 @@ TEST_F(FlightTest, ModeChangeIsAckedWithItsSequenceNumberAndApplied) {
   EXPECT_NE(debug_text().find("mode: manual\n"), std::string::npos);
 }
 
+// The tick that reads a request's last byte answers it, and with the line idle its bytes go out
+// in that tick (docs/devboard.md, "The ground line": every request answered within two control
+// periods; GroundLine.* measures it at the full line rate).
+TEST_F(FlightTest, ARequestIsAnsweredInTheTickThatReadsIt) {
+  run_ms(10);  // the first telemetry period has gone out: the line is idle
+  for (const Mode mode : {Mode::safe, Mode::manual, Mode::safe}) {
+    received.clear();
+    const uint8_t s = request_mode(mode);
+    pass_ms();  // one period: the tick that reads the request
+    receive();
+    const auto acks = got<wire::Ack>();
+    ASSERT_EQ(acks.size(), 1u) << "answered in the tick that read it, asking for " << wire::mode_key(mode);
+    EXPECT_EQ(acks[0].seq, s);
+    run_ms(6);  // a mode announcement, if any, goes out
+  }
+}
+
 TEST_F(FlightTest, RefusedModeChangeIsNackedWithTheSafetyReason) {
   sticks.lift = 100;
   run_ms(30);
