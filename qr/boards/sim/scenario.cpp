@@ -143,6 +143,11 @@ void apply(const Event& e, Hands& hands, Pilot& pilot, FullLineConsole* console,
     case Action::console:
       if (console != nullptr) console->set_full(e.value != 0);
       break;
+    case Action::log_start: pilot.request(wire::LogStart{}); break;
+    case Action::log_stop: pilot.request(wire::LogStop{}); break;
+    case Action::download:
+      pilot.request(wire::LogDownload{0, e.value == 0 ? wire::LogKind::sensor : wire::LogKind::telemetry, 0, 0});
+      break;
   }
 }
 
