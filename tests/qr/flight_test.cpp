@@ -107,6 +107,29 @@ TEST_F(FlightTest, ARequestIsAnsweredInTheTickThatReadsIt) {
   }
 }
 
+// An answer waits for nothing the QR queued before it but a frame already on its way (its
+// transmit queue, docs/devboard.md "The ground line"): with the line held up while telemetry
+// piles up, the ack comes out first, or second behind the frame it found part-way out.
+TEST_F(FlightTest, AnAnswerGoesOutAheadOfTheTelemetryQueuedBeforeIt) {
+  run_ms(100);
+  board.tx_capacity = 0;  // the line takes nothing: three telemetry periods pile up in the QR
+  run_ms(60);
+  received.clear();
+  const uint8_t s = request_mode(Mode::safe);
+  run_ms(1);
+  board.tx_capacity = 1u << 20;
+  run_ms(20);
+  size_t at = received.size();
+  for (size_t i = 0; i < received.size() && at == received.size(); ++i) {
+    wire::Ack ack;
+    if (wire::decode(received[i], ack) && ack.seq == s) at = i;
+  }
+  ASSERT_LT(at, received.size()) << "the request was answered";
+  EXPECT_LE(at, 1u) << "frames out before the ack";
+  EXPECT_GE(got<wire::TelemetryAttitude>().size(), 3u) << "the telemetry held up came out after it";
+  EXPECT_EQ(flight.tx_dropped_frames(), 0u);
+}
+
 TEST_F(FlightTest, RefusedModeChangeIsNackedWithTheSafetyReason) {
   sticks.lift = 100;
   run_ms(30);
