@@ -9,9 +9,9 @@
 //     reached the QR; the QR's telemetry_link counters against them;
 //   - each of its requests, from its last byte reaching the QR to the answer's last byte reaching
 //     the console, against the QR's promise: the tick after the request's last byte arrived reads
-//     it and answers (within two control periods, the second for a tick whose bytes go out on the
-//     next), and the answer then waits at most for the QR's 32-byte transmit buffer ahead of it
-//     and its own 5 bytes on the line.
+//     it and answers (within two control periods, the second for the rest of a frame already on
+//     its way), and the answer then waits at most for the QR's 32-byte transmit buffer ahead of
+//     it and its own 5 bytes on the line.
 // The figures are `line_*` (docs/simulator.md section 6.5).
 #pragma once
 
