@@ -5,6 +5,7 @@
 #include <common/frame.hpp>
 #include <qr/boards/sim/scoring.hpp>
 #include <qr/core/rate.hpp>
+#include <qr/core/transmit_queue.hpp>
 
 namespace qrsim {
 namespace {
@@ -15,11 +16,10 @@ constexpr uint64_t kPeriodNs = uint64_t{qr::kPeriodUs} * 1000;
 constexpr uint8_t kLastSeq = 0x3F;
 // A telemetry_link report says what the QR had counted at the tick that composed it: no later
 // than when the report's last byte was queued, and no earlier than everything the QR can hold
-// ahead of it takes to drain (qr::Flight's 256-byte transmit ring and the board's 32-byte
+// ahead of it takes to drain (the firmware's 256-byte transmit queue and the board's 32-byte
 // buffer) and a tick. A report with no frame arriving in that span before its last byte was
 // queued (the line quiet, `link off`) tells exactly how many frames the QR should have counted.
-constexpr uint64_t kQrTransmitRing = 256;
-constexpr uint64_t kReportLagNs = (kQrTransmitRing + SimBoard::kTransmitBuffer) * kByteTimeNs + kPeriodNs;
+constexpr uint64_t kReportLagNs = (qr::TransmitQueue::kBytes + SimBoard::kTransmitBuffer) * kByteTimeNs + kPeriodNs;
 
 double ms(uint64_t ns) { return static_cast<double>(ns) * 1e-6; }
 
