@@ -33,6 +33,7 @@
 #include <qr/core/scheduler.hpp>
 #include <qr/core/signal_chain.hpp>
 #include <qr/core/task.hpp>
+#include <qr/core/transmit_queue.hpp>
 
 namespace qr {
 
@@ -99,7 +100,7 @@ class Flight {
     return lost_model_beacon(safety_.mode(), engines_, tick_us_, situation().last_frame_us, timeout_us, kPeriodUs);
   }
   bool tx_peek(uint8_t& byte) const { return tx_.peek(byte); }
-  void tx_pop() { tx_.drop(); }
+  void tx_pop() { tx_.pop(); }
   EngineCommand engines() const { return engines_; }
   uint8_t leds() const { return led_pattern(safety_.mode(), safety_.battery_warning()); }
   // Stops once the exit has been carried out and its last bytes are out.
@@ -211,7 +212,11 @@ class Flight {
     }
   }
   void send(const wire::FrameBytes& frame) {
-    if (!tx_.push(frame.bytes, frame.size)) ++tx_dropped_;
+    if (!tx_.push(frame)) ++tx_dropped_;
+  }
+  // An ack or nack: ahead of everything queued that is not yet on its way (transmit_queue.hpp).
+  void send_answer(const wire::FrameBytes& frame) {
+    if (!tx_.push_answer(frame)) ++tx_dropped_;
   }
   void say(const char* text);
   Situation situation() const {
@@ -234,8 +239,6 @@ class Flight {
   // Receive side: 64 bytes hold more than two ticks of a full-speed line.
   wire::ByteRing<64> rx_;
   uint32_t rx_overruns_ = 0;
-  // Send side: a telemetry period's frames plus replies, with room to spare.
-  wire::ByteRing<256> tx_;
   wire::FrameParser parser_{wire::Listen::pc_to_qr};
   // The radio's line: 64 bytes hold more than a tick's worth at 420 000 baud.
   wire::ByteRing<64> radio_rx_;
@@ -272,6 +275,10 @@ class Flight {
   // Parameter reports still owed after a param_get: table rows [report_next_, report_end_).
   uint8_t report_next_ = 0;
   uint8_t report_end_ = 0;
+
+  // Send side: a telemetry period's frames plus replies, answers first. Last: the members the
+  // tasks use stay within a load's reach of the object's start.
+  TransmitQueue tx_;
 };
 
 template <SignalChain Chain>

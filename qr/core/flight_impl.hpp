@@ -58,7 +58,7 @@ void Flight<Chain>::on_frame(const wire::Frame& frame) {
   const wire::Admission admission = dedup_.admit(frame, uptime_ms_);
   if (admission.duplicate) {
     last_frame_us_ = tick_us_;  // the resend decoded when it was first applied
-    send(wire::reply_frame(frame.type, admission.seq, admission.previous));
+    send_answer(wire::reply_frame(frame.type, admission.seq, admission.previous));
     return;
   }
   FlightRequests<Flight> handler{*this};
@@ -73,7 +73,7 @@ void Flight<Chain>::on_frame(const wire::Frame& frame) {
                             : result == wire::DispatchResult::invalid_payload ? NackReason::bad_value
                                                                               : NackReason::not_supported;
   dedup_.record(frame, answer, uptime_ms_);
-  send(wire::reply_frame(frame.type, admission.seq, answer));
+  send_answer(wire::reply_frame(frame.type, admission.seq, answer));
   if (handler.report.id != 0) send(wire::encode(handler.report));
 }
 

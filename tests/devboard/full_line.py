@@ -18,7 +18,9 @@ It prints the figures as one JSON line, among them how late the acks came, in wa
 meanwhile (ack_board_ms_*, from its 50 Hz telemetry), against the QR's promise of two control
 periods plus the ack's own time on the line and behind the QR's 32-byte transmit buffer
 (ack_ms_allowed). Those are reported, not asserted: on a shared host QEMU is held up for tens of
-milliseconds at a time, and no clock the test can read separates that from the QR's answer.
+milliseconds at a time, and no clock the test can read separates that from the QR's answer. The
+same bound is asserted in simulated time by GroundLine.RequestsAnsweredWithinTwoPeriods.*
+(tests/sim/ground-line.txt).
 usage: full_line.py (--devboard SCRIPT | --qrsim QRSIM) --elf QR_ELF [--seconds 10]
 """
 import argparse

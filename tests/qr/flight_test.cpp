@@ -90,6 +90,46 @@ TEST_F(FlightTest, ModeChangeIsAckedWithItsSequenceNumberAndApplied) {
   EXPECT_NE(debug_text().find("mode: manual\n"), std::string::npos);
 }
 
+// The tick that reads a request's last byte answers it, and with the line idle its bytes go out
+// in that tick (docs/devboard.md, "The ground line": every request answered within two control
+// periods; GroundLine.* measures it at the full line rate).
+TEST_F(FlightTest, ARequestIsAnsweredInTheTickThatReadsIt) {
+  run_ms(10);  // the first telemetry period has gone out: the line is idle
+  for (const Mode mode : {Mode::safe, Mode::manual, Mode::safe}) {
+    received.clear();
+    const uint8_t s = request_mode(mode);
+    run_ms(qr::kPeriodUs / 1000);  // one period (1 ms at 1 kHz, 2 at 500 Hz): the tick that reads it
+    receive();
+    const auto acks = got<wire::Ack>();
+    ASSERT_EQ(acks.size(), 1u) << "answered in the tick that read it, asking for " << wire::mode_key(mode);
+    EXPECT_EQ(acks[0].seq, s);
+    run_ms(6);  // a mode announcement, if any, goes out
+  }
+}
+
+// An answer waits for nothing the QR queued before it but a frame already on its way (its
+// transmit queue, docs/devboard.md "The ground line"): with the line held up while telemetry
+// piles up, the ack comes out first, or second behind the frame it found part-way out.
+TEST_F(FlightTest, AnAnswerGoesOutAheadOfTheTelemetryQueuedBeforeIt) {
+  run_ms(100);
+  board.tx_capacity = 0;  // the line takes nothing: three telemetry periods pile up in the QR
+  run_ms(60);
+  received.clear();
+  const uint8_t s = request_mode(Mode::safe);
+  run_ms(1);
+  board.tx_capacity = 1u << 20;
+  run_ms(20);
+  size_t at = received.size();
+  for (size_t i = 0; i < received.size() && at == received.size(); ++i) {
+    wire::Ack ack;
+    if (wire::decode(received[i], ack) && ack.seq == s) at = i;
+  }
+  ASSERT_LT(at, received.size()) << "the request was answered";
+  EXPECT_LE(at, 1u) << "frames out before the ack";
+  EXPECT_GE(got<wire::TelemetryAttitude>().size(), 3u) << "the telemetry held up came out after it";
+  EXPECT_EQ(flight.tx_dropped_frames(), 0u);
+}
+
 TEST_F(FlightTest, RefusedModeChangeIsNackedWithTheSafetyReason) {
   sticks.lift = 100;
   run_ms(30);

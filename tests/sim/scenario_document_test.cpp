@@ -224,13 +224,13 @@ TEST(ScenarioDocument, TheExampleReads) {
 }
 
 // A flight prints exactly the figures of the table (those it measures in every flight, and the
-// step, yaw and push figures when the scenario has those events), in the table's order.
+// step, yaw, push and line figures when the scenario has those events), in the table's order.
 TEST(ScenarioDocument, AFlightPrintsTheTablesFiguresInOrder) {
   qrsim::ScenarioScript script;
   std::string error;
   ASSERT_TRUE(
       qrsim::parse_scenario("seconds: 2.5\nat 0 roll 5\nat 0 yaw 0.5\nat 0 torque 0.01 0 0 for 0.01\n"
-                            "at 2 roll 0\nband final_mode == full\n",
+                            "at 1 console full\nat 2 roll 0\nband final_mode == full\n",
                             "all-figures", "all-figures", script, error))
       << error;
   const qrsim::ScenarioResult r = qrsim::run_scenario(script, {});

@@ -52,6 +52,11 @@ TEST(ScenarioFile, ReadsSettingsEventsAndBands) {
       "at 6 wind 3 0 0\n"
       "at 7 link off\n"
       "at 8 link on\n"
+      "at 9 console full\n"
+      "at 10 console normal\n"
+      "at 10 log start\n"
+      "at 11 log stop\n"
+      "at 11 log download telemetry\n"
       "band rise_s < 0.3\n"
       "band overshoot_pct <= 8\n"
       "band final_mode == safe\n");
@@ -70,7 +75,7 @@ TEST(ScenarioFile, ReadsSettingsEventsAndBands) {
   ASSERT_EQ(s.parameters.size(), 1u);
   EXPECT_EQ(s.parameters[0].first, wire::ParamId::yaw_p);
   EXPECT_EQ(s.known_failure, "not yet");
-  ASSERT_EQ(s.events.size(), 13u);
+  ASSERT_EQ(s.events.size(), 18u);
   EXPECT_EQ(s.events[0].action, qrsim::Action::roll);
   EXPECT_EQ(s.events[0].value, 20);
   EXPECT_EQ(s.events[0].line, 14);
@@ -91,6 +96,14 @@ TEST(ScenarioFile, ReadsSettingsEventsAndBands) {
   EXPECT_EQ(s.events[10].vector.x, 3);
   EXPECT_EQ(s.events[11].value, 0);
   EXPECT_EQ(s.events[12].value, 1);
+  EXPECT_EQ(s.events[13].action, qrsim::Action::console);
+  EXPECT_EQ(s.events[13].value, 1);
+  EXPECT_EQ(s.events[14].action, qrsim::Action::console);
+  EXPECT_EQ(s.events[14].value, 0);
+  EXPECT_EQ(s.events[15].action, qrsim::Action::log_start);
+  EXPECT_EQ(s.events[16].action, qrsim::Action::log_stop);
+  EXPECT_EQ(s.events[17].action, qrsim::Action::download);
+  EXPECT_EQ(s.events[17].value, 1);
   ASSERT_EQ(s.bands.size(), 3u);
   EXPECT_EQ(s.bands[1].compare, qrsim::Compare::at_most);
   EXPECT_EQ(s.bands[2].limit, static_cast<double>(wire::Mode::safe));
@@ -154,6 +167,8 @@ const Mistake kMistakes[] = {
     {"seconds: 3\nat 0 wind 60 0 0\n", "mine.txt:2: ", "wind is beyond +-50"},
     {"seconds: 3\nat 0 wind 1 1\n", "mine.txt:2: ", "wind needs N E D"},
     {"seconds: 3\nat 0 link maybe\n", "mine.txt:2: ", "link is 'on' or 'off'"},
+    {"seconds: 3\nat 0 console fast\n", "mine.txt:2: ", "console is 'full' (the line's full rate) or 'normal'"},
+    {"seconds: 3\nat 0 log download flight\n", "mine.txt:2: ", "log is 'start', 'stop' or 'download sensor|telemetry'"},
     {"seconds: 3\nat 0 lift up\n", "mine.txt:2: ", "bad number 'up'"},
     {"seconds: 3\nat 0 lift height\n", "mine.txt:2: ", "bad number 'height'"},
     {"seconds: 3\nat 0 lift 5\n", "mine.txt:2: ", "lift share must be"},

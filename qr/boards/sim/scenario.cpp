@@ -14,6 +14,7 @@
 #include <qr/boards/sim/devboard_qr.hpp>
 #include <qr/boards/sim/flight_record.hpp>
 #include <qr/boards/sim/flying_qr.hpp>
+#include <qr/boards/sim/full_line_console.hpp>
 #include <qr/boards/sim/pilot.hpp>
 #include <qr/boards/sim/scenario_score.hpp>
 #include <qr/host/replay.hpp>
@@ -106,7 +107,7 @@ void apply_pushes(const ScenarioScript& script, double since, sim::Quadrotor& pl
   plant.set_disturbance(torque, force);
 }
 
-void apply(const Event& e, Hands& hands, Pilot& pilot, sim::Quadrotor& plant) {
+void apply(const Event& e, Hands& hands, Pilot& pilot, FullLineConsole* console, sim::Quadrotor& plant) {
   switch (e.action) {
     case Action::roll: hands.roll_deg = e.value; break;
     case Action::pitch: hands.pitch_deg = e.value; break;
@@ -135,7 +136,18 @@ void apply(const Event& e, Hands& hands, Pilot& pilot, sim::Quadrotor& plant) {
     case Action::torque:
     case Action::force: break;  // apply_pushes, every tick while they last
     case Action::wind: plant.set_wind(e.vector); break;
-    case Action::link: pilot.go_silent(e.value == 0); break;
+    case Action::link:
+      pilot.go_silent(e.value == 0);
+      if (console != nullptr) console->go_silent(e.value == 0);
+      break;
+    case Action::console:
+      if (console != nullptr) console->set_full(e.value != 0);
+      break;
+    case Action::log_start: pilot.request(wire::LogStart{}); break;
+    case Action::log_stop: pilot.request(wire::LogStop{}); break;
+    case Action::download:
+      pilot.request(wire::LogDownload{0, e.value == 0 ? wire::LogKind::sensor : wire::LogKind::telemetry, 0, 0});
+      break;
   }
 }
 
@@ -294,6 +306,12 @@ ScenarioResult run_scenario(const ScenarioScript& script, const RunOptions& opti
   if (options.dshot) qr->board().use_dshot(static_cast<uint8_t>(qr->parameters().get(wire::ParamId::motor_poles) / 2));
   sim::Quadrotor& plant = qr->world().plant();
   Pilot pilot(qr->board());
+  // Only a script that asks for it pays for the console's watch over every byte of the line.
+  std::unique_ptr<FullLineConsole> console;
+  for (const Event& e : script.events) {
+    if (e.action == Action::console && console == nullptr)
+      console = std::make_unique<FullLineConsole>(qr->board(), pilot);
+  }
 
   Phase phase = Phase::power_up;
   double phase_start = 0;
@@ -379,7 +397,7 @@ ScenarioResult run_scenario(const ScenarioScript& script, const RunOptions& opti
     if (phase == Phase::manoeuvre) {
       const double since = t - rec.t0;
       while (next_event < script.events.size() && script.events[next_event].at_s <= since + 1e-9) {
-        apply(script.events[next_event++], hands, pilot, plant);
+        apply(script.events[next_event++], hands, pilot, console.get(), plant);
       }
       apply_pushes(script, since, plant);
       pilot.set_sticks(hands.sticks(plant, qr->parameters()));
@@ -391,6 +409,7 @@ ScenarioResult run_scenario(const ScenarioScript& script, const RunOptions& opti
       break;
     }
     pilot.step();
+    if (console != nullptr) console->step();
 
     if (rec.t0 >= 0) record_tick(rec, t, mode, *qr, idle, airborne, last_down_speed);
     if (trace != nullptr) write_trace_line(trace, t, mode, *qr);
@@ -465,6 +484,7 @@ ScenarioResult run_scenario(const ScenarioScript& script, const RunOptions& opti
   f.push_back({"speed_m_s_end", sim::norm(plant.state().velocity)});
   f.push_back({"requests_given_up", static_cast<double>(pilot.view().requests_given_up)});
   f.push_back({"nacks", static_cast<double>(pilot.view().nacks)});
+  if (console != nullptr) console->add_figures(f);
   if (const auto* devboard = dynamic_cast<const DevboardQr*>(qr.get())) add_instruction_figures(*devboard, f);
   if (options.dshot) {
     // The ESCs' side (frames taken, frames dropped for their check) and the front engine's speed

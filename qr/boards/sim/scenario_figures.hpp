@@ -76,6 +76,19 @@ inline constexpr FigureSpec kFigureTable[] = {
     {"speed_m_s_end", "speed at the end"},
     {"requests_given_up", "pilot requests never answered"},
     {"nacks", "pilot requests refused"},
+    // With a console event (full_line_console.hpp); null without one.
+    {"line_full_s", "seconds the console sent at the line's full rate"},
+    {"line_idle_ms", "time the line towards the QR stood idle while the console sent at the full rate"},
+    {"line_frames_sent", "frames that went up the line whole, the pilot's and the console's"},
+    {"line_frames_uncounted",
+     "frames sent that the QR's telemetry_link did not count, at its last report composed while none arrived"},
+    {"line_rx_faults", "the QR's last telemetry_link: check failures, unknown types, bytes skipped and overruns"},
+    {"line_requests", "the console's requests at the full rate: a mode_change to the mode shown, every 100 ms"},
+    {"line_requests_unanswered", "those with no answer by the end, though due by line_answer_bound_ms"},
+    {"line_answer_ms_median", "from a request's last byte at the QR to its answer's last byte at the console"},
+    {"line_answer_ms_max", "the latest answer, measured the same way"},
+    {"line_answer_bound_ms", "two control periods plus the QR's 32-byte transmit buffer and the ack's 5 bytes"},
+    {"line_answers_late", "answers later than line_answer_bound_ms"},
 };
 
 constexpr bool is_figure(std::string_view name) {

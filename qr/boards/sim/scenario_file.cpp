@@ -256,8 +256,31 @@ class Reader {
       } else {
         ok = fail("link is 'on' or 'off'");
       }
+    } else if (action == "console") {
+      e.action = Action::console;
+      if (w.size() == 4 && (w[3] == "full" || w[3] == "normal")) {
+        e.value = w[3] == "full" ? 1 : 0;
+        ok = true;
+      } else {
+        ok = fail("console is 'full' (the line's full rate) or 'normal'");
+      }
+    } else if (action == "log") {
+      if (w.size() == 4 && w[3] == "start") {
+        e.action = Action::log_start;
+        ok = true;
+      } else if (w.size() == 4 && w[3] == "stop") {
+        e.action = Action::log_stop;
+        ok = true;
+      } else if (w.size() == 5 && w[3] == "download" && (w[4] == "sensor" || w[4] == "telemetry")) {
+        e.action = Action::download;
+        e.value = w[4] == "sensor" ? 0 : 1;
+        ok = true;
+      } else {
+        ok = fail("log is 'start', 'stop' or 'download sensor|telemetry'");
+      }
     } else {
-      return fail("unknown action '" + action + "' (roll, pitch, yaw, lift, mode, param, torque, force, wind, link)");
+      return fail("unknown action '" + action +
+                  "' (roll, pitch, yaw, lift, mode, param, torque, force, wind, link, console, log)");
     }
     if (ok) out_.events.push_back(e);
     return ok;

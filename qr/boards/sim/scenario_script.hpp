@@ -49,6 +49,10 @@ enum class Action : uint8_t {
   force,        // vector: N in world axes (north, east, down), for duration_s
   wind,         // vector: air velocity in world axes, m/s, held until changed
   link,         // value 1: the pilot's line is live, 0: silent
+  console,      // value 1: the console sends at the line's full rate (full_line_console.hpp), 0: as usual
+  log_start,    // the pilot starts both logs
+  log_stop,     // the pilot stops them
+  download,     // value 0: the pilot downloads the whole sensor log, 1: the telemetry log
 };
 
 struct Event {

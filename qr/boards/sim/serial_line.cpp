@@ -18,6 +18,8 @@ bool SerialLine::send(uint8_t byte, uint64_t now_ns) {
 bool SerialLine::receive(uint64_t now_ns, uint8_t& byte) {
   if (bytes_.empty() || bytes_.front().arrives_ns > now_ns) return false;
   byte = bytes_.front().value;
+  taken_arrived_ns_ = bytes_.front().arrives_ns;
+  taken_sent_ns_ = bytes_.front().sent_ns;
   bytes_.pop_front();
   return true;
 }

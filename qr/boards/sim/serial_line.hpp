@@ -28,6 +28,12 @@ class SerialLine {
   bool receive(uint64_t now_ns, uint8_t& byte);
   // When the byte receive() would give next was queued by the sender (to time-stamp frames).
   bool next_sent_at(uint64_t& sent_ns) const;
+  // When the byte receive() gave last had fully arrived, and when it was queued: a frame's times
+  // to the byte, though the receiver takes bytes only once a control period.
+  uint64_t last_taken_arrived_ns() const { return taken_arrived_ns_; }
+  uint64_t last_taken_sent_ns() const { return taken_sent_ns_; }
+  // When the byte send() queued last will have fully arrived (0 before any).
+  uint64_t busy_until_ns() const { return line_free_ns_; }
 
   size_t in_flight(uint64_t now_ns) const;       // queued, not yet arrived
   bool empty() const { return bytes_.empty(); }  // nothing queued or waiting to be taken
@@ -45,6 +51,8 @@ class SerialLine {
   uint64_t line_free_ns_ = 0;  // when the last queued byte is through
   uint64_t bytes_sent_ = 0;
   uint64_t bytes_refused_ = 0;
+  uint64_t taken_arrived_ns_ = 0;
+  uint64_t taken_sent_ns_ = 0;
 };
 
 }  // namespace qrsim

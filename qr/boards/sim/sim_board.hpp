@@ -94,6 +94,11 @@ class SimBoard {
   bool pc_bytes_pending() const { return !to_pc_.empty(); }
   // When the QR queued the byte pc_receive() gives next (a frame's start byte: its tick).
   bool pc_next_sent_at_us(uint64_t& us) const;
+  // The byte pc_receive() gave last: when its stop bit reached the PC, when the QR queued it (ns).
+  uint64_t pc_last_arrived_ns() const { return to_pc_.last_taken_arrived_ns(); }
+  uint64_t pc_last_sent_ns() const { return to_pc_.last_taken_sent_ns(); }
+  // When the byte pc_send() queued last reaches the QR (ns), and when the line towards it is idle.
+  uint64_t to_qr_busy_until_ns() const { return to_qr_.busy_until_ns(); }
 
   // Real time: from now on the kick count follows the wall clock (serve mode).
   void follow_wall_clock();
