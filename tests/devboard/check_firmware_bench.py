@@ -29,6 +29,9 @@ def main():
     drivers = [o for o in objects[:-1] if "drivers" in o]
     if len(drivers) != 1 or any(drivers[0].get(k, 0) <= 0 for k in ("dshot4_instr_mean", "crsf_rc_instr_mean")):
         sys.exit("no drivers line with dshot4_instr_mean and crsf_rc_instr_mean")
+    floors = [o for o in objects[:-1] if "scheduler" in o]
+    if len(floors) != 1 or any(floors[0].get(k, 0) <= 0 for k in ("bare_tick_instr_mean", "row_instr_mean")):
+        sys.exit("no scheduler line with bare_tick_instr_mean and row_instr_mean")
     for mode in MODES:
         o = seen.get(mode)
         if o is None:

@@ -213,6 +213,8 @@ void print_task(const char* name, const qr::CycleStats& s, uint32_t budget, uint
 struct ModeFigures {
   uint32_t tick_mean = 0;
   uint32_t overhead_mean = 0;  // tick mean minus what the tasks it ran cost, per tick
+  uint32_t ticks = 0;
+  uint32_t row_runs = 0;  // runs of all rows together
 };
 
 // Runs one mode and prints its line (per task: runs, mean, max, budget, overruns; and the
@@ -239,8 +241,12 @@ ModeFigures bench_mode(Rig<Chain, Radio>& rig, Mode mode, const char* suffix, bo
   }
   const auto& stats = rig.scheduler.stats();
   uint64_t task_sum = 0;
-  for (uint8_t id = 0; id < qr::kFlightTaskCount; ++id) task_sum += stats.task[id].sum();
   ModeFigures figures;
+  for (uint8_t id = 0; id < qr::kFlightTaskCount; ++id) {
+    task_sum += stats.task[id].sum();
+    figures.row_runs += stats.task[id].count;
+  }
+  figures.ticks = stats.ticks;
   figures.tick_mean = stats.tick.mean();
   figures.overhead_mean = stats.ticks == 0 ? 0 : static_cast<uint32_t>((stats.tick.sum() - task_sum) / stats.ticks);
   rv32virt::puts(",\"ticks\":");
@@ -268,6 +274,58 @@ template <Mode M, class Chain, bool Landing = false, bool Radio = false>
 ModeFigures measure(const char* suffix) {
   static Rig<Chain, Radio> rig;  // one fresh firmware per mode, outside the 8 KiB stack
   return bench_mode(rig, M, suffix, Landing);
+}
+
+// What the scheduler costs by itself, over a context that does nothing: a tick with no row (the
+// scheduler's own steps around the rows) and what each timed row adds besides its own run (the
+// running index, two counter reads, the call, and count, sum, last and the range check of its
+// statistics). Two sets: none of the rows, and all ten.
+struct EmptyRows {
+  static constexpr uint8_t kTaskCount = 10;
+  static constexpr uint8_t kSetCount = 2;
+  static constexpr uint8_t kAll[kTaskCount] = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9};
+  static constexpr qr::Task<EmptyRows> task(uint8_t) {
+    return {"empty", [](EmptyRows&) {}, 1, 0, 100};
+  }
+  static constexpr qr::TaskSet task_set(uint8_t set) { return {kAll, static_cast<uint8_t>(set == 0 ? 0 : kTaskCount)}; }
+  uint8_t current_set() const { return set; }
+  void begin_tick(uint32_t, const qr::SensorSample&) {}
+  uint32_t rx_space() const { return 0; }
+  void receive(uint8_t) {}
+  bool tx_peek(uint8_t&) const { return false; }
+  void tx_pop() {}
+  qr::EngineCommand engines() const { return {}; }
+  uint8_t leds() const { return 0; }
+  bool running() const { return true; }
+  void account(const qr::TickReport&, const qr::SchedulerStats<kTaskCount>&) {}
+  uint8_t set = 0;
+};
+
+struct SchedulerFloor {
+  uint32_t bare_tick = 0;  // a tick that runs no row
+  uint32_t per_row = 0;    // what a timed row adds beyond its own run
+};
+
+SchedulerFloor bench_scheduler_floor() {
+  static BenchBoard<false> board;
+  static EmptyRows rows;
+  static qr::Scheduler<BenchBoard<false>, EmptyRows> scheduler{board, rows};
+  uint32_t tick_mean[2] = {0, 0};
+  uint32_t rows_mean = 0;  // the rows' own runs, per tick
+  for (uint8_t set = 0; set < 2; ++set) {
+    rows.set = set;
+    scheduler.tick();  // the set takes effect from the next tick
+    scheduler.reset_stats();
+    for (uint32_t i = 0; i < kMeasuredTicks; ++i) scheduler.tick();
+    tick_mean[set] = scheduler.stats().tick.mean();
+    if (set == 1) {
+      for (uint8_t id = 0; id < EmptyRows::kTaskCount; ++id) rows_mean += scheduler.stats().task[id].mean();
+    }
+  }
+  SchedulerFloor f;
+  f.bare_tick = tick_mean[0];
+  f.per_row = (tick_mean[1] - tick_mean[0] - rows_mean) / EmptyRows::kTaskCount;
+  return f;
 }
 
 // The drivers' own cost, each piece timed alone (the cycle counter's own reads subtracted): four
@@ -332,6 +390,17 @@ int main() {
   const ModeFigures full_float = measure<Mode::full_control, FloatChain>("-float");
   const ModeFigures full_radio = measure<Mode::full_control, qr::FixedChain, false, true>("-radio-dshot");
   const DriverFigures drivers_cost = bench_drivers();
+  const SchedulerFloor floor = bench_scheduler_floor();
+  rv32virt::puts(
+      "{\"scheduler\":\"the scheduler alone, on rows that do nothing: a tick with no row, and what each timed row "
+      "adds beyond its own run\",\"bare_tick_instr_mean\":");
+  rv32virt::put_u32(floor.bare_tick);
+  rv32virt::puts(",\"row_instr_mean\":");
+  rv32virt::put_u32(floor.per_row);
+  // What timing every run of full control's rows costs a tick at that price.
+  rv32virt::puts(",\"full_row_timing_instr_mean\":");
+  rv32virt::put_u32(full.ticks == 0 ? 0 : floor.per_row * full.row_runs / full.ticks);
+  rv32virt::puts("}\n");
   rv32virt::puts(
       "{\"drivers\":\"four DShot frames and one CRSF RC frame (parse, channels, sticks); target: together <= 400 "
       "instructions per tick mean\",\"dshot4_instr_mean\":");
