@@ -183,6 +183,8 @@ class Flight {
   void on_frame(const wire::Frame& frame);
   void on_radio_sticks(const drivers::RcSticks& sticks);
   void send_download_parts();
+  void send_owed_reports();
+  void take_sticks();
   // Parameter fan-out, when a parameter changes (never per tick): the safety machine's limits
   // and the chain's coefficients. The task rates that are parameters are read by the scheduler
   // through the task table.

@@ -9,32 +9,40 @@ namespace qr {
 
 template <SignalChain Chain>
 void Flight<Chain>::run_link() {
-  // Most ticks bring no byte on either line: the bytes' work is out of line, so such a tick only
-  // checks (and does not save the registers the parsers need).
+  // Most ticks bring no byte on either line, no new sticks and owe no report: the work of each
+  // is out of line, so such a tick only checks (and does not save the registers that work needs).
   if (!rx_.empty()) receive_link_bytes();
   // A frame's bytes come within a millisecond; after 50 ms of silence what the parser holds is
   // the start of a frame whose sender stopped (docs/protocol.md, section 4).
   if (parser_.buffered() != 0 && tick_us_ - last_byte_us_ > 50000u) parser_.line_idle();
   if (!radio_rx_.empty()) receive_radio_bytes();
 
-  // The set-points change only with the sticks (or a parameter that scales them).
-  if (pilot_changed_) {
-    pilot_changed_ = false;
-    chain_.set_pilot(controls_);
-  }
+  if (pilot_changed_) take_sticks();
 
+  if (log_status_owed_ || report_next_ < report_end_) send_owed_reports();
+  if (log_.downloading()) send_download_parts();  // the check here: the parts' work is out of line
+}
+
+// The set-points change only with the sticks (or a parameter that scales them).
+template <SignalChain Chain>
+[[gnu::noinline]] void Flight<Chain>::take_sticks() {
+  pilot_changed_ = false;
+  chain_.set_pilot(controls_);
+}
+
+// Reports a request asked for: the log's status, and the parameters owed to a param_get, one per
+// tick, so a full report never crowds out telemetry or replies. Out of line, as the bytes' work
+// is: most ticks owe nothing, and only check.
+template <SignalChain Chain>
+[[gnu::noinline]] void Flight<Chain>::send_owed_reports() {
   if (log_status_owed_) {
     log_status_owed_ = false;
     send(wire::encode(log_.status()));
   }
-
-  // Parameter reports owed to a param_get: one per tick, so a full report never crowds out
-  // telemetry or replies.
   if (report_next_ < report_end_ && tx_.space() >= wire::kMaxFrameBytes) {
     const wire::ParameterLimits& spec = wire::kParameterLimits[report_next_++];
     send(wire::encode(wire::ParamReport{static_cast<uint8_t>(spec.id), params_.get(spec.id)}));
   }
-  if (log_.downloading()) send_download_parts();  // the check here: the parts' work is out of line
 }
 
 template <SignalChain Chain>
