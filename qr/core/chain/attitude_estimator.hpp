@@ -112,16 +112,20 @@ class TiltEstimator {
   void update(Rate gyro, Rate coupling, typename AngleIntegral<N>::Sum cross, Angle accel_angle, bool no_lag,
               typename N::BiasGain bias_gain) {
     rate_ = gyro - bias_;
-    const auto predict = fx::mul_wide(rate_, kDt) + fx::mul_wide(coupling, kDt);
+    // in_register (numeric.hpp): these factors come from a select, a narrowed sum or a difference
+    // GCC tracks in 64 bits, and would cost a 64 x 32 product each.
+    const auto predict = fx::mul_wide(detail::in_register(rate_), kDt) +
+                         fx::mul_wide(detail::in_register(coupling), kDt);
     // The angle the accelerometer should show: the predicted tilt seen through the drag's lag.
     // With follow = 1 (no lag) it is the predicted angle itself, and this is the plain
     // complementary filter.
-    const auto expect = fx::mul_wide(wrap_angle(angle_.peek(predict) - expected_.angle()), no_lag ? kNoLag : follow_) +
+    const auto expect = fx::mul_wide(detail::in_register(wrap_angle(angle_.peek(predict) - expected_.angle())),
+                                     detail::in_register(no_lag ? kNoLag : follow_)) +
                         cross;
     const Angle e = wrap_angle(expected_.peek(expect) - accel_angle);
     angle_.add(predict - fx::mul_wide(e, k1_));  // predict and correct, wrapped once
     expected_.add(expect);
-    bias_sum_ += fx::mul_wide(e, bias_gain);
+    bias_sum_ += fx::mul_wide(detail::in_register(e), detail::in_register(bias_gain));
     bias_ = N::template convert_sat<Rate>(bias_sum_);
     if (kMaxBias < bias_) {
       bias_ = kMaxBias;
