@@ -55,7 +55,12 @@ class AngleIntegral {
   }
   void add(Sum delta) {
     sum_ += delta;
-    normalise();
+    normalise(N::template convert<Angle>(sum_));
+  }
+  // The same, for a caller that has just read peek(delta): the angle is that value, not read again.
+  void add(Sum delta, Angle peeked) {
+    sum_ += delta;
+    normalise(peeked);
   }
   // The angle the sum would read with delta added, not wrapped (Angle holds +-8 rad, so a value
   // just past +-pi is still right; callers wrap differences).
@@ -65,8 +70,8 @@ class AngleIntegral {
  private:
   static constexpr typename N::AngleGain kOne = typename N::AngleGain(1.0);
 
-  void normalise() {
-    angle_ = N::template convert<Angle>(sum_);
+  void normalise(Angle angle) {
+    angle_ = angle;
     if (!(angle_ < kPiAngle<Angle>)) {
       sum_ -= fx::mul_wide(kTwoPiAngle<Angle>, kOne);
       angle_ = N::template convert<Angle>(sum_);
@@ -122,9 +127,10 @@ class TiltEstimator {
     const auto expect = fx::mul_wide(detail::in_register(wrap_angle(angle_.peek(predict) - expected_.angle())),
                                      detail::in_register(no_lag ? kNoLag : follow_)) +
                         cross;
-    const Angle e = wrap_angle(expected_.peek(expect) - accel_angle);
+    const Angle expected_angle = expected_.peek(expect);
+    const Angle e = wrap_angle(expected_angle - accel_angle);
     angle_.add(predict - fx::mul_wide(e, k1_));  // predict and correct, wrapped once
-    expected_.add(expect);
+    expected_.add(expect, expected_angle);
     bias_sum_ += fx::mul_wide(detail::in_register(e), detail::in_register(bias_gain));
     bias_ = N::template convert_sat<Rate>(bias_sum_);
     if (kMaxBias < bias_) {
@@ -205,14 +211,21 @@ class AttitudeEstimator {
   // (re)start from the accelerometer's angles. on_ground: the vehicle cannot move (the landed
   // detector), so its accelerometer sees gravity at once: no lag, whatever set_lag() said.
   void update(const Rate (&rate)[3], const Accel (&accel)[3], bool on_ground = false) {
-    if (!started_) {
-      take_accel_angles(accel);
-      roll_.start(roll_from_accel_);
-      pitch_.start(pitch_from_accel_);
-      yaw_.set(Angle{});
-      euler_ = euler_terms(roll_.angle(), pitch_.angle());
-      started_ = true;
-    }
+    if (!started_) start(accel);
+    update_rates(rate, on_ground);
+  }
+  // The same in two steps, for a caller that forms the specific force only when it is needed:
+  // start() while started() is false, then update_rates().
+  bool started() const { return started_; }
+  void start(const Accel (&accel)[3]) {
+    take_accel_angles(accel);
+    roll_.start(roll_from_accel_);
+    pitch_.start(pitch_from_accel_);
+    yaw_.set(Angle{});
+    euler_ = euler_terms(roll_.angle(), pitch_.angle());
+    started_ = true;
+  }
+  void update_rates(const Rate (&rate)[3], bool on_ground = false) {
     // Body rates to Euler rates (Z-Y-X): roll' = p + (q sin roll + r cos roll) tan pitch,
     // pitch' = q cos roll - r sin roll. Without this a yaw turn while tilted reads as a roll or
     // pitch rate, and the accelerometer, which in free flight may only pull slowly (C1 of
