@@ -125,10 +125,10 @@ constexpr typename IirOfOrder<Order>::template Coefficients<C> coefficients_of(c
 // at 1 Hz and 13x at the default 20 Hz (order 2, 1 kHz; docs/signal-chain.md). Near fs/4, where
 // there is no dead band, (1 - z^-1) doubles the error instead, to about one lsb. In fixed point
 // the residual is less than half an lsb of the output, in the sum's units: for 30-bit coefficients
-// it is within +-2^29, so it is kept in 32 bits (the low word of the sum less y's part of it,
-// exact while y fits its format, which the filters are sized for) and costs a 32-bit subtract and
-// a sign-extended add, not two 64-bit operations. In floating point the residual is always 0 and
-// this is the plain direct form I.
+// it is within +-2^29, so it is kept in 32 bits, biased by half an output lsb so that it is never
+// negative: adding it is an unsigned add, the rounding of the sum becomes a plain floor, and the
+// next residual is the low bits the floor drops (one mask), not two 64-bit operations. In
+// floating point the residual is always 0 and this is the plain direct form I.
 //
 // A stage is the state alone: the coefficients come with each step, so filters that share a
 // cut-off (the six sensor axes) load them once per tick, not once per filter. InputBound, when
@@ -148,12 +148,13 @@ class ButterworthStage {
 
   constexpr T step(const Coefficients& c, T x) {
     if constexpr (kNarrowResidual) {
-      const Sum sum = input_sum(c, x) + Sum::from_raw(residual_);
-      const T y = fx::narrow<T>(sum);
-      // Exactly what the rounding dropped: sum - y x 2^shift, whose true value fits 32 bits, so
-      // its low word (mod 2^32) is all of it.
-      residual_ = static_cast<int32_t>(static_cast<uint32_t>(sum.raw()) -
-                                       (static_cast<uint32_t>(y.raw()) << kResidualShift));
+      // The residual r is kept biased by half an output lsb, r + 2^(shift-1), in [0, 2^shift):
+      // with the bias in the sum, rounding sum + r half up is the floor of the biased sum, and
+      // what that floor drops, its low shift bits, is the next biased residual. The same y and
+      // r as narrow() and sum - y 2^shift, with an unsigned add and no rounding bit.
+      const Sum biased = input_sum(c, x) + Sum::from_raw(static_cast<int64_t>(residual_));
+      const T y = T::from_raw(fx::detail::wrap<typename T::raw_type>(biased.raw() >> kResidualShift));
+      residual_ = static_cast<uint32_t>(biased.raw()) & kResidualMask;
       Iir::shift(state_, x, y);
       return y;
     } else {
@@ -167,7 +168,7 @@ class ButterworthStage {
   // As if x had been the input forever: starts the filter without a transient from zero.
   constexpr void settle(T x) {
     Iir::settle(state_, x);
-    residual_ = Residual{};
+    residual_ = kNoResidual;
   }
   // The last output is the state's y1: kept once, not twice.
   constexpr T output() const { return state_.y1; }
@@ -208,19 +209,28 @@ class ButterworthStage {
     }
   }
   static constexpr int kResidualShift = residual_shift<T, C>();
-  static constexpr bool kNarrowResidual = kResidualShift >= 0 && kResidualShift <= 31;
+  static constexpr bool kNarrowResidual = kResidualShift >= 1 && kResidualShift <= 31;
   template <bool Narrow, class Wide>
   struct ResidualOf {
     using type = Wide;
   };
   template <class Wide>
   struct ResidualOf<true, Wide> {
-    using type = int32_t;
+    using type = uint32_t;  // biased: r + 2^(shift-1)
   };
   using Residual = typename ResidualOf<kNarrowResidual, Sum>::type;
+  static constexpr uint32_t kResidualMask = kNarrowResidual ? (uint32_t{1} << kResidualShift) - 1 : 0;
+  static constexpr Residual no_residual() {
+    if constexpr (kNarrowResidual) {
+      return uint32_t{1} << (kResidualShift - 1);
+    } else {
+      return Residual{};
+    }
+  }
+  static constexpr Residual kNoResidual = no_residual();
 
   typename Iir::template State<T> state_{};
-  Residual residual_{};
+  Residual residual_ = kNoResidual;
 };
 
 // One filter with coefficients of its own: a stage and where its coefficients are.
