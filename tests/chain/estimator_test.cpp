@@ -3,6 +3,7 @@
 // and in double, at 1 kHz and 500 Hz.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <numbers>
@@ -422,6 +423,39 @@ void RatesToHoldTheAnglesWhileYawing() {
 }
 TEST(Estimator, RatesToHoldTheAnglesWhileYawingInFixedPoint) { RatesToHoldTheAnglesWhileYawing<FixedNumbers>(); }
 TEST(Estimator, RatesToHoldTheAnglesWhileYawingInDouble) { RatesToHoldTheAnglesWhileYawing<DoubleNumbers>(); }
+
+// The angle integral keeps its sum biased by half an Angle lsb and reads the floor. Against the
+// plain form (the true sum, rounded half up by narrow(), wrapped the same way) on increments from
+// below an lsb to a quarter turn, across the wrap at +-pi in both directions: the same angles
+// and peeks at every step.
+TEST(Estimator, BiasedAngleIntegralReadsWhatTheRoundedSumReads) {
+  using N = FixedNumbers;
+  using Angle = N::Angle;
+  using Sum = AngleIntegral<N>::Sum;
+  const Sum two_pi = fx::mul_wide(kTwoPiAngle<Angle>, N::AngleGain(1.0));
+  AngleIntegral<N> integral;
+  integral.set(Angle(3.1));
+  Sum plain = fx::mul_wide(Angle(3.1), N::AngleGain(1.0));
+  std::mt19937 random(29);
+  std::uniform_int_distribution<int> exponent(0, 56);
+  std::uniform_int_distribution<int64_t> mantissa(-(int64_t{1} << 50), int64_t{1} << 50);
+  for (int n = 0; n < 200000; ++n) {
+    // |delta| from under an lsb (2^30 in the sum) to 2^56 (a quarter turn is 2^57.6).
+    const Sum delta = Sum::from_raw(mantissa(random) >> (50 - std::min(50, exponent(random))) << std::max(0, exponent(random) - 50));
+    ASSERT_EQ(integral.peek(delta).raw(), fx::narrow<Angle>(plain + delta).raw()) << n;
+    integral.add(delta);
+    plain += delta;
+    Angle a = fx::narrow<Angle>(plain);
+    if (!(a < kPiAngle<Angle>)) {
+      plain -= two_pi;
+      a = fx::narrow<Angle>(plain);
+    } else if (a < -kPiAngle<Angle>) {
+      plain += two_pi;
+      a = fx::narrow<Angle>(plain);
+    }
+    ASSERT_EQ(integral.angle().raw(), a.raw()) << n;
+  }
+}
 
 }  // namespace
 }  // namespace qr::chain

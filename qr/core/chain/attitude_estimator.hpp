@@ -40,7 +40,10 @@ namespace qr::chain {
 // or 1 lsb, and a small rate (a small bias error) would be integrated wrongly or not at all. The
 // sum is a Wide in the products' own format (rate x dt and angle x 1/C1 are both Angle x Q<30>
 // for FixedNumbers: Wide<58>, +-32 rad), so every increment adds in exactly; the angle is read
-// from it rounded once. Wrapped into [-pi, pi) after every change.
+// from it rounded once. Wrapped into [-pi, pi) after every change. In the Q formats the sum is
+// kept biased by half an Angle lsb: rounding the true sum half up is then the floor of the biased
+// one, a shift where narrow() also adds the rounding bit (three RV32 instructions fewer per read,
+// seven reads a tick; the same angles).
 template <class N>
 class AngleIntegral {
  public:
@@ -50,12 +53,12 @@ class AngleIntegral {
                 "rate x dt and angle x gain must add in the same wide format");
 
   void set(Angle a) {
-    sum_ = fx::mul_wide(a, kOne);
+    sum_ = fx::mul_wide(a, kOne) + kHalfLsb;
     angle_ = a;
   }
   void add(Sum delta) {
     sum_ += delta;
-    normalise(N::template convert<Angle>(sum_));
+    normalise(read(sum_));
   }
   // The same, for a caller that has just read peek(delta): the angle is that value, not read again.
   void add(Sum delta, Angle peeked) {
@@ -64,20 +67,45 @@ class AngleIntegral {
   }
   // The angle the sum would read with delta added, not wrapped (Angle holds +-8 rad, so a value
   // just past +-pi is still right; callers wrap differences).
-  Angle peek(Sum delta) const { return N::template convert<Angle>(sum_ + delta); }
+  Angle peek(Sum delta) const { return read(sum_ + delta); }
   Angle angle() const { return angle_; }
 
  private:
   static constexpr typename N::AngleGain kOne = typename N::AngleGain(1.0);
 
+  // Half an Angle lsb in the sum's units (Q formats; 0 in floating point), and the angle of a
+  // biased sum: its floor, which is the true sum rounded half up as N::convert rounds it.
+  static constexpr int kReadShift = [] {
+    if constexpr (fx::is_q<Angle>) {
+      return Sum::frac_bits - Angle::frac_bits;
+    } else {
+      return 0;
+    }
+  }();
+  static_assert(kReadShift >= 0 && kReadShift < 32, "the angle is the sum shifted right");
+  static constexpr Sum kHalfLsb = [] {
+    if constexpr (fx::is_q<Angle>) {
+      return Sum::from_raw(kReadShift > 0 ? int64_t{1} << (kReadShift - 1) : 0);
+    } else {
+      return Sum{};
+    }
+  }();
+  static Angle read(Sum biased) {
+    if constexpr (fx::is_q<Angle> && kReadShift > 0) {
+      return Angle::from_raw(fx::detail::wrap<typename Angle::raw_type>(biased.raw() >> kReadShift));
+    } else {
+      return N::template convert<Angle>(biased);
+    }
+  }
+
   void normalise(Angle angle) {
     angle_ = angle;
     if (!(angle_ < kPiAngle<Angle>)) {
       sum_ -= fx::mul_wide(kTwoPiAngle<Angle>, kOne);
-      angle_ = N::template convert<Angle>(sum_);
+      angle_ = read(sum_);
     } else if (angle_ < -kPiAngle<Angle>) {
       sum_ += fx::mul_wide(kTwoPiAngle<Angle>, kOne);
-      angle_ = N::template convert<Angle>(sum_);
+      angle_ = read(sum_);
     }
   }
 
