@@ -379,23 +379,30 @@ TEST(Butterworth, FoldedOuterTapsGiveTheSameOutputsWhereTheInputAllowsIt) {
   EXPECT_TRUE(gyro_scale_differs);
 }
 
-// 1 / 8192 g per count is a power of two, and accel_of shifts instead of multiplying: the same
-// value as the product for every count, and for the calibration's sums (kCalibrationShift
-// fractional bits) across the range 512 samples can add up to.
-TEST(SensorUnits, AccelShiftIsTheProduct) {
+// Both count scales are a whole number of Q<27> lsb for raw counts (1/8192 g is 2^14, the gyro's
+// 572224 / 2^31 rad/s is 35764), and rate_of / accel_of multiply by that number in 32 bits: the
+// same value as the rounded 64-bit product for every count, and for the calibration's sums
+// (kCalibrationShift fractional bits, where the gyro's scale is not whole and the product stays)
+// across the range 512 samples can add up to.
+TEST(SensorUnits, ScalingByAWholeNumberIsTheProduct) {
   using Units = SensorUnits<FixedNumbers>;
+  using Rate = FixedNumbers::Rate;
   using Accel = FixedNumbers::Accel;
+  static_assert(Units::kRadPerSecPerCount.raw() % 16 == 0 && Units::kGPerCount.raw() % 16 == 0,
+                "the flight's scales are whole numbers of Q<27> lsb (the test would still hold, unexercised)");
   for (int32_t count = INT16_MIN; count <= INT16_MAX; ++count) {
-    ASSERT_EQ(Units::accel_of(count).raw(), (product<Accel>(fx::Q<0>::from_raw(count), Units::kGPerCount).raw()))
-        << count;
+    const auto c = fx::Q<0>::from_raw(count);
+    ASSERT_EQ(Units::rate_of(count).raw(), (product<Rate>(c, Units::kRadPerSecPerCount).raw())) << count;
+    ASSERT_EQ(Units::accel_of(count).raw(), (product<Accel>(c, Units::kGPerCount).raw())) << count;
   }
   std::mt19937 random(19);
   std::uniform_int_distribution<int32_t> sums(INT16_MIN * 512, INT16_MAX * 512);
   for (int n = 0; n < 100000; ++n) {
     const int32_t sum = n < 2 ? (n == 0 ? INT16_MIN * 512 : INT16_MAX * 512) : sums(random);
-    ASSERT_EQ(Units::accel_of<kCalibrationShift>(sum).raw(),
-              (product<Accel>(fx::Q<kCalibrationShift>::from_raw(sum), Units::kGPerCount).raw()))
+    const auto c = fx::Q<kCalibrationShift>::from_raw(sum);
+    ASSERT_EQ(Units::rate_of<kCalibrationShift>(sum).raw(), (product<Rate>(c, Units::kRadPerSecPerCount).raw()))
         << sum;
+    ASSERT_EQ(Units::accel_of<kCalibrationShift>(sum).raw(), (product<Accel>(c, Units::kGPerCount).raw())) << sum;
   }
 }
 
