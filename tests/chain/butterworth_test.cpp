@@ -400,8 +400,7 @@ TEST(SensorUnits, ScalingByAWholeNumberIsTheProduct) {
   for (int n = 0; n < 100000; ++n) {
     const int32_t sum = n < 2 ? (n == 0 ? INT16_MIN * 512 : INT16_MAX * 512) : sums(random);
     const auto c = fx::Q<kCalibrationShift>::from_raw(sum);
-    ASSERT_EQ(Units::rate_of<kCalibrationShift>(sum).raw(), (product<Rate>(c, Units::kRadPerSecPerCount).raw()))
-        << sum;
+    ASSERT_EQ(Units::rate_of<kCalibrationShift>(sum).raw(), (product<Rate>(c, Units::kRadPerSecPerCount).raw())) << sum;
     ASSERT_EQ(Units::accel_of<kCalibrationShift>(sum).raw(), (product<Accel>(c, Units::kGPerCount).raw())) << sum;
   }
 }

@@ -3,7 +3,6 @@
 // and in double, at 1 kHz and 500 Hz.
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <array>
 #include <cmath>
 #include <numbers>
@@ -441,7 +440,9 @@ TEST(Estimator, BiasedAngleIntegralReadsWhatTheRoundedSumReads) {
   std::uniform_int_distribution<int64_t> mantissa(-(int64_t{1} << 50), int64_t{1} << 50);
   for (int n = 0; n < 200000; ++n) {
     // |delta| from under an lsb (2^30 in the sum) to 2^56 (a quarter turn is 2^57.6).
-    const Sum delta = Sum::from_raw(mantissa(random) >> (50 - std::min(50, exponent(random))) << std::max(0, exponent(random) - 50));
+    const int e = exponent(random);
+    const int64_t m = mantissa(random);  // |m| <= 2^50, scaled to |delta| <= 2^e
+    const Sum delta = Sum::from_raw(e <= 50 ? m >> (50 - e) : m * (int64_t{1} << (e - 50)));
     ASSERT_EQ(integral.peek(delta).raw(), fx::narrow<Angle>(plain + delta).raw()) << n;
     integral.add(delta);
     plain += delta;

@@ -73,7 +73,8 @@ void check_narrow_sat_words(fxtest::RawSource<int32_t>& source) {
   using To = Q<0>;
   const auto check = [](int64_t v) {
     const int32_t got = fx::narrow_sat<To>(fx::Wide<Shift>::from_raw(v)).raw();
-    ASSERT_EQ(got, fxtest::saturated<int32_t>(fxtest::round_half_up_shift(i128{v}, Shift))) << "shift " << Shift << ", " << v;
+    ASSERT_EQ(got, fxtest::saturated<int32_t>(fxtest::round_half_up_shift(i128{v}, Shift)))
+        << "shift " << Shift << ", " << v;
   };
   const i128 half = i128{1} << (Shift - 1);
   for (const i128 floor : {i128{INT32_MAX}, i128{INT32_MAX} - 1, i128{INT32_MAX} + 1, i128{INT32_MIN},

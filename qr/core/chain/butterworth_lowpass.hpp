@@ -1,11 +1,13 @@
 // One low-pass filter on one signal: the state of a 1st- or 2nd-order IIR filter (direct form I,
-// with the state and coefficient types of fixedpoint/iir.hpp) and the coefficients it runs with. Generic over the signal type T and the
-// coefficient type C: Q formats in flight, double on the host as the accuracy reference, float
-// on the target as the speed comparison.
+// with the state and coefficient types of fixedpoint/iir.hpp) and the coefficients it runs with.
+// Generic over the signal type T and the coefficient type C: Q formats in flight, double on the
+// host as the accuracy reference, float on the target as the speed comparison.
 //
-// The coefficients are held by pointer: in flight they live in the compile-time design table
-// (read-only memory), and changing the cut-off is repointing, not copying. The state stays in the
-// signal's own units, so a new cut-off takes over smoothly from the old one's state.
+// ButterworthStage is the state alone, stepped with coefficients given by the caller (the sensor
+// filters share one set); ButterworthLowpass is a stage with a pointer to its own. In flight the
+// coefficients live in the compile-time design table (read-only memory), and changing the
+// cut-off is repointing, not copying. The state stays in the signal's own units, so a new cut-off
+// takes over smoothly from the old one's state.
 #pragma once
 
 #include <fixedpoint/iir.hpp>
