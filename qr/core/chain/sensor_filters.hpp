@@ -33,19 +33,19 @@ class SensorFilters {
   // One sample. The first one settles the filters on itself, so start-up has no transient from
   // zero (the accelerometer reads -1 g on z at rest).
   void update(const SensorSample& s) {
-    const auto c = *coefficients_;  // one cut-off for all six: a copy, so the state stores cannot alias it
-    for (int i = 0; i < 3; ++i) {
-      const Rate r = Units::rate_of(s.gyro[i]);
-      const Accel a = Units::accel_of(s.accel[i]);
-      if (started_) {
-        gyro_[i].step(c, r);
-        accel_[i].step(c, a);
-      } else {
-        gyro_[i].settle(r);
-        accel_[i].settle(a);
+    if (!started_) {
+      for (int i = 0; i < 3; ++i) {
+        gyro_[i].settle(Units::rate_of(s.gyro[i]));
+        accel_[i].settle(Units::accel_of(s.accel[i]));
       }
+      started_ = true;
+      return;
     }
-    started_ = true;
+    const auto c = *coefficients_;  // one cut-off for all six: a copy, so the state stores cannot alias it
+    // One sensor after the other: the two kinds of stage (the accelerometer's fold its outer taps)
+    // interleaved cost registers and spills (filter 320 -> 317 instructions a tick).
+    for (int i = 0; i < 3; ++i) gyro_[i].step(c, Units::rate_of(s.gyro[i]));
+    for (int i = 0; i < 3; ++i) accel_[i].step(c, Units::accel_of(s.accel[i]));
   }
 
   // The next sample settles the filters again, as the first one did.
