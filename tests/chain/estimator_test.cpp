@@ -458,5 +458,34 @@ TEST(Estimator, BiasedAngleIntegralReadsWhatTheRoundedSumReads) {
   }
 }
 
+// The gyro bias sum is kept biased by half a Rate lsb too, read with saturation
+// (read_biased_sat): the saturated, rounded value of the unbiased sum at the edges of the
+// format (floors at INT32_MAX and INT32_MIN with every dropped part, high words at the edges of
+// the fit test) and at random, up to where adding the half would wrap 64 bits.
+TEST(Estimator, BiasedBiasSumReadsWhatTheSaturatedRoundingReads) {
+  using Rate = FixedNumbers::Rate;
+  using Sum = FixedNumbers::BiasSum;
+  constexpr int kShift = Sum::frac_bits - Rate::frac_bits;
+  const Sum half = half_lsb<Rate, Sum>();
+  ASSERT_EQ(half.raw(), int64_t{1} << (kShift - 1));
+  const auto check = [&](int64_t v) {
+    const Sum sum = Sum::from_raw(v);
+    ASSERT_EQ(read_biased_sat<Rate>(sum + half).raw(), fx::narrow_sat<Rate>(sum).raw()) << v;
+  };
+  for (const int64_t floor : {int64_t{INT32_MAX}, int64_t{INT32_MAX} - 1, int64_t{INT32_MAX} + 1, int64_t{INT32_MIN},
+                              int64_t{INT32_MIN} + 1, int64_t{INT32_MIN} - 1, int64_t{0}, int64_t{-1}}) {
+    for (const int64_t below : {int64_t{0}, half.raw() - 1, half.raw(), 2 * half.raw() - 1}) {
+      check(floor * 2 * half.raw() + below);
+    }
+  }
+  check(INT64_MIN);
+  check(INT64_MAX - half.raw());
+  std::mt19937_64 random(31);
+  for (int n = 0; n < 200000; ++n) {
+    const int64_t v = static_cast<int64_t>(random()) >> (n % 2 == 0 ? 1 : 64 - 32 - kShift);
+    check(v);
+  }
+}
+
 }  // namespace
 }  // namespace qr::chain

@@ -73,30 +73,10 @@ class AngleIntegral {
  private:
   static constexpr typename N::AngleGain kOne = typename N::AngleGain(1.0);
 
-  // Half an Angle lsb in the sum's units (Q formats; 0 in floating point), and the angle of a
+  // Half an Angle lsb in the sum's units (numeric.hpp; 0 in floating point), and the angle of a
   // biased sum: its floor, which is the true sum rounded half up as N::convert rounds it.
-  static constexpr int kReadShift = [] {
-    if constexpr (fx::is_q<Angle>) {
-      return Sum::frac_bits - Angle::frac_bits;
-    } else {
-      return 0;
-    }
-  }();
-  static_assert(kReadShift >= 0 && kReadShift < 32, "the angle is the sum shifted right");
-  static constexpr Sum kHalfLsb = [] {
-    if constexpr (fx::is_q<Angle>) {
-      return Sum::from_raw(kReadShift > 0 ? int64_t{1} << (kReadShift - 1) : 0);
-    } else {
-      return Sum{};
-    }
-  }();
-  static Angle read(Sum biased) {
-    if constexpr (fx::is_q<Angle> && kReadShift > 0) {
-      return Angle::from_raw(fx::detail::wrap<typename Angle::raw_type>(biased.raw() >> kReadShift));
-    } else {
-      return N::template convert<Angle>(biased);
-    }
-  }
+  static constexpr Sum kHalfLsb = half_lsb<Angle, Sum>();
+  static Angle read(Sum biased) { return read_biased<Angle>(biased); }
 
   void normalise(Angle angle) {
     angle_ = angle;
@@ -129,7 +109,7 @@ class TiltEstimator {
   void start(Angle angle) {
     angle_.set(angle);
     expected_.set(angle);
-    bias_sum_ = {};
+    bias_sum_ = kBiasHalf;
     bias_ = {};
   }
 
@@ -160,13 +140,13 @@ class TiltEstimator {
     angle_.add(predict - fx::mul_wide(e, k1_));  // predict and correct, wrapped once
     expected_.add(expect, expected_angle);
     bias_sum_ += fx::mul_wide(detail::in_register(e), detail::in_register(bias_gain));
-    bias_ = N::template convert_sat<Rate>(bias_sum_);
+    bias_ = read_biased_sat<Rate>(bias_sum_);
     if (kMaxBias < bias_) {
       bias_ = kMaxBias;
-      bias_sum_ = N::widen(kMaxBias);
+      bias_sum_ = N::widen(kMaxBias) + kBiasHalf;
     } else if (bias_ < -kMaxBias) {
       bias_ = -kMaxBias;
-      bias_sum_ = N::widen(-kMaxBias);
+      bias_sum_ = N::widen(-kMaxBias) + kBiasHalf;
     }
   }
 
@@ -178,6 +158,10 @@ class TiltEstimator {
 
  private:
   static constexpr typename N::Scale kDt = typename N::Scale(1.0 / SampleHz);
+  using BiasSum = typename N::BiasSum;
+  // The bias sum is kept biased by half a Rate lsb (numeric.hpp, read_biased_sat): the bias it
+  // reads is its floor, a shift without the rounding bit.
+  static constexpr BiasSum kBiasHalf = half_lsb<Rate, BiasSum>();
 
   typename N::AngleGain k1_{};
   static constexpr typename N::AngleGain kNoLag = typename N::AngleGain(1.0);
@@ -186,7 +170,7 @@ class TiltEstimator {
   AngleIntegral<N> expected_;  // the accelerometer's expected angle
   Rate rate_{};
   Rate bias_{};
-  typename N::BiasSum bias_sum_{};
+  BiasSum bias_sum_ = kBiasHalf;
 };
 
 // Two steps: update_accel() takes the accelerometer's angles (two atan2 and a square root) and
