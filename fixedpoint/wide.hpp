@@ -68,6 +68,22 @@ constexpr int64_t rescaled(Wide<G> from) {
   }
 }
 
+// round_shr(v, Shift) saturated to int32, worked on v's two words: the same value as the 64-bit
+// shift, add and range check, in about 10 RV32 instructions where those take 14. The floor
+// v >> Shift fits int32 exactly when v >> (31 + Shift), the high word shifted by Shift - 1, is 0
+// or -1; otherwise it saturates by its sign. The rounding bit then moves a floor that fits out of
+// range only from INT32_MAX up (a positive floor plus one), which the signed compare catches.
+template <typename To, int Shift>
+constexpr To narrow_sat_words(int64_t v) {
+  const int32_t high = static_cast<int32_t>(v >> 32);
+  const uint32_t low = static_cast<uint32_t>(v);
+  const int32_t top = high >> (Shift - 1);
+  if (static_cast<uint32_t>(top) + 1u > 1u) return top < 0 ? To::min() : To::max();
+  const uint32_t floor = (static_cast<uint32_t>(high) << (32 - Shift)) | (low >> Shift);
+  const int32_t rounded = static_cast<int32_t>(floor + ((low >> (Shift - 1)) & 1u));
+  return rounded < static_cast<int32_t>(floor) ? To::max() : To::from_raw(rounded);
+}
+
 }  // namespace detail
 
 // Back to a Q format, rounding half up; wraps (narrow) or clamps (narrow_sat) when it does not
@@ -80,7 +96,12 @@ constexpr To narrow(Wide<G> w) { return To::from_raw(detail::wrap<typename To::r
 template <typename To, int G>
   requires is_q<To>
 constexpr To narrow_sat(Wide<G> w) {
-  return To::from_raw(detail::saturate<typename To::raw_type>(detail::rescaled<To>(w)));
+  constexpr int shift = G - To::frac_bits;
+  if constexpr (sizeof(typename To::raw_type) == 4 && shift >= 1 && shift <= 31) {
+    return detail::narrow_sat_words<To, shift>(w.raw());
+  } else {
+    return To::from_raw(detail::saturate<typename To::raw_type>(detail::rescaled<To>(w)));
+  }
 }
 
 // ---- the same vocabulary for the floating-point number types ----

@@ -11,6 +11,7 @@
 
 #include <qr/core/chain/butterworth_table.hpp>
 #include <qr/core/chain/fixed_numbers.hpp>
+#include <qr/core/chain/sensor_calibration.hpp>
 #include <qr/core/chain/sensor_units.hpp>
 #include <qr/host/real_numbers.hpp>
 #include <qr/tools/filter_response.hpp>
@@ -344,6 +345,65 @@ void check_fixed_against_double(const std::vector<double>& input) {
 
 TEST(Butterworth, FirstOrderFixedFollowsDoubleWithinTheBound) { check_fixed_against_double<1>(long_input()); }
 TEST(Butterworth, SecondOrderFixedFollowsDoubleWithinTheBound) { check_fixed_against_double<2>(long_input()); }
+
+// The accelerometer's filters fold their outer taps into b0 (x + x2) (ButterworthStage): the
+// same outputs as the five products, bit for bit, at the accelerometer's full scale (steps between
+// its extremes, the largest overshoot, then full-scale noise) at every cut-off. The gyro's full
+// scale is too wide for the fold: its filters keep the five products, and folding there would
+// change outputs (x + x2 wraps), which the last part shows.
+TEST(Butterworth, FoldedOuterTapsGiveTheSameOutputsWhereTheInputAllowsIt) {
+  using Units = SensorUnits<FixedNumbers>;
+  using Table = ButterworthTable<Coefficient, 2, 1000>;
+  constexpr int64_t kAccelBound = -int64_t{Units::accel_of(INT16_MIN).raw()};
+  constexpr int64_t kGyroBound = -int64_t{Units::rate_of(INT16_MIN).raw()};
+  using Folded = ButterworthStage<Signal, Coefficient, 2, kAccelBound>;
+  using Plain = ButterworthStage<Signal, Coefficient, 2>;
+  static_assert(Folded::kFoldOuterTaps && !Plain::kFoldOuterTaps);
+  static_assert(!ButterworthStage<Signal, Coefficient, 2, kGyroBound>::kFoldOuterTaps);
+  static_assert(!ButterworthStage<double, double, 2, kAccelBound>::kFoldOuterTaps, "double is the reference");
+  std::mt19937 random(17);
+  std::uniform_int_distribution<int32_t> counts(INT16_MIN, INT16_MAX);
+  bool gyro_scale_differs = false;
+  for (int32_t fc = 1; fc <= 250; ++fc) {
+    const auto& c = Table::for_cutoff(fc);
+    Folded folded, gyro_folded;
+    Plain plain, gyro_plain;
+    for (int n = 0; n < 4000; ++n) {
+      const int32_t count = n < 2000 ? ((n / 250) % 2 == 0 ? INT16_MAX : INT16_MIN) : counts(random);
+      const Signal x = Units::accel_of(count);
+      ASSERT_EQ(folded.step(c, x).raw(), plain.step(c, x).raw()) << fc << " Hz, sample " << n;
+      const Signal r = Units::rate_of(count);
+      gyro_scale_differs |= gyro_folded.step(c, r).raw() != gyro_plain.step(c, r).raw();
+    }
+  }
+  EXPECT_TRUE(gyro_scale_differs);
+}
+
+// Both count scales are a whole number of Q<27> lsb for raw counts (1/8192 g is 2^14, the gyro's
+// 572224 / 2^31 rad/s is 35764), and rate_of / accel_of multiply by that number in 32 bits: the
+// same value as the rounded 64-bit product for every count, and for the calibration's sums
+// (kCalibrationShift fractional bits, where the gyro's scale is not whole and the product stays)
+// across the range 512 samples can add up to.
+TEST(SensorUnits, ScalingByAWholeNumberIsTheProduct) {
+  using Units = SensorUnits<FixedNumbers>;
+  using Rate = FixedNumbers::Rate;
+  using Accel = FixedNumbers::Accel;
+  static_assert(Units::kRadPerSecPerCount.raw() % 16 == 0 && Units::kGPerCount.raw() % 16 == 0,
+                "the flight's scales are whole numbers of Q<27> lsb (the test would still hold, unexercised)");
+  for (int32_t count = INT16_MIN; count <= INT16_MAX; ++count) {
+    const auto c = fx::Q<0>::from_raw(count);
+    ASSERT_EQ(Units::rate_of(count).raw(), (product<Rate>(c, Units::kRadPerSecPerCount).raw())) << count;
+    ASSERT_EQ(Units::accel_of(count).raw(), (product<Accel>(c, Units::kGPerCount).raw())) << count;
+  }
+  std::mt19937 random(19);
+  std::uniform_int_distribution<int32_t> sums(INT16_MIN * 512, INT16_MAX * 512);
+  for (int n = 0; n < 100000; ++n) {
+    const int32_t sum = n < 2 ? (n == 0 ? INT16_MIN * 512 : INT16_MAX * 512) : sums(random);
+    const auto c = fx::Q<kCalibrationShift>::from_raw(sum);
+    ASSERT_EQ(Units::rate_of<kCalibrationShift>(sum).raw(), (product<Rate>(c, Units::kRadPerSecPerCount).raw())) << sum;
+    ASSERT_EQ(Units::accel_of<kCalibrationShift>(sum).raw(), (product<Accel>(c, Units::kGPerCount).raw())) << sum;
+  }
+}
 
 }  // namespace
 }  // namespace qr::chain

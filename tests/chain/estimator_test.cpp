@@ -423,5 +423,69 @@ void RatesToHoldTheAnglesWhileYawing() {
 TEST(Estimator, RatesToHoldTheAnglesWhileYawingInFixedPoint) { RatesToHoldTheAnglesWhileYawing<FixedNumbers>(); }
 TEST(Estimator, RatesToHoldTheAnglesWhileYawingInDouble) { RatesToHoldTheAnglesWhileYawing<DoubleNumbers>(); }
 
+// The angle integral keeps its sum biased by half an Angle lsb and reads the floor. Against the
+// plain form (the true sum, rounded half up by narrow(), wrapped the same way) on increments from
+// below an lsb to a quarter turn, across the wrap at +-pi in both directions: the same angles
+// and peeks at every step.
+TEST(Estimator, BiasedAngleIntegralReadsWhatTheRoundedSumReads) {
+  using N = FixedNumbers;
+  using Angle = N::Angle;
+  using Sum = AngleIntegral<N>::Sum;
+  const Sum two_pi = fx::mul_wide(kTwoPiAngle<Angle>, N::AngleGain(1.0));
+  AngleIntegral<N> integral;
+  integral.set(Angle(3.1));
+  Sum plain = fx::mul_wide(Angle(3.1), N::AngleGain(1.0));
+  std::mt19937 random(29);
+  std::uniform_int_distribution<int> exponent(0, 56);
+  std::uniform_int_distribution<int64_t> mantissa(-(int64_t{1} << 50), int64_t{1} << 50);
+  for (int n = 0; n < 200000; ++n) {
+    // |delta| from under an lsb (2^30 in the sum) to 2^56 (a quarter turn is 2^57.6).
+    const int e = exponent(random);
+    const int64_t m = mantissa(random);  // |m| <= 2^50, scaled to |delta| <= 2^e
+    const Sum delta = Sum::from_raw(e <= 50 ? m >> (50 - e) : m * (int64_t{1} << (e - 50)));
+    ASSERT_EQ(integral.peek(delta).raw(), fx::narrow<Angle>(plain + delta).raw()) << n;
+    integral.add(delta);
+    plain += delta;
+    Angle a = fx::narrow<Angle>(plain);
+    if (!(a < kPiAngle<Angle>)) {
+      plain -= two_pi;
+      a = fx::narrow<Angle>(plain);
+    } else if (a < -kPiAngle<Angle>) {
+      plain += two_pi;
+      a = fx::narrow<Angle>(plain);
+    }
+    ASSERT_EQ(integral.angle().raw(), a.raw()) << n;
+  }
+}
+
+// The gyro bias sum is kept biased by half a Rate lsb too, read with saturation
+// (read_biased_sat): the saturated, rounded value of the unbiased sum at the edges of the
+// format (floors at INT32_MAX and INT32_MIN with every dropped part, high words at the edges of
+// the fit test) and at random, up to where adding the half would wrap 64 bits.
+TEST(Estimator, BiasedBiasSumReadsWhatTheSaturatedRoundingReads) {
+  using Rate = FixedNumbers::Rate;
+  using Sum = FixedNumbers::BiasSum;
+  constexpr int kShift = Sum::frac_bits - Rate::frac_bits;
+  const Sum half = half_lsb<Rate, Sum>();
+  ASSERT_EQ(half.raw(), int64_t{1} << (kShift - 1));
+  const auto check = [&](int64_t v) {
+    const Sum sum = Sum::from_raw(v);
+    ASSERT_EQ(read_biased_sat<Rate>(sum + half).raw(), fx::narrow_sat<Rate>(sum).raw()) << v;
+  };
+  for (const int64_t floor : {int64_t{INT32_MAX}, int64_t{INT32_MAX} - 1, int64_t{INT32_MAX} + 1, int64_t{INT32_MIN},
+                              int64_t{INT32_MIN} + 1, int64_t{INT32_MIN} - 1, int64_t{0}, int64_t{-1}}) {
+    for (const int64_t below : {int64_t{0}, half.raw() - 1, half.raw(), 2 * half.raw() - 1}) {
+      check(floor * 2 * half.raw() + below);
+    }
+  }
+  check(INT64_MIN);
+  check(INT64_MAX - half.raw());
+  std::mt19937_64 random(31);
+  for (int n = 0; n < 200000; ++n) {
+    const int64_t v = static_cast<int64_t>(random()) >> (n % 2 == 0 ? 1 : 64 - 32 - kShift);
+    check(v);
+  }
+}
+
 }  // namespace
 }  // namespace qr::chain

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 #include <fixedpoint/wide.hpp>
 
+#include <utility>
+
 #include "reference.hpp"
 
 namespace {
@@ -60,6 +62,44 @@ TEST(Wide, SumsOfProductsNarrowWithOneRounding) {
     ASSERT_EQ(fx::narrow_sat<Q8s>(acc).raw(), fxtest::saturated<int16_t>(fxtest::round_half_up_shift(exact, 38)));
   }
   EXPECT_LT(overflowed, 1000);  // the random terms are full scale only now and then
+}
+
+// narrow_sat to a 32-bit raw with a right shift of 1..31 works on the two words of the sum
+// (detail::narrow_sat_words): against the 128-bit reference at every shift, on the values where
+// it could go wrong (the floor at the edges of int32 with and without the rounding bit, the high
+// word at the edges of the fit test, the ends of int64) and on random sums.
+template <int Shift>
+void check_narrow_sat_words(fxtest::RawSource<int32_t>& source) {
+  using To = Q<0>;
+  const auto check = [](int64_t v) {
+    const int32_t got = fx::narrow_sat<To>(fx::Wide<Shift>::from_raw(v)).raw();
+    ASSERT_EQ(got, fxtest::saturated<int32_t>(fxtest::round_half_up_shift(i128{v}, Shift)))
+        << "shift " << Shift << ", " << v;
+  };
+  const i128 half = i128{1} << (Shift - 1);
+  for (const i128 floor : {i128{INT32_MAX}, i128{INT32_MAX} - 1, i128{INT32_MAX} + 1, i128{INT32_MIN},
+                           i128{INT32_MIN} + 1, i128{INT32_MIN} - 1, i128{0}, i128{-1}}) {
+    for (const i128 below : {i128{0}, half - 1, half, 2 * half - 1}) {
+      check(static_cast<int64_t>(floor * 2 * half + below));
+    }
+  }
+  for (const int64_t v : {INT64_MAX, INT64_MIN, INT64_MAX - 1, INT64_MIN + 1}) check(v);
+  for (int i = 0; i < 20000; ++i) {
+    // Full-scale high words now and then, else high words near the fit test's edges.
+    const int32_t high = i % 2 == 0 ? source.next() : (source.next() >> (31 - Shift));
+    const uint32_t low = static_cast<uint32_t>(source.next());
+    check(static_cast<int64_t>((static_cast<uint64_t>(static_cast<uint32_t>(high)) << 32) | low));
+  }
+}
+
+template <int... Shifts>
+void check_narrow_sat_words_at(std::integer_sequence<int, Shifts...>) {
+  fxtest::RawSource<int32_t> source(23);
+  (check_narrow_sat_words<Shifts + 1>(source), ...);
+}
+
+TEST(Wide, NarrowSatOnTwoWordsIsTheSaturatedRounding) {
+  check_narrow_sat_words_at(std::make_integer_sequence<int, 31>{});
 }
 
 TEST(Wide, NarrowingToMoreFractionalBitsIsExact) {

@@ -184,7 +184,7 @@ class AttitudeController {
     // The two products are kept as they are (a store each) for a live plot of the terms; they are
     // turned into moments only when read (p_term(), d_term()).
     p_wide_ = fx::mul_wide(p2_, error);
-    d_wide_ = fx::mul_wide(d_fs_, change);
+    d_wide_ = fx::mul_wide(d_fs_, detail::in_register(change));  // a select: in_register (numeric.hpp)
     const Thrust pd = clamp(N::template convert_sat<Thrust>(p_wide_ - d_wide_), -kMaxMoment<N>, kMaxMoment<N>) +
                       clamp(moment_feed_forward, -kMaxMoment<N>, kMaxMoment<N>);  // within +-2000: fits
     if (integrate && magnitude(pd + integral_) < kMaxMoment<N>) {

@@ -132,15 +132,18 @@ class FlightChain {
   // climbing).
   void estimate() {
     Rate rate[3];
-    Accel accel[3];
-    for (int i = 0; i < 3; ++i) {
-      rate[i] = filters_.rate(i) - calibration_.gyro_offset(i);
-      accel[i] = filters_.accel(i) - calibration_.accel_offset(i);
+    for (int i = 0; i < 3; ++i) rate[i] = filters_.rate(i) - calibration_.gyro_offset(i);
+    // The whole specific force only for a (re)start; every tick needs just its z.
+    if (!estimator_.started()) {
+      Accel accel[3];
+      for (int i = 0; i < 3; ++i) accel[i] = filters_.accel(i) - calibration_.accel_offset(i);
+      estimator_.start(accel);
     }
-    estimator_.update(rate, accel, landed_.landed());  // on the ground (last tick's verdict): no drag lag
+    estimator_.update_rates(rate, landed_.landed());  // on the ground (last tick's verdict): no drag lag
     // When the chain flies the lift (height hold, a landing) there is lift: only a touchdown lands.
-    landed_.update(lift_ == LiftSource::pilot ? pilot_.lift() : uint16_t{1}, accel[2]);
-    if (lift_ == LiftSource::descend && touchdown_.impact(accel[2])) landed_.touch_down();
+    const Accel accel_z = filters_.accel(2) - calibration_.accel_offset(2);
+    landed_.update(lift_ == LiftSource::pilot ? pilot_.lift() : uint16_t{1}, accel_z);
+    if (lift_ == LiftSource::descend && touchdown_.impact(accel_z)) landed_.touch_down();
   }
 
   // Task "height": calibrated filtered accelerometer, the attitude estimate and the barometer ->
@@ -236,8 +239,9 @@ class FlightChain {
   // Task "mixer": lift and moments -> engines. Each moment comes from its controller if that
   // ran this tick, otherwise from the stick: full control runs both controllers, yaw control
   // only the yaw loop (roll and pitch manual), manual neither. The order of the controller tasks
-  // within a tick does not matter.
-  EngineCommand mix() {
+  // within a tick does not matter. Always inlined, as the mixer's own steps are (engine_mixer.hpp
+  // says why).
+  [[gnu::always_inline]] inline EngineCommand mix() {
     moments_.roll = attitude_ran_ ? roll_moment_ : pilot_.roll_moment();
     moments_.pitch = attitude_ran_ ? pitch_moment_ : pilot_.pitch_moment();
     moments_.yaw = yaw_ran_ ? yaw_moment_ : pilot_.yaw_moment();

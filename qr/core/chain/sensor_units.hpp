@@ -25,13 +25,36 @@ struct SensorUnits {
   static constexpr CountScale kCountsPerG = CountScale(sensor::kAccelCountsPerG);
   static constexpr int32_t kCountsPerGInt = static_cast<int32_t>(sensor::kAccelCountsPerG);
 
+ private:
+  // counts x scale in T's format, as product() computes it: narrow() of the exact product. Where
+  // the scale's raw is a whole number of T's lsb (no bit of the product falls below T's lsb),
+  // there is nothing to round, and the product is counts x that number, which wraps modulo 2^32
+  // as narrow() does: one 32-bit multiply where GCC makes five instructions of the 64-bit
+  // product. True of both scales for raw counts: 1/8192 g is 2^14 lsb of Q<27>, and the gyro's
+  // 572224 / 2^31 rad/s is 35764 lsb of Q<27> (SensorUnits.ScalingByAWholeNumberIsTheProduct
+  // checks every count, and the calibration's sums).
+  template <class T, int Frac, class S>
+  static constexpr T scaled(int32_t counts, S scale) {
+    if constexpr (fx::is_q<T>) {
+      constexpr int kShift = S::frac_bits + Frac - T::frac_bits;  // what narrow() shifts away
+      if constexpr (kShift >= 0 && kShift < 31) {
+        if (scale.raw() % (int32_t{1} << kShift) == 0) {
+          const uint32_t lsbs = static_cast<uint32_t>(scale.raw() >> kShift);
+          return T::from_raw(static_cast<int32_t>(static_cast<uint32_t>(counts) * lsbs));
+        }
+      }
+    }
+    return product<T>(N::template fixed<Frac>(counts), scale);
+  }
+
+ public:
   template <int Frac = 0>
   static constexpr Rate rate_of(int32_t counts) {
-    return product<Rate>(N::template fixed<Frac>(counts), kRadPerSecPerCount);
+    return scaled<Rate, Frac>(counts, kRadPerSecPerCount);
   }
   template <int Frac = 0>
   static constexpr Accel accel_of(int32_t counts) {
-    return product<Accel>(N::template fixed<Frac>(counts), kGPerCount);
+    return scaled<Accel, Frac>(counts, kGPerCount);
   }
   // Back to counts (for the sensor log: filtered values in the sensor's own units), saturated.
   static constexpr int16_t gyro_counts(Rate r) {
