@@ -47,8 +47,10 @@ struct Frame {
   constexpr bool operator==(const Frame&) const = default;
 };
 
-// Bytes ready to go out on the serial line, start byte to check byte.
-struct FrameBytes {
+// Bytes ready to go out on the serial line, start byte to check byte. Word-aligned: every frame
+// the QR sends starts as a zeroed one, and 13 bytes on a byte boundary were cleared through a
+// memcpy call (RV32, 40 instructions), 16 on a word boundary are four stores.
+struct alignas(4) FrameBytes {
   uint8_t bytes[kMaxFrameBytes] = {};
   uint8_t size = 0;  // 0: nothing to send (the payload did not fit the table's length)
 
