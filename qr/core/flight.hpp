@@ -207,12 +207,17 @@ class Flight {
     static_assert(rows_in_task_order<Flight>(), "kFlightTaskTable: row i is task i");
     static_assert(every_mode_has_a_compiled_set<Flight>(), "kCompiledSets: every mode's set is compiled");
     const uint8_t entered = safety_.take_entered();
-    if (entered == 0) return;
+    if (entered != 0) run_entry_actions(entered);
+  }
+  // Out of line, as the mode's announcement is: a tick that enters a mode is rare, and the
+  // safety row, which asks every tick, need not save the registers they take.
+  [[gnu::noinline]] void run_entry_actions(uint8_t entered) {
     for (uint8_t m = 0; m < kModeCount; ++m) {
       if ((entered & (1u << m)) != 0 && flight_modes<Flight>()[m].enter != nullptr)
         flight_modes<Flight>()[m].enter(*this);
     }
   }
+  void announce_mode();
   void send(const wire::FrameBytes& frame) {
     if (!tx_.push(frame)) ++tx_dropped_;
   }

@@ -105,9 +105,13 @@ void Flight<Chain>::run_safety() {
   safety_.supervise(s);
   enter_modes();
   engines_ = safety_.limit_engines(wanted_, s);
+  if (safety_.mode() != announced_mode_) announce_mode();
+}
 
+// A new mode on the debug text.
+template <SignalChain Chain>
+[[gnu::noinline]] void Flight<Chain>::announce_mode() {
   const Mode now = safety_.mode();
-  if (now == announced_mode_) return;
   announced_mode_ = now;
   say("mode: ");
   say(wire::mode_name(now));
@@ -140,6 +144,7 @@ void Flight<Chain>::run_logger() {
 template <SignalChain Chain>
 void Flight<Chain>::run_stream() {
   if constexpr (!kObservableStreams) return;
+  if (streams_.idle()) return;
   constexpr size_t kTxReserve = 64;
   streams_.run(
       *this, kControlHz, [this](const wire::FrameBytes& frame) { send(frame); },

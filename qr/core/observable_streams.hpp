@@ -72,12 +72,16 @@ class ObservableStreams {
 
   bool streaming() const { return running_ != 0; }
 
+  // No stream running and no table row owed: the tick has nothing to do. The row runs in every
+  // tick of every mode, and a console that plots nothing should not pay for it: the caller asks
+  // this first, before it makes what run() is handed.
+  bool idle() const { return running_ == 0 && next_row_ >= end_row_; }
+
   // One tick: a sample of every stream that is due; then one owed table row if `room(bytes)` says
-  // the line has that much to spare. Idle (no stream running, no row owed) it is two compares: the
-  // row runs in every tick of every mode, and a console that plots nothing should not pay for it.
+  // the line has that much to spare.
   template <class Send, class Room>
   [[gnu::always_inline]] inline void run(const Flight& f, uint32_t control_hz, Send&& send, Room&& room) {
-    if (running_ == 0 && next_row_ >= end_row_) return;
+    if (idle()) return;
     run_due(f, control_hz, send, room);
   }
 
