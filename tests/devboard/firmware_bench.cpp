@@ -194,19 +194,23 @@ struct Rig {
   }
 };
 
+// One figure of a JSON line after its first: ,"key":value.
+void put_field(const char* key, uint32_t value) {
+  rv32virt::puts(",\"");
+  rv32virt::puts(key);
+  rv32virt::puts("\":");
+  rv32virt::put_u32(value);
+}
+
 void print_task(const char* name, const qr::CycleStats& s, uint32_t budget, uint32_t overruns) {
   rv32virt::puts("\"");
   rv32virt::puts(name);
   rv32virt::puts("\":{\"runs\":");
   rv32virt::put_u32(s.count);
-  rv32virt::puts(",\"mean\":");
-  rv32virt::put_u32(s.mean());
-  rv32virt::puts(",\"max\":");
-  rv32virt::put_u32(s.max);
-  rv32virt::puts(",\"budget\":");
-  rv32virt::put_u32(budget);
-  rv32virt::puts(",\"overruns\":");
-  rv32virt::put_u32(overruns);
+  put_field("mean", s.mean());
+  put_field("max", s.max);
+  put_field("budget", budget);
+  put_field("overruns", overruns);
   rv32virt::puts("}");
 }
 
@@ -249,14 +253,10 @@ ModeFigures bench_mode(Rig<Chain, Radio>& rig, Mode mode, const char* suffix, bo
   figures.ticks = stats.ticks;
   figures.tick_mean = stats.tick.mean();
   figures.overhead_mean = stats.ticks == 0 ? 0 : static_cast<uint32_t>((stats.tick.sum() - task_sum) / stats.ticks);
-  rv32virt::puts(",\"ticks\":");
-  rv32virt::put_u32(ticks);
-  rv32virt::puts(",\"tick_instr_mean\":");
-  rv32virt::put_u32(figures.tick_mean);
-  rv32virt::puts(",\"tick_instr_max\":");
-  rv32virt::put_u32(stats.tick.max);
-  rv32virt::puts(",\"scheduler_overhead_instr_mean\":");
-  rv32virt::put_u32(figures.overhead_mean);
+  put_field("ticks", ticks);
+  put_field("tick_instr_mean", figures.tick_mean);
+  put_field("tick_instr_max", stats.tick.max);
+  put_field("scheduler_overhead_instr_mean", figures.overhead_mean);
   rv32virt::puts(",\"tasks\":{");
   bool first = true;
   for (uint8_t id = 0; id < qr::kFlightTaskCount; ++id) {
@@ -395,33 +395,25 @@ int main() {
       "{\"scheduler\":\"the scheduler alone, on rows that do nothing: a tick with no row, and what each timed row "
       "adds beyond its own run\",\"bare_tick_instr_mean\":");
   rv32virt::put_u32(floor.bare_tick);
-  rv32virt::puts(",\"row_instr_mean\":");
-  rv32virt::put_u32(floor.per_row);
+  put_field("row_instr_mean", floor.per_row);
   // What timing every run of full control's rows costs a tick at that price.
-  rv32virt::puts(",\"full_row_timing_instr_mean\":");
-  rv32virt::put_u32(full.ticks == 0 ? 0 : floor.per_row * full.row_runs / full.ticks);
+  put_field("full_row_timing_instr_mean", full.ticks == 0 ? 0 : floor.per_row * full.row_runs / full.ticks);
   rv32virt::puts("}\n");
   rv32virt::puts(
       "{\"drivers\":\"four DShot frames and one CRSF RC frame (parse, channels, sticks); target: together <= 400 "
       "instructions per tick mean\",\"dshot4_instr_mean\":");
   rv32virt::put_u32(drivers_cost.dshot4_mean);
-  rv32virt::puts(",\"crsf_rc_instr_mean\":");
-  rv32virt::put_u32(drivers_cost.crsf_rc_mean);
-  rv32virt::puts(",\"together_instr_mean\":");
-  rv32virt::put_u32(drivers_cost.dshot4_mean + drivers_cost.crsf_rc_mean);
-  rv32virt::puts(",\"full_radio_dshot_tick_instr_mean\":");
-  rv32virt::put_u32(full_radio.tick_mean);
-  rv32virt::puts(",\"full_tick_instr_mean\":");
-  rv32virt::put_u32(full.tick_mean);
+  put_field("crsf_rc_instr_mean", drivers_cost.crsf_rc_mean);
+  put_field("together_instr_mean", drivers_cost.dshot4_mean + drivers_cost.crsf_rc_mean);
+  put_field("full_radio_dshot_tick_instr_mean", full_radio.tick_mean);
+  put_field("full_tick_instr_mean", full.tick_mean);
   rv32virt::puts("}\n");
   rv32virt::puts(
       "{\"summary\":\"full-control tick with link, telemetry at 100 Hz and logger; targets: mean <= 2400, scheduler "
       "overhead <= 150, max <= 8000 instructions, float_over_fixed >= 10\",\"full_tick_instr_mean\":");
   rv32virt::put_u32(full.tick_mean);
-  rv32virt::puts(",\"scheduler_overhead_instr_mean\":");
-  rv32virt::put_u32(full.overhead_mean);
-  rv32virt::puts(",\"full_float_tick_instr_mean\":");
-  rv32virt::put_u32(full_float.tick_mean);
+  put_field("scheduler_overhead_instr_mean", full.overhead_mean);
+  put_field("full_float_tick_instr_mean", full_float.tick_mean);
   rv32virt::puts(",\"float_over_fixed\":");
   rv32virt::put_ratio(full_float.tick_mean, full.tick_mean == 0 ? 1 : full.tick_mean);
   rv32virt::puts("}\n");

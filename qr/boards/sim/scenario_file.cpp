@@ -205,6 +205,13 @@ class Reader {
       if (!get_number(w[3], e.value, what)) return false;
       return std::abs(e.value) <= limit || fail(action + " " + w[3] + " is beyond +-" + text_of(limit) + " " + what);
     };
+    // A switch between two words: value 1 for the first, 0 for the second.
+    const auto either = [&](Action kind, const char* one, const char* zero, const char* problem) {
+      e.action = kind;
+      if (w.size() != 4 || (w[3] != one && w[3] != zero)) return fail(problem);
+      e.value = w[3] == one ? 1 : 0;
+      return true;
+    };
     bool ok = false;
     if (action == "roll") {
       ok = one_number(Action::roll, "degrees", 90);
@@ -249,21 +256,9 @@ class Reader {
       e.action = Action::wind;
       ok = vector_for(w, e, "m/s, world axes");
     } else if (action == "link") {
-      e.action = Action::link;
-      if (w.size() == 4 && (w[3] == "on" || w[3] == "off")) {
-        e.value = w[3] == "on" ? 1 : 0;
-        ok = true;
-      } else {
-        ok = fail("link is 'on' or 'off'");
-      }
+      ok = either(Action::link, "on", "off", "link is 'on' or 'off'");
     } else if (action == "console") {
-      e.action = Action::console;
-      if (w.size() == 4 && (w[3] == "full" || w[3] == "normal")) {
-        e.value = w[3] == "full" ? 1 : 0;
-        ok = true;
-      } else {
-        ok = fail("console is 'full' (the line's full rate) or 'normal'");
-      }
+      ok = either(Action::console, "full", "normal", "console is 'full' (the line's full rate) or 'normal'");
     } else if (action == "log") {
       if (w.size() == 4 && w[3] == "start") {
         e.action = Action::log_start;
