@@ -89,7 +89,17 @@ namespace wire {
       "radio: the channel of the mode switch, read when arming: low manual, centre yaw control, high full " \
       "control") \
   ROW(motor_poles, 35, 0, 2, 36, 14, "magnet poles", \
-      "the engines' motors: RPM = the ESC's eRPM (bidirectional DShot) / (poles / 2)")
+      "the engines' motors: RPM = the ESC's eRPM (bidirectional DShot) / (poles / 2)") \
+  ROW(gyro_scale_x_ppm, 36, 0, -100000, 100000, 0, "ppm", \
+      "the gyro's x axis reads this many parts per million more than its nominal 65.5 LSB per deg/s " \
+      "(10000: 1 % high; the MPU-6050 allows +-3 %); the firmware divides it out. A calibration with " \
+      "gyro_turns measures it") \
+  ROW(gyro_scale_y_ppm, 37, 0, -100000, 100000, 0, "ppm", "the same for the gyro's y axis") \
+  ROW(gyro_scale_z_ppm, 38, 0, -100000, 100000, 0, "ppm", "the same for the gyro's z axis") \
+  ROW(gyro_turns, 39, 0, 0, 10, 0, "turns", \
+      "the next calibration, after its half second at rest, waits while the vehicle is turned this many " \
+      "whole turns about one body axis and set down still, and sets that axis' gyro_scale_*_ppm from the " \
+      "rate it summed (docs/signal-chain.md); back to 0 when it ends, found or not. 0: a calibration at rest")
 
 enum class ParamId : uint8_t {
 #define WIRE_PARAMETER_ENUMERATOR(name, id, frac_bits, min, max, default_value, unit, meaning) name = id,

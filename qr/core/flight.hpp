@@ -116,6 +116,7 @@ class Flight {
   void run_filter() { chain_.filter(sample_); }
   void run_calibration() {
     if (chain_.calibrate()) {
+      if (const chain::GyroTurnsResult* turns = chain_.take_gyro_turns()) take_gyro_turns(*turns);
       safety_.calibration_finished();
       enter_modes();
     }
@@ -185,6 +186,7 @@ class Flight {
   void send_download_parts();
   void send_owed_reports();
   void take_sticks();
+  void take_gyro_turns(const chain::GyroTurnsResult& turns);
   // Parameter fan-out, when a parameter changes (never per tick): the safety machine's limits
   // and the chain's coefficients. The task rates that are parameters are read by the scheduler
   // through the task table.

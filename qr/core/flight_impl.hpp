@@ -166,6 +166,25 @@ template <SignalChain Chain>
   });
 }
 
+// A turn measurement's end (gyro_turns.hpp): a found scale becomes its axis' parameter, the turns
+// go back to 0 (the next calibration is one at rest again), and the console is told both.
+template <SignalChain Chain>
+[[gnu::noinline]] void Flight<Chain>::take_gyro_turns(const chain::GyroTurnsResult& turns) {
+  using wire::ParamId;
+  static constexpr ParamId kScale[3] = {ParamId::gyro_scale_x_ppm, ParamId::gyro_scale_y_ppm, ParamId::gyro_scale_z_ppm};
+  static constexpr const char* kFound[3] = {"gyro turns: x scale set\n", "gyro turns: y scale set\n",
+                                            "gyro turns: z scale set\n"};
+  if (turns.found) params_.set(static_cast<uint8_t>(kScale[turns.axis]), turns.ppm);
+  params_.set(static_cast<uint8_t>(ParamId::gyro_turns), 0);
+  apply_parameters();
+  say(turns.found ? kFound[turns.axis] : "gyro turns: no turn of the count asked for, scales unchanged\n");
+  // The rows gyro_scale_x_ppm .. gyro_turns, with any reports still owed.
+  const uint8_t first = static_cast<uint8_t>(ParamId::gyro_scale_x_ppm) - 1;
+  const uint8_t end = static_cast<uint8_t>(ParamId::gyro_turns);
+  if (report_next_ >= report_end_ || report_next_ > first) report_next_ = first;
+  if (report_end_ < end) report_end_ = end;
+}
+
 template <SignalChain Chain>
 void Flight<Chain>::say(const char* text) {
   while (*text != '\0') {

@@ -8,6 +8,7 @@
 
 #include <common/parameter_table.hpp>
 #include <qr/core/board.hpp>
+#include <qr/core/chain/gyro_turns.hpp>
 #include <qr/core/flight_types.hpp>
 
 namespace qr {
@@ -27,6 +28,8 @@ concept SignalChain = requires(C& c, const C& cc, const wire::ParameterValues& p
   // tasks
   c.filter(sample);
   {c.calibrate()};  // true once the running calibration has finished
+  // then, once, a gyro scale measurement's result when the run measured turns, else nullptr
+  {c.take_gyro_turns()};
   c.estimate_accel_angles();
   c.estimate();
   c.estimate_height();

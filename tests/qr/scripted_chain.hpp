@@ -54,6 +54,7 @@ struct ScriptedChain {
     return run_samples_ == calibration_samples;
   }
   bool calibrated() const { return calibrated_; }
+  const chain::GyroTurnsResult* take_gyro_turns() { return nullptr; }
   void enter_calibration() {
     ++calibrations_entered;
     run_samples_ = 0;

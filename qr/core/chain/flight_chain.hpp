@@ -26,6 +26,7 @@
 #include <qr/core/chain/controllers.hpp>
 #include <qr/core/chain/engine_mixer.hpp>
 #include <qr/core/chain/fixed_numbers.hpp>
+#include <qr/core/chain/gyro_turns.hpp>
 #include <qr/core/chain/height_estimator.hpp>
 #include <qr/core/chain/landed_detector.hpp>
 #include <qr/core/chain/pilot_setpoints.hpp>
@@ -66,6 +67,12 @@ class FlightChain {
   void set_parameters(const wire::ParameterValues& p) {
     using wire::ParamId;
     filters_.set_cutoff(p.get(ParamId::filter_cutoff_hz));
+    const Rate per_count[3] = {Units::rate_per_count(p.get(ParamId::gyro_scale_x_ppm)),
+                               Units::rate_per_count(p.get(ParamId::gyro_scale_y_ppm)),
+                               Units::rate_per_count(p.get(ParamId::gyro_scale_z_ppm))};
+    filters_.set_gyro_scale(per_count);
+    calibration_.set_gyro_scale(per_count);
+    gyro_turns_ = p.get(ParamId::gyro_turns);
     estimator_.set_divisors(p.get(ParamId::attitude_c1), p.get(ParamId::attitude_c2));
     estimator_.set_lag(p.get(ParamId::accel_lag_ms));
     landed_.set_takeoff(p.get(ParamId::takeoff_mg));
@@ -93,8 +100,13 @@ class FlightChain {
   // Task "calibration": averages the samples filter() was given; true once this run is done.
   // A run starts at enter_calibration() (the calibration mode's entry action). A finished run
   // restarts the estimator from the accelerometer's angles; until the next run finishes, the
-  // previous offsets stay in use.
+  // previous offsets stay in use. With the gyro_turns parameter set, the run goes on after the
+  // average with the turns (gyro_turns.hpp), and is done when they end (gyro_turns_ended()).
   bool calibrate() {
+    if (turns_.running()) {
+      turns_ended_ = turns_.add(sample_);
+      return turns_ended_;
+    }
     // At a run's first sample the filters start over: they settle on the next one (the vehicle is
     // at rest), so what they hold when the run ends is made of the run's own samples, whatever
     // ran before it. A replay of a recording that starts with the run (docs/replay.md) then
@@ -106,13 +118,27 @@ class FlightChain {
     if (done && !was_done) {
       estimator_.restart();
       height_.zero_reference();  // the height estimate counts from here
+      if (gyro_turns_ > 0) {
+        turns_.start(gyro_turns_, calibration_.gyro_offset_counts());
+        return false;
+      }
     }
     return done;
   }
+  // When the run calibrate() has just finished measured turns: their result, once (the flight
+  // writes it to the parameters and sets gyro_turns back to 0); else nullptr.
+  const chain::GyroTurnsResult* take_gyro_turns() {
+    if (!turns_ended_) return nullptr;
+    turns_ended_ = false;
+    return &turns_.result();
+  }
+  const chain::GyroTurns<SampleHz>& gyro_turns() const { return turns_; }
   // The attitude estimator starts over from the accelerometer's angles, with no bias, at its next
   // run (for a vehicle at rest: its divisors changed on the ground).
   void restart_estimator() { estimator_.restart(); }
   void enter_calibration() {
+    turns_.cancel();
+    turns_ended_ = false;
     calibration_.restart();
     height_.restart_calibration();
   }
@@ -360,6 +386,9 @@ class FlightChain {
 
   chain::SensorFilters<Num, SampleHz> filters_{chain::parameter_spec(wire::ParamId::filter_cutoff_hz).default_value};
   chain::SensorCalibration<Num> calibration_;
+  chain::GyroTurns<SampleHz> turns_;
+  int32_t gyro_turns_ = 0;  // the parameter: turns the next calibration run measures after its average
+  bool turns_ended_ = false;
   chain::AttitudeEstimator<Num, SampleHz> estimator_;
   chain::HeightEstimator<Num, kHeightRunHz> height_;
   chain::PilotSetpoints<Num> pilot_;

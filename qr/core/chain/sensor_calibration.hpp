@@ -40,11 +40,19 @@ class SensorCalibration {
     accel_sum_[2] += Units::kCountsPerGInt;
     if (++count_ < kCalibrationSamples) return false;
     for (int i = 0; i < 3; ++i) {
-      gyro_offset_[i] = Units::template rate_of<kCalibrationShift>(gyro_sum_[i]);
+      gyro_offset_counts_[i] = gyro_sum_[i];
       accel_offset_[i] = Units::template accel_of<kCalibrationShift>(accel_sum_[i]);
     }
     done_ = true;
+    convert_gyro_offsets();
     return true;
+  }
+
+  // The rate of one count per gyro axis (SensorUnits::rate_per_count): the offsets in use are
+  // converted again, so a scale that changes after a calibration leaves no offset behind.
+  void set_gyro_scale(const Rate (&per_count)[3]) {
+    for (int i = 0; i < 3; ++i) per_count_[i] = per_count[i];
+    convert_gyro_offsets();
   }
 
   // At least one calibration has finished since start-up.
@@ -52,14 +60,25 @@ class SensorCalibration {
   int32_t samples() const { return count_; }
 
   Rate gyro_offset(int axis) const { return gyro_offset_[axis]; }
+  // The gyro offsets in raw counts with kCalibrationShift fractional bits (the sums themselves).
+  const int32_t (&gyro_offset_counts() const)[3] { return gyro_offset_counts_; }
   Accel accel_offset(int axis) const { return accel_offset_[axis]; }
 
  private:
+  void convert_gyro_offsets() {
+    if (!done_) return;
+    for (int i = 0; i < 3; ++i) {
+      gyro_offset_[i] = Units::template rate_of<kCalibrationShift>(gyro_offset_counts_[i], per_count_[i]);
+    }
+  }
+
   // 512 int16 samples: |sum| < 2^24, far inside int32.
   int32_t gyro_sum_[3] = {0, 0, 0};
   int32_t accel_sum_[3] = {0, 0, 0};
   int32_t count_ = 0;
   bool done_ = false;
+  int32_t gyro_offset_counts_[3] = {0, 0, 0};
+  Rate per_count_[3] = {Units::rate_per_count(0), Units::rate_per_count(0), Units::rate_per_count(0)};
   Rate gyro_offset_[3] = {};
   Accel accel_offset_[3] = {};
 };

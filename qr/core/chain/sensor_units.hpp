@@ -24,6 +24,7 @@ struct SensorUnits {
   static constexpr CountScale kCountsPerRadPerSec = CountScale(sensor::kGyroCountsPerRadPerSec);
   static constexpr CountScale kCountsPerG = CountScale(sensor::kAccelCountsPerG);
   static constexpr int32_t kCountsPerGInt = static_cast<int32_t>(sensor::kAccelCountsPerG);
+  static constexpr int32_t kMillion = 1000000;
 
  private:
   // counts x scale in T's format, as product() computes it: narrow() of the exact product. Where
@@ -51,6 +52,27 @@ struct SensorUnits {
   template <int Frac = 0>
   static constexpr Rate rate_of(int32_t counts) {
     return scaled<Rate, Frac>(counts, kRadPerSecPerCount);
+  }
+
+  // The rate of one count on a gyro axis that reads `ppm` parts per million more than nominal
+  // (parameters gyro_scale_{x,y,z}_ppm): the nominal scale / (1 + ppm 1e-6), rounded to Rate's
+  // lsb. In Q<27> the nominal is 35764 lsb, so the rounding is 28 ppm at most; 0 ppm gives the
+  // nominal exactly (SensorUnits.GyroScaleOfZeroIsTheNominal), so a default vehicle computes what
+  // it did without the correction.
+  static constexpr Rate rate_per_count(int32_t ppm) {
+    using Gain = typename N::Coefficient;  // 1e6 / (1e6 + ppm) lies in [0.9, 1.12)
+    return product<Rate>(kRadPerSecPerCount, N::template ratio<Gain>(kMillion, kMillion + ppm));
+  }
+  // counts (with Frac fractional bits) x the rate of one count: product()'s result. With whole
+  // counts the Q product needs no rounding and cannot wrap (32768 counts x under 2^16 lsb), so
+  // it is one 32-bit multiply, as scaled() makes of a constant scale.
+  template <int Frac = 0>
+  static constexpr Rate rate_of(int32_t counts, Rate per_count) {
+    if constexpr (fx::is_q<Rate> && Frac == 0) {
+      return Rate::from_raw(static_cast<int32_t>(static_cast<uint32_t>(counts) * static_cast<uint32_t>(per_count.raw())));
+    } else {
+      return product<Rate>(N::template fixed<Frac>(counts), per_count);
+    }
   }
   template <int Frac = 0>
   static constexpr Accel accel_of(int32_t counts) {
