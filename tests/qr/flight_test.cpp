@@ -445,6 +445,47 @@ TEST_F(FlightTest, ParameterSetIsRangeCheckedAppliedAndReported) {
   }
 }
 
+// A calibration that measured turns (gyro_turns.hpp): a found scale becomes its axis' parameter,
+// gyro_turns goes back to 0 found or not (the next calibration is one at rest, not a minute's wait
+// for a turn nobody makes), and the console gets the four values and a line saying what happened.
+TEST_F(FlightTest, ATurnMeasurementSetsItsAxisScaleAndEndsTheTurns) {
+  using wire::ParamId;
+  auto value = [&](ParamId id) { return flight.parameters().get(id); };
+  send(wire::ParamSet{++seq, static_cast<uint8_t>(ParamId::gyro_turns), 2});
+  send(wire::ParamSet{++seq, static_cast<uint8_t>(ParamId::gyro_scale_x_ppm), -700});
+  run_ms(5);
+  ASSERT_EQ(value(ParamId::gyro_turns), 2);
+  received.clear();
+
+  flight.chain().turns_scripted = true;
+  flight.chain().turns_result = {true, 2, 23456};
+  calibrate();
+  run_ms(10);
+  EXPECT_EQ(value(ParamId::gyro_scale_z_ppm), 23456);
+  EXPECT_EQ(value(ParamId::gyro_scale_x_ppm), -700);
+  EXPECT_EQ(value(ParamId::gyro_turns), 0);
+  std::vector<std::pair<uint8_t, int32_t>> reports;
+  for (const auto& r : got<wire::ParamReport>()) reports.emplace_back(r.id, r.value);
+  const std::vector<std::pair<uint8_t, int32_t>> expected = {{static_cast<uint8_t>(ParamId::gyro_scale_x_ppm), -700},
+                                                             {static_cast<uint8_t>(ParamId::gyro_scale_y_ppm), 0},
+                                                             {static_cast<uint8_t>(ParamId::gyro_scale_z_ppm), 23456},
+                                                             {static_cast<uint8_t>(ParamId::gyro_turns), 0}};
+  EXPECT_EQ(reports, expected);
+  EXPECT_NE(debug_text().find("gyro turns: z scale set"), std::string::npos) << debug_text();
+
+  // Not found: the scales stay, the turns still end.
+  send(wire::ParamSet{++seq, static_cast<uint8_t>(ParamId::gyro_turns), 1});
+  run_ms(5);
+  received.clear();
+  flight.chain().turns_scripted = true;
+  flight.chain().turns_result = {};
+  calibrate();
+  run_ms(10);
+  EXPECT_EQ(value(ParamId::gyro_scale_z_ppm), 23456);
+  EXPECT_EQ(value(ParamId::gyro_turns), 0);
+  EXPECT_NE(debug_text().find("no turn"), std::string::npos) << debug_text();
+}
+
 TEST_F(FlightTest, ExitIsConfirmedThenTheFirmwareStops) {
   send(wire::Exit{++seq});
   for (int i = 0; i < 100 && flight.running(); ++i) run_ms(1);

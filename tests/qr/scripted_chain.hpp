@@ -54,7 +54,14 @@ struct ScriptedChain {
     return run_samples_ == calibration_samples;
   }
   bool calibrated() const { return calibrated_; }
-  const chain::GyroTurnsResult* take_gyro_turns() { return nullptr; }
+  // A run with turns: what the next finished calibration run says the turns gave, once.
+  bool turns_scripted = false;
+  chain::GyroTurnsResult turns_result{};
+  const chain::GyroTurnsResult* take_gyro_turns() {
+    if (!turns_scripted) return nullptr;
+    turns_scripted = false;
+    return &turns_result;
+  }
   void enter_calibration() {
     ++calibrations_entered;
     run_samples_ = 0;
