@@ -135,6 +135,7 @@ void apply(const Event& e, Hands& hands, Pilot& pilot, FullLineConsole* console,
     case Action::param: pilot.set_parameter(e.param, e.raw); break;
     case Action::torque:
     case Action::force: break;  // apply_pushes, every tick while they last
+    case Action::turn: break;   // the flight's loop starts it, to report a refusal
     case Action::wind: plant.set_wind(e.vector); break;
     case Action::link:
       pilot.go_silent(e.value == 0);
@@ -397,8 +398,15 @@ ScenarioResult run_scenario(const ScenarioScript& script, const RunOptions& opti
     if (phase == Phase::manoeuvre) {
       const double since = t - rec.t0;
       while (next_event < script.events.size() && script.events[next_event].at_s <= since + 1e-9) {
-        apply(script.events[next_event++], hands, pilot, console.get(), plant);
+        const Event& e = script.events[next_event++];
+        apply(e, hands, pilot, console.get(), plant);
+        const std::string refused = e.action == Action::turn ? qr->world().start_hand_turn(e.turn) : "";
+        if (!refused.empty()) {
+          result.error = script.origin + ":" + std::to_string(e.line) + ": the turn was refused: " + refused;
+          break;
+        }
       }
+      if (!result.error.empty()) break;
       apply_pushes(script, since, plant);
       pilot.set_sticks(hands.sticks(plant, qr->parameters()));
     }
