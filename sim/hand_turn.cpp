@@ -20,7 +20,8 @@ Vec3 unit(BodyAxis axis) {
 double hand_turn_peak_rate(const HandTurnSpec& spec) { return 2 * kTwoPi * std::abs(spec.turns) / spec.seconds; }
 
 std::string hand_turn_problem(const HandTurnSpec& spec) {
-  if (spec.turns == 0 || std::abs(spec.turns) > kMaxHandTurns) return "turns must be a whole number, not 0, within +-10";
+  if (spec.turns == 0 || std::abs(spec.turns) > kMaxHandTurns)
+    return "turns must be a whole number, not 0, within +-10";
   if (!(spec.seconds >= kMinHandTurnSeconds && spec.seconds <= kMaxHandTurnSeconds)) {
     return "a turn takes 0.5 .. 60 s";
   }

@@ -84,8 +84,7 @@ VibrationSample World::vibration() const {
 
 SensorReading World::sample() {
   SensorReading out;
-  const Vec3 specific_force =
-      hand_ ? held_specific_force(plant_.state().attitude, kGravity) : plant_.specific_force();
+  const Vec3 specific_force = hand_ ? held_specific_force(plant_.state().attitude, kGravity) : plant_.specific_force();
   out.imu = imu_.sample(plant_.state().rate, specific_force, vibration());
   out.battery_mv = battery_sensor_.read_mv(plant_.battery_volts());
   out.pressure_pa = barometer_.pressure_pa();

@@ -78,8 +78,8 @@ TEST_P(HandTurnAbout, GyroIntegratesTheTurnTimesItsScaleAndTheVehicleIsPutBack) 
     EXPECT_NEAR(after.attitude.x, before.attitude.x, 1e-9);
     EXPECT_NEAR(after.attitude.y, before.attitude.y, 1e-9);
     EXPECT_NEAR(after.attitude.z, before.attitude.z, 1e-9);
-    for (const double v : {after.velocity.x, after.velocity.y, after.velocity.z, after.rate.x, after.rate.y,
-                           after.rate.z})
+    for (const double v :
+         {after.velocity.x, after.velocity.y, after.velocity.z, after.rate.x, after.rate.y, after.rate.z})
       EXPECT_EQ(v, 0.0);
     EXPECT_EQ(after.position.x, before.position.x);
     EXPECT_EQ(after.position.y, before.position.y);
@@ -181,13 +181,14 @@ double max_of(const std::vector<double>& v) {
 TEST(HandTurn, AScenarioTurnsTheVehicleInSafe) {
   qrsim::ScenarioScript script;
   std::string error;
-  ASSERT_TRUE(qrsim::parse_scenario("seconds: 7.5\n"
-                                    "start: safe\n"
-                                    "at 0.5 turn z 2 for 4\n"
-                                    "at 5 turn x -1 for 2\n"
-                                    "band final_mode == safe\n"
-                                    "band final_upright == 1\n",
-                                    "turns", "turns.txt", script, error))
+  ASSERT_TRUE(
+      qrsim::parse_scenario("seconds: 7.5\n"
+                            "start: safe\n"
+                            "at 0.5 turn z 2 for 4\n"
+                            "at 5 turn x -1 for 2\n"
+                            "band final_mode == safe\n"
+                            "band final_upright == 1\n",
+                            "turns", "turns.txt", script, error))
       << error;
   qrsim::RunOptions options;
   options.trace_path = ::testing::TempDir() + "hand_turn_trace.csv";
