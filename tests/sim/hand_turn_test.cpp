@@ -198,6 +198,7 @@ TEST(HandTurn, AScenarioTurnsTheVehicleInSafe) {
   EXPECT_EQ(r.final_mode, "safe");
   EXPECT_LT(r.figure("drift_m_end"), 1e-6);
   EXPECT_LT(r.figure("speed_m_s_end"), 1e-6);
+  EXPECT_TRUE(std::isnan(r.figure("touchdown_speed_m_s"))) << "set down by a hand, not landed";
   const auto trace = read_trace(options.trace_path);
   ASSERT_GT(trace.at("r_rad_s").size(), 5000u);
   EXPECT_NEAR(max_of(trace.at("r_rad_s")), 4 * std::numbers::pi * 2 / 4, 1e-3);

@@ -229,7 +229,8 @@ void record_tick(FlightRecord& rec, double t, uint8_t mode, FlyingQr& qr, uint16
   // Touchdown: the first tick with a contact point on the ground after one with none. The speed
   // is the last airborne tick's (at most one control period, 0.01 m/s of free fall, earlier):
   // the contact's damper stops the vehicle within a millisecond.
-  const bool in_air = plant.deepest_contact() < 0;
+  // A vehicle in a hand (a turn event) is neither flying nor landing when it is set down.
+  const bool in_air = plant.deepest_contact() < 0 && !qr.world().held();
   if (airborne && !in_air && std::isnan(rec.touchdown_speed)) {
     rec.touchdown_speed = last_down_speed;
     rec.touchdown_at = t;
