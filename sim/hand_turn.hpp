@@ -18,7 +18,7 @@ enum class BodyAxis : uint8_t { x, y, z };
 struct HandTurnSpec {
   BodyAxis axis = BodyAxis::z;
   int turns = 1;  // whole turns, negative the other way
-  double seconds = 1;
+  double seconds = 2;
 };
 
 // The limits a turn must keep, so the gyro (±500 °/s, sim/imu.hpp) can read it.
