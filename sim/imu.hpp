@@ -37,6 +37,7 @@ class Imu {
   // The errors drawn at turn-on, in physical units (what calibration has to remove).
   const Vec3& gyro_bias() const { return gyro_bias_; }    // rad/s
   const Vec3& accel_bias() const { return accel_bias_; }  // m/s²
+  const Vec3& gyro_scale() const { return gyro_scale_; }  // factors, 1 + the sensitivity error
   double low_pass_hz() const { return bandwidth_hz_; }
 
   // Noise standard deviation of one sample, physical units.

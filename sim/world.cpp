@@ -47,10 +47,33 @@ void World::advance_to(uint64_t time_us) {
     const uint32_t step = next_step_us(time_us);
     plant_.step(static_cast<double>(step) * 1e-6);
     now_us_ += step;
+    if (hand_) hold();
     ++steps_taken_;
     // The barometer converts over milliseconds on its own clock, not at the kicks.
     barometer_.step(now_us_, altitude_m());
   }
+}
+
+std::string World::start_hand_turn(const HandTurnSpec& spec) {
+  for (const uint16_t command : plant_.engines()) {
+    if (command != 0) return "the engines are running (safe first)";
+  }
+  if (hand_) return "a turn is under way";
+  hand_.emplace(plant_.state().attitude, spec, now_us_);
+  held_position_ = plant_.state().position;
+  hold();
+  return "";
+}
+
+// The rotors and the battery run on as the step made them; the pose is the hand's alone.
+void World::hold() {
+  PlantState s = plant_.state();
+  s.position = held_position_;
+  s.velocity = {};
+  s.attitude = hand_->attitude(now_us_);
+  s.rate = hand_->rate(now_us_);
+  plant_.set_state(s);
+  if (hand_->done(now_us_)) hand_.reset();
 }
 
 VibrationSample World::vibration() const {
@@ -61,7 +84,8 @@ VibrationSample World::vibration() const {
 
 SensorReading World::sample() {
   SensorReading out;
-  out.imu = imu_.sample(plant_.state().rate, plant_.specific_force(), vibration());
+  const Vec3 specific_force = hand_ ? held_specific_force(plant_.state().attitude, kGravity) : plant_.specific_force();
+  out.imu = imu_.sample(plant_.state().rate, specific_force, vibration());
   out.battery_mv = battery_sensor_.read_mv(plant_.battery_volts());
   out.pressure_pa = barometer_.pressure_pa();
   return out;

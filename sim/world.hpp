@@ -6,8 +6,12 @@
 
 #include <stdint.h>
 
+#include <optional>
+#include <string>
+
 #include <sim/barometer.hpp>
 #include <sim/battery_sensor.hpp>
+#include <sim/hand_turn.hpp>
 #include <sim/imu.hpp>
 #include <sim/quadrotor.hpp>
 #include <sim/vibration.hpp>
@@ -42,6 +46,13 @@ class World {
   // Physics steps taken so far, fine and coarse (for the benchmark and the tests).
   uint64_t steps_taken() const { return steps_taken_; }
 
+  // A hand takes the vehicle now and turns it (hand_turn.hpp); while it holds, the physics does
+  // not move the body and the IMU reads the turn. Refused (the reason returned, nothing done)
+  // while an engine command is not zero, a hand in the rotors, or while a turn is under way;
+  // empty once the turn has begun. The spec must keep hand_turn_problem's limits.
+  std::string start_hand_turn(const HandTurnSpec& spec);
+  bool held() const { return hand_.has_value(); }
+
   // What the sensors read at this instant.
   SensorReading sample();
   // The vibration the IMU would add now (for tests and plots).
@@ -60,8 +71,12 @@ class World {
   Imu imu_;
   BatterySensor battery_sensor_;
   Barometer barometer_;
+  std::optional<HandTurn> hand_;
+  Vec3 held_position_;
   // The step that may be taken from now towards `time_us`.
   uint32_t next_step_us(uint64_t time_us) const;
+  // The hand's pose over what the step made of the body; the hand lets go at the turn's end.
+  void hold();
 
   uint32_t step_us_;
   uint32_t free_flight_step_us_;

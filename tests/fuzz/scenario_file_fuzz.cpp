@@ -2,7 +2,7 @@
 // Checks, beyond what ASan and UBSan catch: a refused text says where (the origin, then a line
 // number within the text, or the origin alone for what is missing at the end); an accepted one
 // is consistent: events in time order inside the window, at least one band, every band on a
-// known figure, every number finite.
+// known figure, every number finite, every hand turn within its limits and after the last one.
 #include <stddef.h>
 #include <stdint.h>
 
@@ -34,11 +34,14 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   require(std::isfinite(script.seconds) && script.seconds > 0);
   require(!script.bands.empty());
   for (const qrsim::Band& b : script.bands) require(qrsim::is_figure(b.figure) && std::isfinite(b.limit));
-  double previous = 0;
+  double previous = 0, turned_until = 0;
   for (const qrsim::Event& e : script.events) {
     require(std::isfinite(e.at_s) && e.at_s >= previous && e.at_s < script.seconds);
     require(std::isfinite(e.value) && std::isfinite(e.duration_s));
     previous = e.at_s;
+    if (e.action != qrsim::Action::turn) continue;
+    require(sim::hand_turn_problem(e.turn).empty() && e.at_s >= turned_until);
+    turned_until = e.at_s + e.turn.seconds;
   }
   return 0;
 }

@@ -1,7 +1,8 @@
 // Fuzz target: arbitrary lines into the simulator's truth channel (qrsim --truth-fd,
 // qr/boards/sim/truth_channel.cpp). Beyond what ASan and UBSan catch: a refused line says why; an
-// accepted push is finite and within the channel's bounds (10 N m, 10 s); an accepted radio arm names
-// a mode the radio's arm switch arms.
+// accepted push is finite and within the channel's bounds (10 N m, 10 s); an accepted turn keeps
+// the hand turn's limits (sim/hand_turn.hpp); an accepted radio arm names a mode the radio's arm
+// switch arms.
 #include <stddef.h>
 #include <stdint.h>
 
@@ -24,6 +25,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     return 0;
   }
   if (push.kind == qrsim::TruthCommand::Kind::reset || push.kind == qrsim::TruthCommand::Kind::radio_off) return 0;
+  if (push.kind == qrsim::TruthCommand::Kind::turn) {
+    require(sim::hand_turn_problem(push.turn).empty() && push.turn.turns != 0);
+    return 0;
+  }
   if (push.kind == qrsim::TruthCommand::Kind::radio_arm) {
     require(wire::flies(push.mode) && push.mode != wire::Mode::height_hold);  // what an arm switch can arm
     return 0;

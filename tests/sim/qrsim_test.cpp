@@ -117,82 +117,138 @@ TEST(Qrsim, ServesStdio) {
   expect_a_live_qr(heard, 2.0);
 }
 
-// The side channel (--truth-fd): truth lines every 20 ms of simulated time, a bad command answered
-// with an error line, and a push that tips the QR where it stands (roll moves by more than a degree).
-TEST(Qrsim, TruthChannelReportsAndPushes) {
-  int pair[2];
-  ASSERT_EQ(socketpair(AF_UNIX, SOCK_STREAM, 0, pair), 0);
-  const pid_t pid = fork();
-  ASSERT_GE(pid, 0);
-  if (pid == 0) {
-    close(pair[0]);  // first: it may be descriptor 3
-    dup2(pair[1], 3);
-    const int null = open("/dev/null", O_RDWR);
-    dup2(null, STDIN_FILENO);
-    dup2(null, STDOUT_FILENO);
-    execl(QRSIM_PATH, "qrsim", "--serve", "--stdio", "--seconds", "4", "--truth-fd", "3", static_cast<char*>(nullptr));
-    _exit(127);
+// qrsim --serve with the side channel (--truth-fd) on a socket, for `seconds`: command lines in,
+// the lines it answers collected.
+class TruthSide {
+ public:
+  explicit TruthSide(const char* seconds) {
+    int pair[2];
+    if (socketpair(AF_UNIX, SOCK_STREAM, 0, pair) != 0) return;
+    pid_ = fork();
+    if (pid_ == 0) {
+      close(pair[0]);  // first: it may be descriptor 3
+      dup2(pair[1], 3);
+      const int null = open("/dev/null", O_RDWR);
+      dup2(null, STDIN_FILENO);
+      dup2(null, STDOUT_FILENO);
+      execl(QRSIM_PATH, "qrsim", "--serve", "--stdio", "--seconds", seconds, "--truth-fd", "3",
+            static_cast<char*>(nullptr));
+      _exit(127);
+    }
+    close(pair[1]);
+    fd_ = pair[0];
   }
-  close(pair[1]);
-  const int fd = pair[0];
-  std::string pending;
-  std::vector<std::string> lines;
-  const auto listen = [&](double seconds) {
+  bool started() const { return pid_ > 0 && fd_ >= 0; }
+
+  void send(const std::string& line) {
+    ASSERT_EQ(write(fd_, line.data(), line.size()), static_cast<ssize_t>(line.size()));
+  }
+  // Collects lines for `seconds` of wall-clock time.
+  void listen(double seconds) {
     const auto end = Clock::now() + std::chrono::duration<double>(seconds);
     while (Clock::now() < end) {
-      pollfd p{fd, POLLIN, 0};
+      pollfd p{fd_, POLLIN, 0};
       if (poll(&p, 1, 10) <= 0) continue;
       char buffer[1024];
-      const ssize_t n = read(fd, buffer, sizeof buffer);
+      const ssize_t n = read(fd_, buffer, sizeof buffer);
       if (n <= 0) break;
       for (ssize_t i = 0; i < n; ++i) {
         if (buffer[i] == '\n') {
-          lines.push_back(pending);
-          pending.clear();
+          lines.push_back(pending_);
+          pending_.clear();
         } else {
-          pending += buffer[i];
+          pending_ += buffer[i];
         }
       }
     }
-  };
-  const auto roll_of = [](const std::string& line) {
-    const size_t at = line.find(" roll=");
-    return at == std::string::npos ? std::nan("") : std::strtod(line.c_str() + at + 6, nullptr);
-  };
-  const auto last_truth = [&]() -> std::string {
+  }
+  std::string last_truth() const {
     for (auto it = lines.rbegin(); it != lines.rend(); ++it)
       if (it->rfind("truth t=", 0) == 0) return *it;
     return "";
-  };
-  listen(1.0);
+  }
+  // Waits for the program's end: its exit status.
+  int finish() {
+    close(fd_);
+    int status = 0;
+    waitpid(pid_, &status, 0);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+
+  std::vector<std::string> lines;
+
+ private:
+  pid_t pid_ = -1;
+  int fd_ = -1;
+  std::string pending_;
+};
+
+// A truth line's field ("roll", "height", ...); NaN when the line has none.
+double field_of(const std::string& line, const std::string& name) {
+  const size_t at = line.find(" " + name + "=");
+  return at == std::string::npos ? std::nan("") : std::strtod(line.c_str() + at + name.size() + 2, nullptr);
+}
+
+// The side channel (--truth-fd): truth lines every 20 ms of simulated time, a bad command answered
+// with an error line, and a push that tips the QR where it stands (roll moves by more than a degree).
+TEST(Qrsim, TruthChannelReportsAndPushes) {
+  TruthSide side("4");
+  ASSERT_TRUE(side.started());
+  side.listen(1.0);
   size_t truths = 0;
-  for (const std::string& l : lines) truths += l.rfind("truth t=", 0) == 0 ? 1 : 0;
+  for (const std::string& l : side.lines) truths += l.rfind("truth t=", 0) == 0 ? 1 : 0;
   EXPECT_GT(truths, 25u);  // 50 a second of simulated time, which runs at wall-clock pace
-  const std::string before = last_truth();
+  const std::string before = side.last_truth();
   ASSERT_FALSE(before.empty());
   EXPECT_NE(before.find(" pitch="), std::string::npos) << before;
   EXPECT_NE(before.find(" height="), std::string::npos) << before;
   EXPECT_NE(before.find(" climb="), std::string::npos) << before;
 
-  const std::string bad = "shove 1 2\n";
-  ASSERT_EQ(write(fd, bad.data(), bad.size()), static_cast<ssize_t>(bad.size()));
-  const std::string push = "push 3 0 0 0.3\n";
-  ASSERT_EQ(write(fd, push.data(), push.size()), static_cast<ssize_t>(push.size()));
+  side.send("shove 1 2\n");
+  side.send("push 3 0 0 0.3\n");
   double most = 0;
-  const size_t from = lines.size();
-  listen(1.0);
+  const size_t from = side.lines.size();
+  side.listen(1.0);
   bool error_seen = false;
-  for (size_t i = from; i < lines.size(); ++i) {
-    if (lines[i].rfind("error unknown command 'shove'", 0) == 0) error_seen = true;
-    const double r = roll_of(lines[i]);
-    if (std::isfinite(r)) most = std::max(most, std::fabs(r - roll_of(before)));
+  for (size_t i = from; i < side.lines.size(); ++i) {
+    if (side.lines[i].rfind("error unknown command 'shove'", 0) == 0) error_seen = true;
+    const double r = field_of(side.lines[i], "roll");
+    if (std::isfinite(r)) most = std::max(most, std::fabs(r - field_of(before, "roll")));
   }
   EXPECT_TRUE(error_seen);
-  EXPECT_GT(most, 1.0) << before << " / " << last_truth();
-  close(fd);
-  int status = 0;
-  waitpid(pid, &status, 0);
-  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+  EXPECT_GT(most, 1.0) << before << " / " << side.last_truth();
+  EXPECT_EQ(side.finish(), 0);
+}
+
+// A hand turn from the side channel (the firmware in safe, engines still): answered "ok turn", a
+// second one while it acts refused, the truth rolls over (half-way round it is upside down) and
+// ends level where it stood.
+TEST(Qrsim, TruthChannelTurnsTheVehicle) {
+  TruthSide side("4");
+  ASSERT_TRUE(side.started());
+  side.listen(0.5);
+  const std::string before = side.last_truth();
+  ASSERT_FALSE(before.empty());
+  side.send("turn x 1 2\n");
+  side.listen(0.3);
+  side.send("turn y 1 2\n");
+  side.listen(2.5);
+  bool accepted = false, refused = false;
+  double most = 0;
+  for (const std::string& l : side.lines) {
+    accepted = accepted || l == "ok turn";
+    refused = refused || l == "error turn: a turn is under way";
+    const double r = field_of(l, "roll");
+    if (std::isfinite(r)) most = std::max(most, std::fabs(r));
+  }
+  EXPECT_TRUE(accepted);
+  EXPECT_TRUE(refused);
+  EXPECT_GT(most, 170.0) << "upside down half-way round";
+  const std::string after = side.last_truth();
+  EXPECT_NEAR(field_of(after, "roll"), field_of(before, "roll"), 0.01) << after;
+  EXPECT_NEAR(field_of(after, "pitch"), field_of(before, "pitch"), 0.01) << after;
+  EXPECT_NEAR(field_of(after, "height"), field_of(before, "height"), 0.001) << after;
+  EXPECT_EQ(side.finish(), 0);
 }
 
 }  // namespace

@@ -109,6 +109,21 @@ TEST(ScenarioFile, ReadsSettingsEventsAndBands) {
   EXPECT_EQ(s.bands[2].limit, static_cast<double>(wire::Mode::safe));
 }
 
+// A hand turn: the axis, whole turns (negative the other way) and the time; one may follow the
+// last as it ends.
+TEST(ScenarioFile, ReadsTurns) {
+  const Parsed p = parse("seconds: 9\nat 0.5 turn y -3 for 5\nat 5.5 turn x 1 for 2\nband final_mode == safe\n");
+  ASSERT_TRUE(p.ok) << p.error;
+  ASSERT_EQ(p.script.events.size(), 2u);
+  const qrsim::Event& e = p.script.events[0];
+  EXPECT_EQ(e.action, qrsim::Action::turn);
+  EXPECT_EQ(e.turn.axis, sim::BodyAxis::y);
+  EXPECT_EQ(e.turn.turns, -3);
+  EXPECT_EQ(e.turn.seconds, 5);
+  EXPECT_EQ(e.line, 2);
+  EXPECT_EQ(p.script.events[1].turn.axis, sim::BodyAxis::x);
+}
+
 TEST(ScenarioFile, DefaultsAreTheVehicleAsWritten) {
   const Parsed p = parse("seconds: 3\nband final_mode == full\n");
   ASSERT_TRUE(p.ok) << p.error;
@@ -166,6 +181,17 @@ const Mistake kMistakes[] = {
     {"seconds: 3\nat 0 torque 0 0 1e9 for 1\n", "mine.txt:2: ", "torque is beyond +-10"},
     {"seconds: 3\nat 0 wind 60 0 0\n", "mine.txt:2: ", "wind is beyond +-50"},
     {"seconds: 3\nat 0 wind 1 1\n", "mine.txt:2: ", "wind needs N E D"},
+    {"seconds: 9\nat 0 turn w 1 for 2\n", "mine.txt:2: ", "turn axis is x, y or z, not 'w'"},
+    {"seconds: 9\nat 0 turn z 1 2\n", "mine.txt:2: ", "turn needs AXIS N for SECONDS"},
+    {"seconds: 9\nat 0 turn z 1.5 for 2\n", "mine.txt:2: ", "turns must be a whole number, not 0"},
+    {"seconds: 9\nat 0 turn z 0 for 2\n", "mine.txt:2: ", "turns must be a whole number, not 0"},
+    {"seconds: 9\nat 0 turn z 11 for 60\n", "mine.txt:2: ", "within +-10"},
+    {"seconds: 9\nat 0 turn z one for 2\n", "mine.txt:2: ", "bad number 'one'"},
+    {"seconds: 9\nat 0 turn z 1 for 0.4\n", "mine.txt:2: ", "a turn takes 0.5 .. 60 s"},
+    {"seconds: 99\nat 0 turn z 1 for 61\n", "mine.txt:2: ", "a turn takes 0.5 .. 60 s"},
+    {"seconds: 9\nat 0 turn z 1 for 1.5\n", "mine.txt:2: ", "beyond the gyro's 8 rad/s"},
+    {"seconds: 9\nat 0 turn z 1 for 2\nat 1.9 turn x 1 for 2\n",
+     "mine.txt:3: ", "starts while the turn of line 2 still acts"},
     {"seconds: 3\nat 0 link maybe\n", "mine.txt:2: ", "link is 'on' or 'off'"},
     {"seconds: 3\nat 0 console fast\n", "mine.txt:2: ", "console is 'full' (the line's full rate) or 'normal'"},
     {"seconds: 3\nat 0 log download flight\n", "mine.txt:2: ", "log is 'start', 'stop' or 'download sensor|telemetry'"},

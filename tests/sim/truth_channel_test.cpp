@@ -29,6 +29,35 @@ TEST(TruthChannel, ParsesAReset) {
   EXPECT_EQ(command.kind, qrsim::TruthCommand::Kind::push) << "a push after a reset is a push";
 }
 
+// A hand turn: axis, whole turns, seconds; the same limits as the scenario event.
+TEST(TruthChannel, ParsesATurn) {
+  qrsim::TruthCommand command;
+  std::string error;
+  ASSERT_TRUE(qrsim::parse_truth_command(" turn x -2 4\r", command, error)) << error;
+  EXPECT_EQ(command.kind, qrsim::TruthCommand::Kind::turn);
+  EXPECT_EQ(command.turn.axis, sim::BodyAxis::x);
+  EXPECT_EQ(command.turn.turns, -2);
+  EXPECT_EQ(command.turn.seconds, 4);
+  const struct {
+    const char* line;
+    const char* error;
+  } bad[] = {
+      {"turn", "turn needs AXIS N SECONDS (AXIS x, y or z; N whole turns)"},
+      {"turn z 1", "turn needs AXIS N SECONDS (AXIS x, y or z; N whole turns)"},
+      {"turn q 1 2", "turn: axis is x, y or z, not 'q'"},
+      {"turn z one 2", "turn: bad number in 'one 2'"},
+      {"turn z 0.5 2", "turn: turns must be a whole number, not 0, within +-10"},
+      {"turn z 0 2", "turn: turns must be a whole number, not 0, within +-10"},
+      {"turn z 1e300 2", "turn: turns must be a whole number, not 0, within +-10"},
+      {"turn z 1 0.1", "turn: a turn takes 0.5 .. 60 s"},
+      {"turn z 1 1", "turn: peak rate 4 pi |N| / S = 12.57 rad/s is beyond the gyro's 8 rad/s: take longer"},
+  };
+  for (const auto& b : bad) {
+    EXPECT_FALSE(qrsim::parse_truth_command(b.line, command, error)) << b.line;
+    EXPECT_EQ(error, b.error) << b.line;
+  }
+}
+
 // The radio's switches (qrsim --serve --rc crsf): arm one of the three modes its mode switch
 // picks, or the arm switch off; anything else names what the radio takes.
 TEST(TruthChannel, ParsesTheRadiosSwitches) {

@@ -49,8 +49,8 @@ rate) flying in a simulated IN4073-class quadrotor.
   --stdio          with --serve: the serial line is stdin/stdout instead (messages go to stderr)
   --status         with --serve: one status line a second on stderr
   --truth-fd N     with --serve: N is an open, two-way descriptor (a socketpair end) for the
-                   simulator's side channel: a truth line per 20 ms of simulated time out, push
-                   and radio commands in (docs/simulator.md); the firmware never sees it
+                   simulator's side channel: a truth line per 20 ms of simulated time out, commands
+                   in (push, reset, turn, radio: docs/simulator.md); the firmware never sees it
   --scenario NAME  fly a scenario headless, in simulated time, and score it on the simulator's
                    truth; exit status 0 when every pass band holds, 1 when one does not. NAME is
                    a built-in (qrsim --list) or a scenario file (format in docs/simulator.md)

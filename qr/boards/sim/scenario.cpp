@@ -135,6 +135,7 @@ void apply(const Event& e, Hands& hands, Pilot& pilot, FullLineConsole* console,
     case Action::param: pilot.set_parameter(e.param, e.raw); break;
     case Action::torque:
     case Action::force: break;  // apply_pushes, every tick while they last
+    case Action::turn: break;   // the flight's loop starts it, to report a refusal
     case Action::wind: plant.set_wind(e.vector); break;
     case Action::link:
       pilot.go_silent(e.value == 0);
@@ -228,7 +229,8 @@ void record_tick(FlightRecord& rec, double t, uint8_t mode, FlyingQr& qr, uint16
   // Touchdown: the first tick with a contact point on the ground after one with none. The speed
   // is the last airborne tick's (at most one control period, 0.01 m/s of free fall, earlier):
   // the contact's damper stops the vehicle within a millisecond.
-  const bool in_air = plant.deepest_contact() < 0;
+  // A vehicle in a hand (a turn event) is neither flying nor landing when it is set down.
+  const bool in_air = plant.deepest_contact() < 0 && !qr.world().held();
   if (airborne && !in_air && std::isnan(rec.touchdown_speed)) {
     rec.touchdown_speed = last_down_speed;
     rec.touchdown_at = t;
@@ -397,8 +399,15 @@ ScenarioResult run_scenario(const ScenarioScript& script, const RunOptions& opti
     if (phase == Phase::manoeuvre) {
       const double since = t - rec.t0;
       while (next_event < script.events.size() && script.events[next_event].at_s <= since + 1e-9) {
-        apply(script.events[next_event++], hands, pilot, console.get(), plant);
+        const Event& e = script.events[next_event++];
+        apply(e, hands, pilot, console.get(), plant);
+        const std::string refused = e.action == Action::turn ? qr->world().start_hand_turn(e.turn) : "";
+        if (!refused.empty()) {
+          result.error = script.origin + ":" + std::to_string(e.line) + ": the turn was refused: " + refused;
+          break;
+        }
       }
+      if (!result.error.empty()) break;
       apply_pushes(script, since, plant);
       pilot.set_sticks(hands.sticks(plant, qr->parameters()));
     }

@@ -62,7 +62,7 @@ struct ScenarioResult {
   std::string scenario;
   std::string vehicle;
   std::string firmware = "host";  // "rv32": the devboard's binary flew
-  std::string error;              // non-empty: the flight never got to its manoeuvre
+  std::string error;              // non-empty: the flight never got to its manoeuvre, or a turn was refused
   std::string final_mode;
   std::string known_failure;    // the scenario's, copied
   std::vector<Figure> figures;  // in print order

@@ -186,6 +186,30 @@ class Reader {
     return true;
   }
 
+  // at T turn AXIS N for S: N whole turns about body axis AXIS in S seconds, one turn at a time.
+  bool turn(const std::vector<std::string>& w, Event& e) {
+    e.action = Action::turn;
+    if (w.size() != 7 || w[5] != "for") return fail("turn needs AXIS N for SECONDS (AXIS x, y or z; N whole turns)");
+    if (!sim::body_axis_from_text(w[3], e.turn.axis)) return fail("turn axis is x, y or z, not '" + w[3] + "'");
+    double turns = 0;
+    if (!get_number(w[4], turns, "the turns") || !get_number(w[6], e.turn.seconds, "the turn's seconds")) return false;
+    // Out of range or not whole: 0 turns, which hand_turn_problem refuses with the rule.
+    e.turn.turns = std::abs(turns) <= sim::kMaxHandTurns && turns == std::trunc(turns) ? static_cast<int>(turns) : 0;
+    e.value = e.turn.turns;
+    e.duration_s = e.turn.seconds;
+    const std::string problem = sim::hand_turn_problem(e.turn);
+    if (!problem.empty()) return fail("turn: " + problem);
+    if (e.at_s < turn_until_) {
+      std::ostringstream overlap;
+      overlap << "turn at " << e.at_s << " s starts while the turn of line " << turn_line_ << " still acts (until "
+              << turn_until_ << " s)";
+      return fail(overlap.str());
+    }
+    turn_until_ = e.at_s + e.turn.seconds;
+    turn_line_ = line_;
+    return true;
+  }
+
   bool event(const std::vector<std::string>& w) {
     if (w.size() < 3) return fail("an event is 'at T action ...'");
     Event e;
@@ -255,6 +279,8 @@ class Reader {
     } else if (action == "wind") {
       e.action = Action::wind;
       ok = vector_for(w, e, "m/s, world axes");
+    } else if (action == "turn") {
+      ok = turn(w, e);
     } else if (action == "link") {
       ok = either(Action::link, "on", "off", "link is 'on' or 'off'");
     } else if (action == "console") {
@@ -275,7 +301,7 @@ class Reader {
       }
     } else {
       return fail("unknown action '" + action +
-                  "' (roll, pitch, yaw, lift, mode, param, torque, force, wind, link, console, log)");
+                  "' (roll, pitch, yaw, lift, mode, param, torque, force, wind, turn, link, console, log)");
     }
     if (ok) out_.events.push_back(e);
     return ok;
@@ -313,6 +339,8 @@ class Reader {
   int line_ = 0;
   std::vector<std::string> seen_;
   std::string error_;
+  double turn_until_ = 0;  // when the last turn event ends, after t0
+  int turn_line_ = 0;
 };
 
 }  // namespace

@@ -14,6 +14,7 @@
 
 #include <common/mode.hpp>
 #include <common/parameter_table.hpp>
+#include <sim/hand_turn.hpp>
 #include <sim/vec3.hpp>
 #include <sim/vehicle.hpp>
 
@@ -53,6 +54,7 @@ enum class Action : uint8_t {
   log_start,    // the pilot starts both logs
   log_stop,     // the pilot stops them
   download,     // value 0: the pilot downloads the whole sensor log, 1: the telemetry log
+  turn,         // turn: a hand turns the vehicle about a body axis (sim/hand_turn.hpp)
 };
 
 struct Event {
@@ -64,6 +66,7 @@ struct Event {
   wire::Mode mode = wire::Mode::safe;
   wire::ParamId param = wire::ParamId::idle_level;
   int32_t raw = 0;
+  sim::HandTurnSpec turn;
   int line = 0;
 };
 

@@ -95,8 +95,8 @@ class TruthChannel {
   }
 
   // Reads what has arrived; a push found starts now (the latest push replaces the one acting), a
-  // reset sets the vehicle down upright at once (refused while an engine runs: a hand in the
-  // rotors).
+  // reset sets the vehicle down upright at once and a turn starts a hand turning it (both refused
+  // while an engine runs: a hand in the rotors).
   // The radio's switches move the serve-mode radio's (`radio`, null without --rc crsf).
   void poll_commands(FlyingQr& qr, ServeRadio* radio, sim::Vec3& torque, uint64_t& until_us) {
     if (fd_ < 0) return;
@@ -123,8 +123,13 @@ class TruthChannel {
           torque = command.torque;
           until_us = qr.world().now_us() + static_cast<uint64_t>(std::llround(command.seconds * 1e6));
           send("ok push\n");
+        } else if (command.kind == TruthCommand::Kind::turn) {
+          const std::string refused = qr.world().start_hand_turn(command.turn);
+          send(refused.empty() ? "ok turn\n" : "error turn: " + refused + "\n");
         } else if (!qr.board().engines().all_zero()) {
           send("error reset: the engines are running (safe first)\n");
+        } else if (qr.world().held()) {
+          send("error reset: a turn is under way\n");
         } else {
           qr.world().plant().set_state(reset_state(qr.world().plant().state()));
           send("ok reset\n");

@@ -31,6 +31,29 @@ bool parse_radio_command(const std::vector<std::string>& words, TruthCommand& co
   return false;
 }
 
+// "turn AXIS N SECONDS", N a whole number of turns.
+bool parse_turn_command(const std::vector<std::string>& words, TruthCommand& command, std::string& error) {
+  sim::HandTurnSpec spec;
+  double turns = 0;
+  if (words.size() != 4) {
+    error = "turn needs AXIS N SECONDS (AXIS x, y or z; N whole turns)";
+  } else if (!sim::body_axis_from_text(words[1], spec.axis)) {
+    error = "turn: axis is x, y or z, not '" + words[1].substr(0, 40) + "'";
+  } else if (!parse_real(words[2], turns) || !parse_real(words[3], spec.seconds)) {
+    error = "turn: bad number in '" + words[2].substr(0, 40) + " " + words[3].substr(0, 40) + "'";
+  } else {
+    // Out of range or not whole: 0 turns, which hand_turn_problem refuses with the rule.
+    spec.turns = std::fabs(turns) <= sim::kMaxHandTurns && turns == std::trunc(turns) ? static_cast<int>(turns) : 0;
+    const std::string problem = sim::hand_turn_problem(spec);
+    if (problem.empty()) {
+      command = TruthCommand{.kind = TruthCommand::Kind::turn, .turn = spec};
+      return true;
+    }
+    error = "turn: " + problem;
+  }
+  return false;
+}
+
 }  // namespace
 
 bool parse_truth_command(std::string_view line, TruthCommand& push, std::string& error) {
@@ -48,9 +71,10 @@ bool parse_truth_command(std::string_view line, TruthCommand& push, std::string&
     return true;
   }
   if (words[0] == "radio") return parse_radio_command(words, push, error);
+  if (words[0] == "turn") return parse_turn_command(words, push, error);
   if (words[0] != "push") {
     error = "unknown command '" + words[0].substr(0, 40) +
-            "' (push TX TY TZ SECONDS, reset, radio arm MODE, radio off)";
+            "' (push TX TY TZ SECONDS, reset, turn AXIS N SECONDS, radio arm MODE, radio off)";
     return false;
   }
   if (words.size() != 5) {

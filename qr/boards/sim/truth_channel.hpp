@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include <common/mode.hpp>
+#include <sim/hand_turn.hpp>
 #include <sim/quadrotor.hpp>
 #include <sim/vec3.hpp>
 
@@ -17,14 +18,18 @@ namespace qrsim {
 // "push TX TY TZ SECONDS": a torque in N·m, body axes, for that long.
 // "reset": the vehicle picked up and set down upright, at rest, where it is (the heading kept),
 // as a hand rights it after a crash; the firmware is not told.
+// "turn AXIS N SECONDS": a hand turns the vehicle N whole turns about body axis AXIS (x, y or z)
+// in that long and sets it down as it was (sim/hand_turn.hpp), for a gyro scale calibration;
+// refused while an engine runs, as a reset is.
 // "radio arm MODE" (MODE manual, yaw or full): the radio's mode switch to MODE and its arm switch
 // off, then on (qrsim --rc crsf, serve_radio.hpp). "radio off": the arm switch off.
 struct TruthCommand {
-  enum class Kind : uint8_t { push, reset, radio_arm, radio_off };
+  enum class Kind : uint8_t { push, reset, turn, radio_arm, radio_off };
   Kind kind = Kind::push;
   sim::Vec3 torque;  // push only
   double seconds = 0;
   wire::Mode mode = wire::Mode::manual;  // radio_arm only
+  sim::HandTurnSpec turn;                // turn only
 };
 
 // One command line (without its newline). True with `command` filled in; false with `error`

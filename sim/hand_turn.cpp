@@ -1,0 +1,81 @@
+#include <sim/hand_turn.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+namespace sim {
+namespace {
+
+constexpr double kTwoPi = 2 * std::numbers::pi;
+
+Vec3 unit(BodyAxis axis) {
+  static constexpr Vec3 kUnit[] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  return kUnit[static_cast<int>(axis)];
+}
+
+}  // namespace
+
+double hand_turn_peak_rate(const HandTurnSpec& spec) { return 2 * kTwoPi * std::abs(spec.turns) / spec.seconds; }
+
+std::string hand_turn_problem(const HandTurnSpec& spec) {
+  if (spec.turns == 0 || std::abs(spec.turns) > kMaxHandTurns)
+    return "turns must be a whole number, not 0, within +-10";
+  if (!(spec.seconds >= kMinHandTurnSeconds && spec.seconds <= kMaxHandTurnSeconds)) {
+    return "a turn takes 0.5 .. 60 s";
+  }
+  if (hand_turn_peak_rate(spec) > kMaxHandTurnRate) {
+    char text[120];
+    std::snprintf(text, sizeof text, "peak rate 4 pi |N| / S = %.2f rad/s is beyond the gyro's 8 rad/s: take longer",
+                  hand_turn_peak_rate(spec));
+    return text;
+  }
+  return "";
+}
+
+bool body_axis_from_text(const std::string& text, BodyAxis& axis) {
+  static constexpr const char* kNames[] = {"x", "y", "z"};
+  for (int i = 0; i < 3; ++i) {
+    if (text == kNames[i]) {
+      axis = static_cast<BodyAxis>(i);
+      return true;
+    }
+  }
+  return false;
+}
+
+HandTurn::HandTurn(const Quat& start, const HandTurnSpec& spec, uint64_t start_us)
+    : start_(start), axis_(unit(spec.axis)), turns_(spec.turns), start_us_(start_us),
+      end_us_(start_us + static_cast<uint64_t>(std::llround(spec.seconds * 1e6))) {
+  // The duration on the clock's whole microseconds, so the profile ends exactly at end_us_.
+  seconds_ = static_cast<double>(end_us_ - start_us_) * 1e-6;
+}
+
+double HandTurn::elapsed_s(uint64_t now_us) const {
+  if (now_us <= start_us_) return 0;
+  return static_cast<double>(std::min(now_us, end_us_) - start_us_) * 1e-6;
+}
+
+double HandTurn::angle(uint64_t now_us) const {
+  if (done(now_us)) return kTwoPi * turns_;
+  const double phase = kTwoPi * elapsed_s(now_us) / seconds_;
+  return turns_ * (phase - std::sin(phase));
+}
+
+Vec3 HandTurn::rate(uint64_t now_us) const {
+  if (done(now_us)) return {};
+  const double phase = kTwoPi * elapsed_s(now_us) / seconds_;
+  return axis_ * (kTwoPi * turns_ / seconds_ * (1 - std::cos(phase)));
+}
+
+Quat HandTurn::attitude(uint64_t now_us) const {
+  if (done(now_us)) return start_;
+  const double half = angle(now_us) / 2;
+  const double s = std::sin(half);
+  return normalized(start_ * Quat{std::cos(half), axis_.x * s, axis_.y * s, axis_.z * s});
+}
+
+Vec3 held_specific_force(const Quat& attitude, double gravity) { return rotate_inverse(attitude, {0, 0, -gravity}); }
+
+}  // namespace sim

@@ -1,0 +1,65 @@
+// A hand turning the vehicle: it takes the vehicle where it is, turns it about one of its body
+// axes through whole turns and sets it down again exactly as it was. This is what a person does
+// for a gyro scale calibration (docs/parameters.md, gyro_turns): the integrated rate of a known
+// angle gives each axis' sensitivity. While held, the body follows the kinematics exactly and
+// nothing else acts on it (the hand turns it about its centre of mass, clear of the ground).
+#pragma once
+
+#include <stdint.h>
+
+#include <string>
+
+#include <sim/quaternion.hpp>
+
+namespace sim {
+
+enum class BodyAxis : uint8_t { x, y, z };
+
+struct HandTurnSpec {
+  BodyAxis axis = BodyAxis::z;
+  int turns = 1;  // whole turns, negative the other way
+  double seconds = 2;
+};
+
+// The limits a turn must keep, so the gyro (±500 °/s, sim/imu.hpp) can read it.
+inline constexpr int kMaxHandTurns = 10;
+inline constexpr double kMinHandTurnSeconds = 0.5;
+inline constexpr double kMaxHandTurnSeconds = 60;
+inline constexpr double kMaxHandTurnRate = 8;  // rad/s, below 500 °/s = 8.73 rad/s with a 3 % scale error
+// The profile's peak rate, 4 pi |N| / S.
+double hand_turn_peak_rate(const HandTurnSpec& spec);
+// Empty when the turn keeps the limits, otherwise what is wrong ("turns must be ...").
+std::string hand_turn_problem(const HandTurnSpec& spec);
+// "x", "y" or "z" to an axis; false for anything else.
+bool body_axis_from_text(const std::string& text, BodyAxis& axis);
+
+class HandTurn {
+ public:
+  // From the vehicle's attitude `start` at `start_us`, the turn `spec` (which keeps the limits).
+  HandTurn(const Quat& start, const HandTurnSpec& spec, uint64_t start_us);
+
+  // The angle turned, rad, and the body rate, rad/s, at `now_us`: a raised-cosine rate, zero at
+  // both ends, theta(t) = 2 pi N (t/S - sin(2 pi t/S) / (2 pi)).
+  double angle(uint64_t now_us) const;
+  Vec3 rate(uint64_t now_us) const;
+  // start (x) rotation(axis, angle); at the end exactly `start` again.
+  Quat attitude(uint64_t now_us) const;
+  bool done(uint64_t now_us) const { return now_us >= end_us_; }
+  uint64_t end_us() const { return end_us_; }
+
+ private:
+  double elapsed_s(uint64_t now_us) const;
+
+  Quat start_;
+  Vec3 axis_;
+  double turns_;
+  uint64_t start_us_;
+  uint64_t end_us_;
+  double seconds_;
+};
+
+// What an accelerometer at the centre of mass of a body held still against gravity reads: the
+// hand's push, (0, 0, -g) in world axes, in body axes.
+Vec3 held_specific_force(const Quat& attitude, double gravity);
+
+}  // namespace sim
