@@ -203,7 +203,8 @@ void record_tick(FlightRecord& rec, double t, uint8_t mode, FlyingQr& qr, uint16
   rec.pitch_sp.push_back({t, pitch_sp});
   rec.r_true.push_back({t, s.rate.z});
   const sim::Vec3 body_down = sim::rotate(s.attitude, {0, 0, 1});
-  rec.tilt.push_back({t, std::acos(std::clamp(body_down.z, -1.0, 1.0)) * kDeg});
+  // A tilt the hand turns the vehicle through (a gyro scale measurement) is not a tilt it flew.
+  if (!qr.world().held()) rec.tilt.push_back({t, std::acos(std::clamp(body_down.z, -1.0, 1.0)) * kDeg});
   const double er = roll - roll_sp, ep = pitch - pitch_sp;
   rec.worst_err.push_back({t, std::max(std::abs(er), std::abs(ep))});
   if (mode == static_cast<uint8_t>(wire::Mode::full_control)) {
@@ -483,6 +484,18 @@ ScenarioResult run_scenario(const ScenarioScript& script, const RunOptions& opti
 
   const sim::Vec3 body_down = sim::rotate(plant.state().attitude, {0, 0, 1});
   f.push_back({"final_upright", body_down.z >= std::cos(30 * kRad) ? 1.0 : 0.0});
+  {
+    // The firmware divides each axis by 1 + ppm 1e-6 (qr/core/chain/sensor_units.hpp); what is
+    // left of the IMU's drawn factor is the error it flies with.
+    constexpr wire::ParamId kScale[3] = {wire::ParamId::gyro_scale_x_ppm, wire::ParamId::gyro_scale_y_ppm,
+                                         wire::ParamId::gyro_scale_z_ppm};
+    double worst = 0;
+    for (int i = 0; i < 3; ++i) {
+      const double corrected = 1 + qr->parameters().get(kScale[i]) * 1e-6;
+      worst = std::max(worst, std::abs(qr->world().imu().gyro_scale()[i] / corrected - 1) * 1e6);
+    }
+    f.push_back({"gyro_scale_error_ppm_max", worst});
+  }
   f.push_back({"engine_saturation_pct", mean(rec.saturated, rec.t0, rec.t_end)});
   f.push_back({"engines_at_end_max", static_cast<double>(engines_max)});
   f.push_back({"deadline_misses", static_cast<double>(qr->view().deadline_misses)});

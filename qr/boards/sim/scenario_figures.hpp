@@ -32,7 +32,7 @@ inline constexpr FigureSpec kFigureTable[] = {
     {"att_err_deg_truth_max_after_settle",
      "largest absolute truth minus set-point of either axis in the held part: from 0.8 s after the "
      "step's set-point moved to the release (a step), or over the whole window (no step)"},
-    {"max_tilt_deg_truth", "largest true tilt (body z from vertical) in the window"},
+    {"max_tilt_deg_truth", "largest true tilt (body z from vertical) in the window, the hand's turns left out"},
     {"est_err_rms_deg", "RMS of the estimate minus the truth, both axes"},
     {"est_err_max_deg", "largest absolute estimate minus truth of either axis"},
     {"step_setpoint_deg", "the step's set-point as the firmware holds it"},
@@ -66,6 +66,9 @@ inline constexpr FigureSpec kFigureTable[] = {
     {"height_hold_exit_periods",
      "control periods from the tick the firmware read a changed lift stick to the first tick out of height hold"},
     {"final_upright", "1 when body z is within 30 deg of vertical at the end"},
+    {"gyro_scale_error_ppm_max",
+     "truth: the gyro's largest per-axis scale error the firmware flies with at the end, its gyro_scale_*_ppm "
+     "parameters divided out (ppm)"},
     {"engine_saturation_pct", "share of full-control ticks with an engine at 1000 or at or below idle"},
     {"engines_at_end_max", "the largest engine value at the end"},
     {"deadline_misses", "the scheduler's count"},

@@ -138,9 +138,12 @@ void add_flight_figures(const ScenarioScript& script, const FlightRecord& rec, c
   f.push_back({"est_err_max_deg", peak_abs(rec.est_err_axis, t0, t_end)});
   f.insert(f.end(), step.begin(), step.end());
 
-  if (first_of(script, [](const Event& e) { return e.action == Action::yaw && e.value != 0; }) != nullptr && t0 >= 0) {
-    // Steady state over the last 40 % of the window, on the truth, against the set-point.
-    const double r = mean(rec.r_true, t0 + 0.6 * (t_end - t0), t_end);
+  if (const Event* yaw = first_of(script, [](const Event& e) { return e.action == Action::yaw && e.value != 0; });
+      yaw != nullptr && t0 >= 0) {
+    // Steady state over the last 40 % of the window from the yaw stick on, on the truth, against
+    // the set-point.
+    const double t_yaw = t0 + yaw->at_s;
+    const double r = mean(rec.r_true, t_yaw + 0.6 * (t_end - t_yaw), t_end);
     f.push_back({"yaw_rate_setpoint_rad_s", end.yaw_rate_setpoint});
     f.push_back({"yaw_rate_rad_s", r});
     f.push_back({"yaw_rate_p_only_rad_s", end.yaw_rate_p_only});
