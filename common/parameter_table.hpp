@@ -107,6 +107,15 @@ enum class ParamId : uint8_t {
 #undef WIRE_PARAMETER_ENUMERATOR
 };
 
+// The parameters the QR writes itself: a calibration with gyro_turns measures a gyro scale and
+// ends the turns (qr/core/chain/gyro_turns.hpp). The console takes what the QR reports of these
+// as its own value, so a measurement is saved with the others and sent back at the next connect,
+// and the turns are not asked for again.
+constexpr bool written_by_qr(ParamId id) {
+  return id == ParamId::gyro_scale_x_ppm || id == ParamId::gyro_scale_y_ppm || id == ParamId::gyro_scale_z_ppm ||
+         id == ParamId::gyro_turns;
+}
+
 struct ParameterSpec {
   ParamId id;
   const char* name;       // the enumerator's identifier, spelled the same

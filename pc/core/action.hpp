@@ -47,6 +47,7 @@ enum class Action : uint8_t {
   tasks_print,
   sim_push,       // the simulator pushes the QR (0.3 N m about roll for 0.1 s); not on a real QR
   sim_reset,      // the simulator sets the vehicle down upright (after a crash); not on a real QR
+  sim_turn,       // the simulator's hand turns the vehicle twice about a body axis (z, x, y in turn); not on a real QR
   sim_radio_off,  // the simulator's radio: its arm switch off (a panic in flight); not on a real QR
   help,
 };
@@ -96,6 +97,7 @@ inline constexpr ActionSpec kActions[] = {
     {Action::tasks_print, "task cycles to log"},
     {Action::sim_push, "sim: push (roll)"},
     {Action::sim_reset, "sim: set upright"},
+    {Action::sim_turn, "sim: turn (z, x, y)"},
     {Action::sim_radio_off, "sim radio: arm off"},
     {Action::help, "help on/off"},
 };

@@ -268,6 +268,20 @@ void Console::act(Action action, uint32_t now_ms) {
         note(Severity::info, "sim: asking to set the QR down upright (engines must be off)");
       }
       break;
+    case Action::sim_turn:
+      if (!simulator_) {
+        note(Severity::warning, "no simulator: y turns only a QR the console started in qrsim");
+      } else {
+        // Two turns in 4 s: 180 deg/s at the peak, well inside the gyro's 500. The axes in the
+        // order the calibration is usually made: flat on the table, on its tail, on its side.
+        static constexpr char kAxes[] = {'z', 'x', 'y'};
+        const char axis = kAxes[next_turn_axis_];
+        next_turn_axis_ = (next_turn_axis_ + 1) % 3;
+        sim_commands_.emplace_back(std::string("turn ") + axis + " 2 4\n");
+        note(Severity::info, std::string("sim: the hand turns the QR twice about its ") + axis +
+                                 " axis in 4 s (with gyro_turns = 2 and a calibration: that axis' gyro scale)");
+      }
+      break;
     case Action::sim_radio_off:
       if (!simulator_) {
         note(Severity::warning,

@@ -200,6 +200,7 @@ class Console {
   std::string truth_;
   std::optional<int64_t> sim_clock_offset_ms_;
   std::vector<std::string> sim_commands_;
+  int next_turn_axis_ = 0;  // the y key's next axis: z, x, y
   ExitState exit_ = ExitState::running;
   uint32_t exit_started_ms_ = 0;
   bool exit_confirmed_ = false;

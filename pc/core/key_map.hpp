@@ -1,6 +1,6 @@
 // The keyboard, as one table: key -> action. The IN4073 map (ESC, 0-5, 7, a/z, arrows, q/w, u/j,
-// i/k, o/l) plus our keys for the filter constants, logs, parameters, the simulator's push, reset
-// and radio arm switch, and help.
+// i/k, o/l) plus our keys for the filter constants, logs, parameters, the simulator's push, reset,
+// turn and radio arm switch, and help.
 #pragma once
 
 #include <stddef.h>
@@ -54,6 +54,7 @@ inline constexpr KeyBinding kKeyMap[] = {
     {'b', Action::tasks_print},
     {'n', Action::sim_push},
     {'v', Action::sim_reset},
+    {'y', Action::sim_turn},
     {'m', Action::sim_radio_off},
     {'h', Action::help},
     {'?', Action::help},

@@ -67,6 +67,11 @@ void ParameterSync::on_report(const wire::ParamReport& report) {
   // A difference while a value is on its way is the upload not done yet; after it, the QR holds
   // something the pilot did not ask for (it refused it, or changed it itself).
   const int32_t wanted = wanted_.get(spec->id);
+  if (news && !on_its_way(spec->id) && report.value != wanted && wire::written_by_qr(spec->id)) {
+    wanted_.set(report.id, report.value);
+    note_(Severity::info, "the QR set " + param_text(spec->id, report.value) + ", and so does the console");
+    return;
+  }
   if (news && !on_its_way(spec->id) && report.value != wanted) {
     note_(Severity::warning,
           "the QR has " + param_text(spec->id, report.value) + ", the console " + format_real(*spec, wanted));

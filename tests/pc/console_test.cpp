@@ -152,6 +152,27 @@ TEST(Console, AValueTheQrDoesNotHoldIsAWarning) {
   EXPECT_EQ(line->severity, Severity::warning);
 }
 
+// A gyro scale measurement (docs/signal-chain.md): the QR writes the scale and ends the turns; the
+// console keeps both as its own values, so they are saved and what goes up at the next connect
+// is the measurement, not the file's old scale and not the turns again.
+TEST(Console, AValueTheQrWritesItselfBecomesTheConsoles) {
+  Console::Setup setup;
+  setup.params.set(static_cast<uint8_t>(wire::ParamId::gyro_turns), 2);
+  Bench b(setup);
+  b.connect();
+  ASSERT_EQ(b.qr.params.get(wire::ParamId::gyro_turns), 2);
+  b.qr.params.set(static_cast<uint8_t>(wire::ParamId::gyro_scale_z_ppm), 23456);  // the turns measured
+  b.qr.params.set(static_cast<uint8_t>(wire::ParamId::gyro_turns), 0);
+  b.key('p');
+  b.run(50);
+  EXPECT_EQ(b.console.params().get(wire::ParamId::gyro_scale_z_ppm), 23456);
+  EXPECT_EQ(b.console.params().get(wire::ParamId::gyro_turns), 0);
+  const qrterm::LogLine* line = b.log.find_last("the QR set gyro_scale_z_ppm = 23456, and so does the console");
+  ASSERT_NE(line, nullptr);
+  EXPECT_EQ(line->severity, Severity::info);
+  EXPECT_FALSE(b.logged("the QR has gyro"));
+}
+
 TEST(Console, ParametersGoUpAgainWhenTheLinkComesBack) {
   Bench b;
   b.connect();
@@ -833,6 +854,25 @@ TEST(Console, ResetKeySetsTheSimulatedQrUpright) {
   EXPECT_TRUE(sim.logged("sim: the QR stands upright"));
   sim.console.truth_line("error reset: the engines are running (safe first)");
   EXPECT_TRUE(sim.logged("sim: error reset: the engines are running"));
+}
+
+// The turn key: the hand's turn on the truth channel, the axes in turn (a gyro scale calibration
+// of all three), "no simulator" on a real port.
+TEST(Console, TurnKeyTurnsTheSimulatedQrAboutEachAxisInTurn) {
+  Bench real;
+  real.key('y');
+  EXPECT_TRUE(real.logged("no simulator"));
+  EXPECT_TRUE(real.console.take_sim_commands().empty());
+
+  qrterm::Console::Setup setup;
+  setup.simulator = true;
+  Bench sim(setup);
+  for (int i = 0; i < 4; ++i) sim.key('y');
+  const std::vector<std::string> commands = sim.console.take_sim_commands();
+  EXPECT_EQ(commands, (std::vector<std::string>{"turn z 2 4\n", "turn x 2 4\n", "turn y 2 4\n", "turn z 2 4\n"}));
+  EXPECT_TRUE(sim.logged("sim: the hand turns the QR twice about its x axis"));
+  sim.console.truth_line("error turn: the engines are running (safe first)");
+  EXPECT_TRUE(sim.logged("sim: error turn: the engines are running"));
 }
 
 // The simulator's radio (qrsim --rc crsf): while the QR says the radio flies, a flight-mode key
