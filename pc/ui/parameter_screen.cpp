@@ -13,7 +13,8 @@ void draw_parameter_screen(const Console& console, int top, int rows, int width)
   const ParameterSync& sync = console.parameter_sync();
   put(top, 0, "PARAMETERS", 0, A_BOLD);
   put(top, 11, "file " + (editor.file_name().empty() ? std::string("(none)") : editor.file_name()), kDim);
-  put(top + 1, 0, text("%-20s %10s %-10s %-14s %10s %10s", "name", "value", "QR", "range", "default", "file"), 0,
+  // 79 columns: names are at most 18 characters, the widest range (-100000..100000) 15.
+  put(top + 1, 0, text("%-19s %10s %-10s %-15s %10s %10s", "name", "value", "QR", "range", "default", "file"), 0,
       A_UNDERLINE);
 
   const int list_top = top + 2;
@@ -28,7 +29,7 @@ void draw_parameter_screen(const Console& console, int top, int rows, int width)
     const std::string qr = status_name(status);
     const std::optional<int32_t> in_file = editor.file_difference(sync, spec.id);
     const std::string range = format_real(spec, spec.min) + ".." + format_real(spec, spec.max);
-    const std::string line = text("%-20.20s %10.10s %-10.10s %-14.14s %10.10s %10.10s", spec.name,
+    const std::string line = text("%-19.19s %10.10s %-10.10s %-15.15s %10.10s %10.10s", spec.name,
                                   format_real(spec, wanted).c_str(), qr.c_str(), range.c_str(),
                                   format_real(spec, spec.default_value).c_str(),
                                   in_file ? format_real(spec, *in_file).c_str() : "");
