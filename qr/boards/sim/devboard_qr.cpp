@@ -66,6 +66,13 @@ void DevboardQr::follow_pilot(uint8_t byte) {
   });
 }
 
+void DevboardQr::follow_qr(uint8_t byte) {
+  qr_frames_.push(byte, [&](const wire::Frame& frame) {
+    wire::ParamReport report;
+    if (wire::decode(frame, report)) parameters_.set(report.id, report.value);
+  });
+}
+
 bool DevboardQr::tick() {
   if (stopped_) return false;
   const uint32_t seen = kick_;
@@ -117,6 +124,7 @@ bool DevboardQr::tick() {
       return false;
     }
     for (long i = 0; i < n; ++i) {
+      follow_qr(up[i]);
       if (!board_.serial_write(up[i])) ++ground_refused_;
     }
     owed -= static_cast<uint32_t>(n);

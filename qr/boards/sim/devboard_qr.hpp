@@ -55,12 +55,15 @@ class DevboardQr final : public FlyingQr {
   void fail(const std::string& why);
   // What the firmware will make of the pilot's bytes: its parameter table, its sticks.
   void follow_pilot(uint8_t byte);
+  // The values the firmware reports, the ones it writes itself among them (a gyro scale measured).
+  void follow_qr(uint8_t byte);
 
   sim::World world_;
   SimBoard board_;
   DevboardProcess process_;
   simlink::LinkParser from_board_{simlink::LinkEnd::simulator};
   wire::FrameParser pilot_frames_{wire::Listen::pc_to_qr};
+  wire::FrameParser qr_frames_{wire::Listen::qr_to_pc};
   wire::ParameterValues parameters_;
   FirmwareView view_;
   std::vector<InstructionStats> instructions_;

@@ -101,7 +101,7 @@ class FlightChain {
   // A run starts at enter_calibration() (the calibration mode's entry action). A finished run
   // restarts the estimator from the accelerometer's angles; until the next run finishes, the
   // previous offsets stay in use. With the gyro_turns parameter set, the run goes on after the
-  // average with the turns (gyro_turns.hpp), and is done when they end (gyro_turns_ended()).
+  // average with the turns (gyro_turns.hpp), and is done when they end (take_gyro_turns()).
   bool calibrate() {
     if (turns_.running()) {
       turns_ended_ = turns_.add(sample_);

@@ -16,7 +16,6 @@
 
 namespace qr::chain {
 
-inline constexpr int kGyroTurnsMax = 10;  // the parameter's range
 // The measured turns may differ from N by at most this (the datasheet's 3 % and a margin); one
 // turn more or less than N is at least 10 % off for N <= 10, so a miscounted turn is refused.
 inline constexpr int32_t kGyroTurnsTolerancePpm = 80000;
@@ -44,8 +43,8 @@ class GyroTurns {
   static constexpr int64_t kTurn =
       static_cast<int64_t>(2 * fx::kPi * sensor::kGyroCountsPerRadPerSec * SampleHz * (1 << kFrac) + 0.5);
 
-  // Starts a measurement of `turns` turns (1..kGyroTurnsMax) against the rest offsets, raw counts
-  // with kFrac fractional bits.
+  // Starts a measurement of `turns` turns (1 up to the parameter's maximum) against the rest
+  // offsets, raw counts with kFrac fractional bits.
   void start(int32_t turns, const int32_t (&offsets)[3]) {
     turns_ = turns;
     for (int i = 0; i < 3; ++i) {
@@ -84,10 +83,12 @@ class GyroTurns {
   }
 
   const GyroTurnsResult& result() const { return result_; }
-  // What the axes summed, in turns at the nominal scale x 1000 (for tests and the debug line).
-  int32_t milliturns(int axis) const { return static_cast<int32_t>(sum_[axis] * 1000 / kTurn); }
 
  private:
+  // A sample adds less than 2^16 counts (raw minus offset), and a measurement ends within
+  // kTimeoutSamples: finish() can scale any sum by 1e6 in 64 bits (2.0e18 at 1 kHz).
+  static_assert(int64_t{kTimeoutSamples} * (int64_t{1} << (16 + kFrac)) <= INT64_MAX / 1000000,
+                "finish() scales the sums by 1e6 in 64 bits");
   static constexpr int64_t magnitude(int64_t x) { return x < 0 ? -x : x; }
 
   void finish() {
@@ -98,7 +99,6 @@ class GyroTurns {
     }
     const int64_t turned = magnitude(sum_[axis]);
     const int64_t expected = kTurn * turns_;
-    // |sum| <= 10 turns x 1.1 x kTurn (1.3e11): x 1e6 stays far inside int64.
     const int64_t ppm = (turned * 1000000 + expected / 2) / expected - 1000000;
     if (ppm > kGyroTurnsTolerancePpm || ppm < -kGyroTurnsTolerancePpm) return;
     for (uint8_t i = 0; i < 3; ++i) {

@@ -56,9 +56,9 @@ struct SensorUnits {
 
   // The rate of one count on a gyro axis that reads `ppm` parts per million more than nominal
   // (parameters gyro_scale_{x,y,z}_ppm): the nominal scale / (1 + ppm 1e-6), rounded to Rate's
-  // lsb. In Q<27> the nominal is 35764 lsb, so the rounding is 28 ppm at most; 0 ppm gives the
-  // nominal exactly (SensorUnits.GyroScaleOfZeroIsTheNominal), so a default vehicle computes what
-  // it did without the correction.
+  // lsb. In Q<27> the nominal is 35764 lsb, so the rounding is 14 ppm at most; 0 ppm gives the
+  // nominal exactly (GyroScale.ZeroPpmIsTheNominalScaleBitForBit), so a default vehicle computes
+  // what it did without the correction.
   static constexpr Rate rate_per_count(int32_t ppm) {
     using Gain = typename N::Coefficient;  // 1e6 / (1e6 + ppm) lies in [0.9, 1.12)
     return product<Rate>(kRadPerSecPerCount, N::template ratio<Gain>(kMillion, kMillion + ppm));
