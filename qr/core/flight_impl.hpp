@@ -171,7 +171,8 @@ template <SignalChain Chain>
 template <SignalChain Chain>
 [[gnu::noinline]] void Flight<Chain>::take_gyro_turns(const chain::GyroTurnsResult& turns) {
   using wire::ParamId;
-  static constexpr ParamId kScale[3] = {ParamId::gyro_scale_x_ppm, ParamId::gyro_scale_y_ppm, ParamId::gyro_scale_z_ppm};
+  static constexpr ParamId kScale[3] = {ParamId::gyro_scale_x_ppm, ParamId::gyro_scale_y_ppm,
+                                        ParamId::gyro_scale_z_ppm};
   static constexpr const char* kFound[3] = {"gyro turns: x scale set\n", "gyro turns: y scale set\n",
                                             "gyro turns: z scale set\n"};
   if (turns.found) params_.set(static_cast<uint8_t>(kScale[turns.axis]), turns.ppm);

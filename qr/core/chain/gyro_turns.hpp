@@ -40,8 +40,8 @@ class GyroTurns {
   static constexpr int32_t kTimeoutSamples = static_cast<int32_t>(60 * SampleHz);
   // One turn as the sum counts it at the nominal scale: 2 pi rad x counts per rad/s x samples per
   // second, with the offsets' fractional bits (1.2e10 at 1 kHz).
-  static constexpr int64_t kTurn =
-      static_cast<int64_t>(2 * fx::kPi * sensor::kGyroCountsPerRadPerSec * SampleHz * (1 << kFrac) + 0.5);
+  static constexpr int64_t kTurn = static_cast<int64_t>(
+      2 * fx::kPi * sensor::kGyroCountsPerRadPerSec * SampleHz * (1 << kFrac) + 0.5);
 
   // Starts a measurement of `turns` turns (1 up to the parameter's maximum) against the rest
   // offsets, raw counts with kFrac fractional bits.

@@ -76,8 +76,7 @@ class SensorFilters {
     }
   }
   static constexpr Rate largest_rate_of(int32_t counts) {
-    return Units::rate_of(counts, Units::rate_per_count(
-                                      chain::parameter_spec(wire::ParamId::gyro_scale_x_ppm).min));
+    return Units::rate_of(counts, Units::rate_per_count(chain::parameter_spec(wire::ParamId::gyro_scale_x_ppm).min));
   }
   static constexpr int64_t kRateBound = input_bound<Rate, &largest_rate_of>();
   static constexpr int64_t kAccelBound = input_bound<Accel, &Units::template accel_of<0>>();

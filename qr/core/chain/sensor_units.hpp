@@ -69,7 +69,8 @@ struct SensorUnits {
   template <int Frac = 0>
   static constexpr Rate rate_of(int32_t counts, Rate per_count) {
     if constexpr (fx::is_q<Rate> && Frac == 0) {
-      return Rate::from_raw(static_cast<int32_t>(static_cast<uint32_t>(counts) * static_cast<uint32_t>(per_count.raw())));
+      return Rate::from_raw(
+          static_cast<int32_t>(static_cast<uint32_t>(counts) * static_cast<uint32_t>(per_count.raw())));
     } else {
       return product<Rate>(N::template fixed<Frac>(counts), per_count);
     }
