@@ -34,6 +34,10 @@ std::string hand_turn_problem(const HandTurnSpec& spec) {
   return "";
 }
 
+int whole_turns(double turns) {
+  return std::abs(turns) <= kMaxHandTurns && turns == std::trunc(turns) ? static_cast<int>(turns) : 0;
+}
+
 bool body_axis_from_text(const std::string& text, BodyAxis& axis) {
   static constexpr const char* kNames[] = {"x", "y", "z"};
   for (int i = 0; i < 3; ++i) {

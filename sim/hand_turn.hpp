@@ -30,6 +30,9 @@ inline constexpr double kMaxHandTurnRate = 8;  // rad/s, below 500 °/s = 8.73 r
 double hand_turn_peak_rate(const HandTurnSpec& spec);
 // Empty when the turn keeps the limits, otherwise what is wrong ("turns must be ...").
 std::string hand_turn_problem(const HandTurnSpec& spec);
+// A number read as turns: itself when whole and within the limit, else 0 (which
+// hand_turn_problem refuses with the rule).
+int whole_turns(double turns);
 // "x", "y" or "z" to an axis; false for anything else.
 bool body_axis_from_text(const std::string& text, BodyAxis& axis);
 

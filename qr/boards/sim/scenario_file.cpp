@@ -193,8 +193,7 @@ class Reader {
     if (!sim::body_axis_from_text(w[3], e.turn.axis)) return fail("turn axis is x, y or z, not '" + w[3] + "'");
     double turns = 0;
     if (!get_number(w[4], turns, "the turns") || !get_number(w[6], e.turn.seconds, "the turn's seconds")) return false;
-    // Out of range or not whole: 0 turns, which hand_turn_problem refuses with the rule.
-    e.turn.turns = std::abs(turns) <= sim::kMaxHandTurns && turns == std::trunc(turns) ? static_cast<int>(turns) : 0;
+    e.turn.turns = sim::whole_turns(turns);
     e.value = e.turn.turns;
     e.duration_s = e.turn.seconds;
     const std::string problem = sim::hand_turn_problem(e.turn);

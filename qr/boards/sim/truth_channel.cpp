@@ -42,8 +42,7 @@ bool parse_turn_command(const std::vector<std::string>& words, TruthCommand& com
   } else if (!parse_real(words[2], turns) || !parse_real(words[3], spec.seconds)) {
     error = "turn: bad number in '" + words[2].substr(0, 40) + " " + words[3].substr(0, 40) + "'";
   } else {
-    // Out of range or not whole: 0 turns, which hand_turn_problem refuses with the rule.
-    spec.turns = std::fabs(turns) <= sim::kMaxHandTurns && turns == std::trunc(turns) ? static_cast<int>(turns) : 0;
+    spec.turns = sim::whole_turns(turns);
     const std::string problem = sim::hand_turn_problem(spec);
     if (problem.empty()) {
       command = TruthCommand{.kind = TruthCommand::Kind::turn, .turn = spec};
