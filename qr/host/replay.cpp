@@ -185,8 +185,9 @@ void append(std::string& line, int64_t v) {
 }
 
 template <class Chain>
-int fly(const std::vector<Row>& rows, std::ostream& out) {
+int fly(const std::vector<Row>& rows, std::ostream& out, const wire::ParameterValues& parameters) {
   Chain chain;
+  chain.set_parameters(parameters);
   chain::ChainReplay<Chain> test_mode(chain,
                                       rows.empty() ? chain::ChainReplay<Chain>::kPeriodUs : rows.front().time_us);
   out << replay_output_header() << "\n";
@@ -210,8 +211,8 @@ int fly(const std::vector<Row>& rows, std::ostream& out) {
 template <uint32_t Hz>
 int fly_at(const std::vector<Row>& rows, std::ostream& out, const ReplayOptions& options) {
   if (options.arithmetic == ReplayArithmetic::reference_double)
-    return fly<FlightChain<chain::DoubleNumbers, Hz>>(rows, out);
-  return fly<FlightChain<chain::FixedNumbers, Hz>>(rows, out);
+    return fly<FlightChain<chain::DoubleNumbers, Hz>>(rows, out, options.parameters);
+  return fly<FlightChain<chain::FixedNumbers, Hz>>(rows, out, options.parameters);
 }
 
 const std::string& sensor_log_header() {

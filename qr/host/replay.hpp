@@ -12,6 +12,8 @@
 #include <iosfwd>
 #include <string>
 
+#include <common/parameter_table.hpp>
+
 namespace qr::host {
 
 enum class ReplayArithmetic {
@@ -21,6 +23,9 @@ enum class ReplayArithmetic {
 
 struct ReplayOptions {
   ReplayArithmetic arithmetic = ReplayArithmetic::fixed;
+  // The chain's parameters: a recording replays bit for bit with the ones it flew with (the
+  // defaults unless the flight changed some: gains, the filter's cut-off, a measured gyro scale).
+  wire::ParameterValues parameters{};
 };
 
 // Reads `in_csv`, writes `out_csv`. Returns 0 on success. On bad input (a missing or unreadable

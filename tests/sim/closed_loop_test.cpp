@@ -9,6 +9,8 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include <qr/boards/sim/scenario.hpp>
@@ -163,24 +165,35 @@ std::vector<std::map<std::string, std::string>> read_csv(const std::string& path
   return rows;
 }
 
+// step-roll flown with `parameters`, recorded and traced, then replayed with `replayed_with`
+// into `replay_path`; the trace's rows by time in µs.
+std::map<std::string, std::map<std::string, std::string>> fly_and_replay(
+    const std::vector<std::pair<wire::ParamId, int32_t>>& parameters, const qr::host::ReplayOptions& replayed_with,
+    const std::string& replay_path) {
+  const std::string dir = ::testing::TempDir();
+  qrsim::RunOptions options;
+  options.record_path = dir + "sim_flight_record.csv";
+  options.trace_path = dir + "sim_flight_trace.csv";
+  options.parameters = parameters;
+  const qrsim::ScenarioResult flown = qrsim::run_scenario(builtin("step-roll"), options);
+  EXPECT_TRUE(flown.error.empty()) << flown.error;
+  std::ostringstream errors;
+  EXPECT_EQ(qr::host::run_replay(options.record_path.c_str(), replay_path.c_str(), errors, replayed_with), 0)
+      << errors.str();
+  std::map<std::string, std::map<std::string, std::string>> flight;
+  for (auto& row : read_csv(options.trace_path)) {
+    flight[std::to_string(std::lround(std::stod(row["t_s"]) * 1e6))] = row;
+  }
+  return flight;
+}
+
 // A simulated flight recorded (--record) and replayed (--replay, the chain engineer's test mode)
 // gives, tick for tick, the estimates and engine values the firmware computed in flight: the
 // recording carries exactly what the QR read, and the replay is the same integer chain.
 TEST(ClosedLoop, ReplayOfASimulatedFlightIsBitIdentical) {
   const std::string dir = ::testing::TempDir();
-  qrsim::RunOptions options;
-  options.record_path = dir + "sim_flight_record.csv";
-  options.trace_path = dir + "sim_flight_trace.csv";
-  const qrsim::ScenarioResult flown = qrsim::run_scenario(builtin("step-roll"), options);
-  ASSERT_TRUE(flown.error.empty()) << flown.error;
-  std::ostringstream errors;
-  ASSERT_EQ(qr::host::run_replay(options.record_path.c_str(), (dir + "sim_flight_replay.csv").c_str(), errors), 0)
-      << errors.str();
+  auto flight = fly_and_replay({}, {}, dir + "sim_flight_replay.csv");
 
-  std::map<std::string, std::map<std::string, std::string>> flight;  // by time in µs
-  for (auto& row : read_csv(options.trace_path)) {
-    flight[std::to_string(std::lround(std::stod(row["t_s"]) * 1e6))] = row;
-  }
   size_t compared = 0;
   for (auto& replayed : read_csv(dir + "sim_flight_replay.csv")) {
     const auto it = flight.find(replayed["time_us"]);
@@ -196,6 +209,34 @@ TEST(ClosedLoop, ReplayOfASimulatedFlightIsBitIdentical) {
     }
   }
   EXPECT_GT(compared, 8000u);  // take-off, hover and the step: 8.3 s in full control
+}
+
+// A flight with parameters of its own (measured gyro scales, another cut-off) replays bit for bit
+// with them (--param), and not with the defaults.
+TEST(ClosedLoop, ReplayWithTheFlightsParametersIsBitIdentical) {
+  const std::vector<std::pair<wire::ParamId, int32_t>> parameters = {{wire::ParamId::gyro_scale_x_ppm, 15000},
+                                                                     {wire::ParamId::gyro_scale_y_ppm, -12000},
+                                                                     {wire::ParamId::filter_cutoff_hz, 30}};
+  qr::host::ReplayOptions with_them;
+  for (const auto& [id, raw] : parameters) with_them.parameters.set(static_cast<uint8_t>(id), raw);
+  const std::string dir = ::testing::TempDir();
+  for (const bool same : {true, false}) {
+    auto flight = fly_and_replay(parameters, same ? with_them : qr::host::ReplayOptions{},
+                                 dir + "sim_flight_replay_parameters.csv");
+    size_t compared = 0, differ = 0;
+    for (auto& replayed : read_csv(dir + "sim_flight_replay_parameters.csv")) {
+      const auto it = flight.find(replayed["time_us"]);
+      if (it == flight.end() || it->second["mode"] != "5") continue;
+      ++compared;
+      differ += replayed["roll_e4"] != it->second["roll_est_e4"] || replayed["ae0"] != it->second["engine0"];
+    }
+    EXPECT_GT(compared, 8000u);
+    if (same) {
+      EXPECT_EQ(differ, 0u);
+    } else {
+      EXPECT_GT(differ, compared / 2) << "the defaults would have flown another flight";
+    }
+  }
 }
 
 // Vehicles around the default: mass ±20 %, inertia ±30 %, motor lag 10-70 ms (spin-down 5/3 of

@@ -36,7 +36,7 @@ constexpr const char* kUsage = R"(usage:
   qrsim --sweep NAME|FILE [--seeds N] [--no-draw] [--seed N] [--seconds S] [--vehicle FILE]
         [--param NAME=VALUE]... [--rc crsf] [--esc dshot]
   qrsim --soak [--seconds S] [--seed N]
-  qrsim --replay IN.csv --out OUT.csv [--double]
+  qrsim --replay IN.csv --out OUT.csv [--double] [--param NAME=VALUE]...
   qrsim --list
   qrsim --help
 
@@ -66,7 +66,8 @@ rate) flying in a simulated IN4073-class quadrotor.
                    same seed, same flight (default 1)
   --vehicle FILE   vehicle parameter file (default: the compiled-in sim/vehicles/in4073.txt)
   --param N=V      scenario: the pilot uploads parameter N (a name from docs/parameters.md,
-                   e.g. attitude_c1) with value V in the parameter's unit before flying
+                   e.g. attitude_c1) with value V in the parameter's unit before flying;
+                   replay: the chain runs with it, as the recorded flight did
   --no-noise       scenario: perfect sensors (no noise, bias, scale error or vibration)
   --trace FILE     scenario: write every control period to FILE as CSV (truth and estimated
                    attitude and rates, set-points, engines, position, battery)
@@ -236,6 +237,7 @@ int main(int argc, char** argv) {
       const std::string problem = qrsim::parameter_from_text(std::string(v, eq), eq + 1, id, raw);
       if (!problem.empty()) return usage_error("--param: " + problem);
       scenario.parameters.emplace_back(id, raw);
+      replay_options.parameters.set(static_cast<uint8_t>(id), raw);
     } else {
       return usage_error("unknown argument " + arg);
     }

@@ -363,21 +363,6 @@ std::string band_text(const Band& band) {
   return band.figure + " " + compare_text(band.compare) + " " + limit;
 }
 
-std::string parameter_from_text(const std::string& name, const std::string& value, wire::ParamId& id, int32_t& raw) {
-  const wire::ParameterSpec* spec = nullptr;
-  for (const wire::ParameterSpec& s : wire::kParameterTable) {
-    if (name == s.name) spec = &s;
-  }
-  if (spec == nullptr) return "unknown parameter '" + name + "' (docs/parameters.md names them)";
-  double real = 0;
-  if (!parse_real(value, real)) return "bad number '" + value + "' for parameter " + name;
-  const double scaled = std::round(std::ldexp(real, spec->frac_bits));
-  if (scaled < spec->min || scaled > spec->max) return "parameter " + name + ": " + value + " is out of range";
-  id = spec->id;
-  raw = static_cast<int32_t>(scaled);
-  return "";
-}
-
 bool parse_scenario(const std::string& text, const std::string& name, const std::string& origin, ScenarioScript& out,
                     std::string& error) {
   out = ScenarioScript{};

@@ -14,6 +14,7 @@
 
 #include <common/mode.hpp>
 #include <common/parameter_table.hpp>
+#include <qr/host/parameter_text.hpp>
 #include <sim/hand_turn.hpp>
 #include <sim/vec3.hpp>
 #include <sim/vehicle.hpp>
@@ -99,9 +100,7 @@ bool parse_scenario(const std::string& text, const std::string& name, const std:
 // Reads a scenario file and the vehicle file it names (relative to the scenario file).
 bool load_scenario_file(const std::string& path, ScenarioScript& out, std::string& error);
 
-// A parameter by its name in docs/parameters.md with a value in its unit, as the wire carries it.
-// Returns an empty string on success, otherwise what is wrong.
-std::string parameter_from_text(const std::string& name, const std::string& value, wire::ParamId& id, int32_t& raw);
+using qr::host::parameter_from_text;  // a parameter by its name and a value in its unit
 
 const char* compare_text(Compare compare);  // "<", "<=", "=="
 std::string band_text(const Band& band);    // "rise_s < 0.3", "final_mode == full"
