@@ -16,9 +16,9 @@ constexpr const char* kUsage =
     "the first 512 rows calibrate, the rest fly in full control. Writes every tick's estimates,\n"
     "controller outputs and engine values to OUT.csv. docs/replay.md has both formats.\n"
     "\n"
-    "  --double   run the double-precision reference chain instead of the flight build\n"
+    "  --double     run the double-precision reference chain instead of the flight build\n"
     "  --param N=V  the chain's parameter N (a name from docs/parameters.md) at V in its unit,\n"
-    "             as the flight had it (default: the parameter's default)\n";
+    "               as the flight had it (default: the parameter's default)\n";
 
 }  // namespace
 
