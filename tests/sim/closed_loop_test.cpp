@@ -166,14 +166,14 @@ std::vector<std::map<std::string, std::string>> read_csv(const std::string& path
 }
 
 // step-roll flown with `parameters`, recorded and traced, then replayed with `replayed_with`
-// into `replay_path`; the trace's rows by time in µs.
+// into `replay_path`; the trace's rows by time in µs. The recording and the trace are named after
+// the replay: each test has files of its own (CTest runs them side by side).
 std::map<std::string, std::map<std::string, std::string>> fly_and_replay(
     const std::vector<std::pair<wire::ParamId, int32_t>>& parameters, const qr::host::ReplayOptions& replayed_with,
     const std::string& replay_path) {
-  const std::string dir = ::testing::TempDir();
   qrsim::RunOptions options;
-  options.record_path = dir + "sim_flight_record.csv";
-  options.trace_path = dir + "sim_flight_trace.csv";
+  options.record_path = replay_path + ".record.csv";
+  options.trace_path = replay_path + ".trace.csv";
   options.parameters = parameters;
   const qrsim::ScenarioResult flown = qrsim::run_scenario(builtin("step-roll"), options);
   EXPECT_TRUE(flown.error.empty()) << flown.error;
