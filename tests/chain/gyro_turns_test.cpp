@@ -110,6 +110,16 @@ struct TurnRig {
   }
 };
 
+// A calibration asking for `asked` turns, then `turned` turns about `axis` in `seconds`: the result.
+GyroTurnsResult measure(int32_t asked, int axis, double turned, double seconds, const double (&scale)[3],
+                        double tilt = 0) {
+  TurnRig rig;
+  GyroTurns<kHz> t;
+  rig.calibrate(t, asked);
+  EXPECT_GT(rig.turn(t, axis, turned, seconds, scale, tilt), 0) << "the measurement ends";
+  return t.result();
+}
+
 TEST(GyroTurns, ATurnOfTheCountAskedForGivesThatAxisScale) {
   for (int axis = 0; axis < 3; ++axis) {
     for (const double e : {-0.03, 0.0, 0.0213}) {
@@ -138,33 +148,19 @@ TEST(GyroTurns, ATurnOfTheCountAskedForGivesThatAxisScale) {
 
 TEST(GyroTurns, AMiscountedTurnSetsNothing) {
   const double scale[3] = {1, 1, 1.03};
-  for (const double turned : {1.0, 3.0}) {
-    TurnRig rig;
-    GyroTurns<kHz> t;
-    rig.calibrate(t, 2);
-    ASSERT_GT(rig.turn(t, 2, turned, 6.0, scale), 0);
-    EXPECT_FALSE(t.result().found) << turned;
-  }
+  for (const double turned : {1.0, 3.0}) EXPECT_FALSE(measure(2, 2, turned, 6.0, scale).found) << turned;
   // The scale tolerance itself: 7 % high is a scale, 9 % high is not.
   for (const double e : {0.07, 0.09}) {
     const double high[3] = {1, 1, 1 + e};
-    TurnRig rig;
-    GyroTurns<kHz> t;
-    rig.calibrate(t, 1);
-    ASSERT_GT(rig.turn(t, 2, 1, 4.0, high), 0);
-    EXPECT_EQ(t.result().found, e < 0.08) << e;
+    EXPECT_EQ(measure(1, 2, 1, 4.0, high).found, e < 0.08) << e;
   }
 }
 
 TEST(GyroTurns, ATurnAboutATiltedAxisSetsNothing) {
   const double scale[3] = {1, 1, 1};
   for (const double tilt_deg : {2.0, 4.0}) {
-    TurnRig rig;
-    GyroTurns<kHz> t;
-    rig.calibrate(t, 2);
-    ASSERT_GT(rig.turn(t, 2, 2, 5.0, scale, tilt_deg * std::numbers::pi / 180), 0);
     // sin 2 deg = 3.5 % of the turn on x, inside the 5 %; sin 4 deg = 7 %, beyond.
-    EXPECT_EQ(t.result().found, tilt_deg < 3) << tilt_deg;
+    EXPECT_EQ(measure(2, 2, 2, 5.0, scale, tilt_deg * std::numbers::pi / 180).found, tilt_deg < 3) << tilt_deg;
   }
 }
 

@@ -807,6 +807,20 @@ TEST(Console, TaskTableIsPrintedOnRequest) {
   EXPECT_TRUE(sim.logged("ns: mean    max overruns  (the host's ns: the simulator's board)"));
 }
 
+// A simulator key on a real serial port: the log says "no simulator", and nothing goes out.
+void expect_no_simulator(qrterm::Key key) {
+  Bench real;
+  real.key(key);
+  EXPECT_TRUE(real.logged("no simulator"));
+  EXPECT_TRUE(real.console.take_sim_commands().empty());
+}
+
+qrterm::Console::Setup simulator_setup() {
+  qrterm::Console::Setup setup;
+  setup.simulator = true;
+  return setup;
+}
+
 // The push key: a command for the simulator's truth channel when the console started qrsim,
 // "no simulator" on a real serial port. Truth lines become the screen's truth text; error lines
 // go to the log.
@@ -817,9 +831,7 @@ TEST(Console, PushKeyNeedsTheSimulator) {
   EXPECT_TRUE(real.console.take_sim_commands().empty());
   EXPECT_EQ(real.console.truth(), "");
 
-  qrterm::Console::Setup setup;
-  setup.simulator = true;
-  Bench sim(setup);
+  Bench sim(simulator_setup());
   sim.key('N');
   const std::vector<std::string> commands = sim.console.take_sim_commands();
   ASSERT_EQ(commands.size(), 1u);
@@ -838,14 +850,9 @@ TEST(Console, PushKeyNeedsTheSimulator) {
 // The reset key (a newcomer's vehicle lay at 48 degrees after a panic, and only a restart of the
 // simulator set it upright): a reset command on the truth channel, "no simulator" on a real port.
 TEST(Console, ResetKeySetsTheSimulatedQrUpright) {
-  Bench real;
-  real.key('v');
-  EXPECT_TRUE(real.logged("no simulator"));
-  EXPECT_TRUE(real.console.take_sim_commands().empty());
+  expect_no_simulator('v');
 
-  qrterm::Console::Setup setup;
-  setup.simulator = true;
-  Bench sim(setup);
+  Bench sim(simulator_setup());
   sim.key('v');
   const std::vector<std::string> commands = sim.console.take_sim_commands();
   ASSERT_EQ(commands.size(), 1u);
@@ -859,14 +866,9 @@ TEST(Console, ResetKeySetsTheSimulatedQrUpright) {
 // The turn key: the hand's turn on the truth channel, the axes in turn (a gyro scale calibration
 // of all three), "no simulator" on a real port.
 TEST(Console, TurnKeyTurnsTheSimulatedQrAboutEachAxisInTurn) {
-  Bench real;
-  real.key('y');
-  EXPECT_TRUE(real.logged("no simulator"));
-  EXPECT_TRUE(real.console.take_sim_commands().empty());
+  expect_no_simulator('y');
 
-  qrterm::Console::Setup setup;
-  setup.simulator = true;
-  Bench sim(setup);
+  Bench sim(simulator_setup());
   for (int i = 0; i < 4; ++i) sim.key('y');
   const std::vector<std::string> commands = sim.console.take_sim_commands();
   EXPECT_EQ(commands, (std::vector<std::string>{"turn z 2 4\n", "turn x 2 4\n", "turn y 2 4\n", "turn z 2 4\n"}));
@@ -880,14 +882,9 @@ TEST(Console, TurnKeyTurnsTheSimulatedQrAboutEachAxisInTurn) {
 // which would refuse; `m` puts the arm switch off. Other requests still go to the QR, and on a real
 // serial port (no simulator) `m` sends nothing.
 TEST(Console, WhileTheRadioFliesTheModeKeysMoveTheSimulatedRadiosSwitches) {
-  Bench real;
-  real.key('m');
-  EXPECT_TRUE(real.logged("no simulator"));
-  EXPECT_TRUE(real.console.take_sim_commands().empty());
+  expect_no_simulator('m');
 
-  qrterm::Console::Setup setup;
-  setup.simulator = true;
-  Bench sim(setup);
+  Bench sim(simulator_setup());
   sim.connect();
   wire::TelemetryRadio radio;
   radio.flags = wire::kRadioPilot | wire::kRadioLinkUp;

@@ -6,7 +6,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <map>
 #include <sstream>
 #include <string>
@@ -16,6 +15,8 @@
 #include <qr/boards/sim/scenario.hpp>
 #include <qr/host/replay.hpp>
 #include <sim/random.hpp>
+
+#include "sim_test_support.hpp"
 
 namespace {
 
@@ -146,25 +147,6 @@ TEST(ClosedLoop, SameSeedSameFlight) {
   }
 }
 
-// A CSV file as rows of named fields.
-std::vector<std::map<std::string, std::string>> read_csv(const std::string& path) {
-  std::ifstream in(path);
-  std::string line;
-  std::getline(in, line);
-  std::vector<std::string> names;
-  std::stringstream header(line);
-  for (std::string name; std::getline(header, name, ',');) names.push_back(name);
-  std::vector<std::map<std::string, std::string>> rows;
-  while (std::getline(in, line)) {
-    std::stringstream fields(line);
-    std::map<std::string, std::string> row;
-    for (size_t i = 0; i < names.size() && std::getline(fields, row[names[i]], ','); ++i) {
-    }
-    rows.push_back(row);
-  }
-  return rows;
-}
-
 // step-roll flown with `parameters`, recorded and traced, then replayed with `replayed_with`
 // into `replay_path`; the trace's rows by time in µs. The recording and the trace are named after
 // the replay: each test has files of its own (CTest runs them side by side).
@@ -181,7 +163,7 @@ std::map<std::string, std::map<std::string, std::string>> fly_and_replay(
   EXPECT_EQ(qr::host::run_replay(options.record_path.c_str(), replay_path.c_str(), errors, replayed_with), 0)
       << errors.str();
   std::map<std::string, std::map<std::string, std::string>> flight;
-  for (auto& row : read_csv(options.trace_path)) {
+  for (auto& row : sim_test::read_csv(options.trace_path)) {
     flight[std::to_string(std::lround(std::stod(row["t_s"]) * 1e6))] = row;
   }
   return flight;
@@ -195,7 +177,7 @@ TEST(ClosedLoop, ReplayOfASimulatedFlightIsBitIdentical) {
   auto flight = fly_and_replay({}, {}, dir + "sim_flight_replay.csv");
 
   size_t compared = 0;
-  for (auto& replayed : read_csv(dir + "sim_flight_replay.csv")) {
+  for (auto& replayed : sim_test::read_csv(dir + "sim_flight_replay.csv")) {
     const auto it = flight.find(replayed["time_us"]);
     if (it == flight.end() || it->second["mode"] != "5") continue;  // full control only
     auto& flown_row = it->second;
@@ -224,7 +206,7 @@ TEST(ClosedLoop, ReplayWithTheFlightsParametersIsBitIdentical) {
     auto flight = fly_and_replay(parameters, same ? with_them : qr::host::ReplayOptions{},
                                  dir + "sim_flight_replay_parameters.csv");
     size_t compared = 0, differ = 0;
-    for (auto& replayed : read_csv(dir + "sim_flight_replay_parameters.csv")) {
+    for (auto& replayed : sim_test::read_csv(dir + "sim_flight_replay_parameters.csv")) {
       const auto it = flight.find(replayed["time_us"]);
       if (it == flight.end() || it->second["mode"] != "5") continue;
       ++compared;

@@ -4,10 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <numbers>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -150,23 +148,14 @@ TEST(HandTurn, LimitsKeepTheTurnReadable) {
   EXPECT_EQ(sim::hand_turn_problem({sim::BodyAxis::z, 1, 1.6}), "");
 }
 
-// A trace file's column by name, as numbers.
-std::map<std::string, std::vector<double>> read_trace(const std::string& path) {
-  std::ifstream in(path);
-  std::string line;
-  std::getline(in, line);
-  std::vector<std::string> names;
-  std::stringstream header(line);
-  for (std::string name; std::getline(header, name, ',');) names.push_back(name);
-  std::map<std::string, std::vector<double>> columns;
-  while (std::getline(in, line)) {
-    std::stringstream fields(line);
-    std::string field;
-    for (size_t i = 0; i < names.size() && std::getline(fields, field, ','); ++i) {
-      columns[names[i]].push_back(field.empty() ? std::nan("") : std::stod(field));
-    }
+// A trace's column by name, as numbers.
+std::vector<double> column(const std::vector<std::map<std::string, std::string>>& rows, const std::string& name) {
+  std::vector<double> out;
+  for (const auto& row : rows) {
+    const std::string& field = row.at(name);
+    out.push_back(field.empty() ? std::nan("") : std::stod(field));
   }
-  return columns;
+  return out;
 }
 
 double max_of(const std::vector<double>& v) {
@@ -199,17 +188,19 @@ TEST(HandTurn, AScenarioTurnsTheVehicleInSafe) {
   EXPECT_LT(r.figure("drift_m_end"), 1e-6);
   EXPECT_LT(r.figure("speed_m_s_end"), 1e-6);
   EXPECT_TRUE(std::isnan(r.figure("touchdown_speed_m_s"))) << "set down by a hand, not landed";
-  const auto trace = read_trace(options.trace_path);
-  ASSERT_GT(trace.at("r_rad_s").size(), 5000u);
-  EXPECT_NEAR(max_of(trace.at("r_rad_s")), 4 * std::numbers::pi * 2 / 4, 1e-3);
+  const auto rows = sim_test::read_csv(options.trace_path);
+  const std::vector<double> r_rad_s = column(rows, "r_rad_s"), p_rad_s = column(rows, "p_rad_s");
+  const std::vector<double> mode = column(rows, "mode"), t_s = column(rows, "t_s");
+  ASSERT_GT(r_rad_s.size(), 5000u);
+  EXPECT_NEAR(max_of(r_rad_s), 4 * std::numbers::pi * 2 / 4, 1e-3);
   std::vector<double> minus_p;
-  for (const double p : trace.at("p_rad_s")) minus_p.push_back(-p);
+  for (const double p : p_rad_s) minus_p.push_back(-p);
   EXPECT_NEAR(max_of(minus_p), 4 * std::numbers::pi / 2, 1e-3);
   size_t turning = 0;
-  for (size_t i = 0; i < trace.at("mode").size(); ++i) {
-    if (std::abs(trace.at("r_rad_s")[i]) + std::abs(trace.at("p_rad_s")[i]) < 0.01) continue;
+  for (size_t i = 0; i < mode.size(); ++i) {
+    if (std::abs(r_rad_s[i]) + std::abs(p_rad_s[i]) < 0.01) continue;
     ++turning;
-    EXPECT_EQ(trace.at("mode")[i], 0) << "in safe while turned, at " << trace.at("t_s")[i] << " s";
+    EXPECT_EQ(mode[i], 0) << "in safe while turned, at " << t_s[i] << " s";
   }
   EXPECT_GT(turning, 5500u) << "4 s and 2 s of turning";
 }

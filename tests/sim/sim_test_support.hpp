@@ -1,10 +1,15 @@
-// Helpers shared by the plant and sensor tests.
+// Helpers shared by the simulator's tests.
 #pragma once
 
 #include <stdint.h>
 
 #include <array>
 #include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include <sim/quadrotor.hpp>
 #include <sim/vehicle.hpp>
@@ -42,6 +47,25 @@ inline void place_in_air(sim::Quadrotor& plant, double speed, double height = 10
 inline void run(sim::Quadrotor& plant, double seconds, double dt = 125e-6) {
   const long steps = std::lround(seconds / dt);
   for (long i = 0; i < steps; ++i) plant.step(dt);
+}
+
+// A CSV file (a scenario's trace, a recording, a replay) as rows of named fields.
+inline std::vector<std::map<std::string, std::string>> read_csv(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::string> names;
+  std::stringstream header(line);
+  for (std::string name; std::getline(header, name, ',');) names.push_back(name);
+  std::vector<std::map<std::string, std::string>> rows;
+  while (std::getline(in, line)) {
+    std::stringstream fields(line);
+    std::map<std::string, std::string> row;
+    for (size_t i = 0; i < names.size() && std::getline(fields, row[names[i]], ','); ++i) {
+    }
+    rows.push_back(row);
+  }
+  return rows;
 }
 
 }  // namespace sim_test
