@@ -108,7 +108,7 @@ inline constexpr MessageSpec kMessageTable[] = {
     {MessageType::telemetry_log_part, 9, false, Direction::qr_to_pc, "telemetry_log_part", false},
     {MessageType::telemetry_task, 7, false, Direction::qr_to_pc, "telemetry_task", false},
     {MessageType::log_status, 7, false, Direction::qr_to_pc, "log_status", false},
-    {MessageType::telemetry_height, 7, false, Direction::qr_to_pc, "telemetry_height", false},
+    {MessageType::telemetry_height, 9, false, Direction::qr_to_pc, "telemetry_height", false},
     {MessageType::telemetry_radio, 9, false, Direction::qr_to_pc, "telemetry_radio", false},
     {MessageType::telemetry_rpm, 8, false, Direction::qr_to_pc, "telemetry_rpm", false},
     {MessageType::observable_info, 6, false, Direction::qr_to_pc, "observable_info", false},

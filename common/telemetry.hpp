@@ -17,6 +17,8 @@ inline constexpr uint8_t kFlagCalibrated = 0x01;
 inline constexpr uint8_t kFlagLogging = 0x02;
 inline constexpr uint8_t kFlagBatteryWarning = 0x04;
 inline constexpr uint8_t kFlagLogFull = 0x08;
+// The QR believes it is flying (its landed detector, docs/signal-chain.md), not resting on the ground.
+inline constexpr uint8_t kFlagFlying = 0x10;
 
 struct TelemetryAttitude {
   static constexpr MessageType kType = MessageType::telemetry_attitude;
@@ -169,12 +171,14 @@ struct TelemetryTask {
 inline constexpr uint8_t kHeightValid = 0x01;  // the estimate has its barometer reference
 
 // The height estimate (the barometer and the accelerometer fused), up, from the height at the
-// last calibration: what height hold holds and a landing descends on.
+// last calibration: what height hold holds and a landing descends on; and the hover lift the QR
+// has learnt in flight.
 struct TelemetryHeight {
   static constexpr MessageType kType = MessageType::telemetry_height;
-  int32_t height_mm = 0;   // mm, up
-  int16_t climb_mm_s = 0;  // vertical speed, mm/s, up, saturated
-  uint8_t flags = 0;       // kHeightValid; without it the two figures are 0 and mean nothing
+  int32_t height_mm = 0;    // mm, up
+  int16_t climb_mm_s = 0;   // vertical speed, mm/s, up, saturated
+  uint8_t flags = 0;        // kHeightValid; without it the two figures are 0 and mean nothing
+  uint16_t hover_lift = 0;  // the lift that carries the vehicle, 0..1000 (0: no flight has taught it yet)
 
   constexpr bool operator==(const TelemetryHeight&) const = default;
 
@@ -183,8 +187,9 @@ struct TelemetryHeight {
     v(m.height_mm);
     v(m.climb_mm_s);
     v(m.flags);
+    v(m.hover_lift);
   }
-  constexpr bool valid() const { return (flags & ~kHeightValid) == 0; }
+  constexpr bool valid() const { return (flags & ~kHeightValid) == 0 && hover_lift <= kLiftMax; }
 };
 
 // TelemetryRadio::flags bits

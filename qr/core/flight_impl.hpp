@@ -130,6 +130,7 @@ uint8_t Flight<Chain>::telemetry_flags() const {
   if (log_.logging()) flags |= wire::kFlagLogging;
   if (safety_.battery_warning()) flags |= wire::kFlagBatteryWarning;
   if (log_.full()) flags |= wire::kFlagLogFull;
+  if (!chain_.landed()) flags |= wire::kFlagFlying;
   return flags;
 }
 

@@ -69,7 +69,8 @@ class FlightTelemetry {
     } else if (group == 5) {
       const auto& chain = f.chain();
       send(wire::encode(wire::TelemetryHeight{chain.height_mm(), wire::saturate_i16(chain.climb_mm_s()),
-                                              chain.height_valid() ? wire::kHeightValid : uint8_t{0}}));
+                                              chain.height_valid() ? wire::kHeightValid : uint8_t{0},
+                                              chain.hover_lift()}));
     } else if (group == kRadioGroup) {
       if (radio) send(wire::encode(radio_report(f)));
     } else if (group == kRpmGroup) {

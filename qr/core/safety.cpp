@@ -61,8 +61,6 @@ constexpr LandingNeed kLandingNeeds[] = {
     {[](Mode, PanicCause, const Situation& s, uint16_t, const SafetyLimits&) { return s.calibrated; }},
     // The descent is flown on the height estimate's vertical speed.
     {[](Mode, PanicCause, const Situation& s, uint16_t, const SafetyLimits&) { return s.height_valid; }},
-    // A vehicle beyond the tilt limit for the tilt time is lost: the attitude loops could not hold it.
-    {[](Mode, PanicCause cause, const Situation&, uint16_t, const SafetyLimits&) { return cause != PanicCause::tilt; }},
     // It was flying: some lift above idle in the last quarter second (a lift stick let go an
     // instant before the panic still counts; a vehicle resting with its engines still does not).
     {[](Mode, PanicCause, const Situation&, uint16_t flying_lift, const SafetyLimits& l) {
@@ -296,7 +294,9 @@ void SafetyMachine::enter_panic(PanicCause cause, const Situation& s) {
   enter(Mode::panic);
   panic_cause_ = cause;
   panic_start_us_ = s.now_us;
-  hold_level_ = scale(flying_lift(), limits_.panic_hold_pct, 100);
+  // A tilt with no trusted estimate to level it by: held at 90 % with no attitude control the
+  // engines would drive the tilted vehicle sideways and over. They stop at once.
+  hold_level_ = cause == PanicCause::tilt ? uint16_t{0} : scale(flying_lift(), limits_.panic_hold_pct, 100);
   // Twice the time to descend from the height estimate (at most 100 m) plus 2 m, at the descent
   // rate: (h + 2000 mm) x 2000 / v ms. A division, once per panic.
   const int32_t h = s.height_mm < 0 ? 0 : s.height_mm > 100000 ? 100000 : s.height_mm;

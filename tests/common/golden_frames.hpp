@@ -99,7 +99,7 @@ inline std::vector<GoldenFrame> golden_frames() {
       golden("G25", ModeChange{17, Mode::manual}, "4D 12 11 02 17 31 A9 C5"),
       golden("G26", ModeChange{17, Mode::panic}, "4D 12 11 01 E1 A8 A5 B2"),
       golden("G27", Ack{MessageType::mode_change, 17}, "4D 81 12 11 6A"),
-      golden("G28", TelemetryHeight{1523, -412, kHeightValid}, "4D 9F F3 05 00 00 64 FE 01 7C"),
+      golden("G28", TelemetryHeight{1523, -412, kHeightValid, 548}, "4D 9F F3 05 00 00 64 FE 01 24 02 28"),
       golden("G29", ObservableGet{6, kAllObservables}, "4D 22 06 FF 22"),
       golden("G30", StreamRequest{8, 0, 5, {0, 6, kNoObservable, kNoObservable}}, "4D 41 08 00 05 00 00 06 FF FF 34"),
       golden("G31", ObservableInfo{0, 68, ObservableType::i16, -4, 1000}, "4D EB 00 44 00 FC E8 03 1E"),

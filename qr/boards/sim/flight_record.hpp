@@ -3,6 +3,8 @@
 // (panic, touchdown). scenario.cpp fills it; scenario_score.cpp turns it into figures.
 #pragma once
 
+#include <stdint.h>
+
 #include <qr/boards/sim/scoring.hpp>
 
 namespace qrsim {
@@ -27,6 +29,15 @@ struct FlightRecord {
   double battery_v_min = kNotMeasured, rested_v_min = kNotMeasured;
   double touchdown_speed = kNotMeasured;  // m/s, the first after having been airborne
   double touchdown_at = kNotMeasured, engines_stopped_at = kNotMeasured;
+  // What the firmware believed against the truth (host build only: the devboard's frames do not
+  // carry its verdict). From t0 on:
+  bool belief_seen = false;                  // the firmware's flying/landed verdict was read
+  bool believed_flying = false;              // ... and what it was last tick
+  uint8_t belief_mode = 0;                   // the mode last tick
+  double left_ground_at = kNotMeasured;      // the truth: first tick airborne after one on the ground
+  double flying_seen_at = kNotMeasured;      // the firmware's first "flying" from then on
+  int false_takeoffs = 0;                    // landed -> flying while on the ground, thrust below weight
+  double declared_clearance = kNotMeasured;  // the largest true clearance at a flying -> landed with lift
   // Height hold: the first stay in it
   double hold_entry_height = kNotMeasured;  // true height, m, at the first tick in height hold
   Trace hold_height_err;                    // true height minus that, m, every tick in height hold

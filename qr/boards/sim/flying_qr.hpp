@@ -25,6 +25,8 @@ struct FirmwareView {
   // Only the host build shows these (the devboard's frames leave them out, common/sensor_link.hpp).
   bool has_rates = false;
   int16_t yaw_e4 = 0, p_e3 = 0, q_e3 = 0, r_e3 = 0;
+  bool flying = false;                       // the landed detector's verdict
+  int32_t height_mm = 0, climb_mm_s = 0;      // the height estimate
   qr::ControlInput controls;  // the sticks the tick flew with
   uint32_t deadline_misses = 0;
 };
@@ -62,6 +64,8 @@ class HostQr final : public FlyingQr {
     v.yaw_rate_setpoint_e3 = chain.yaw_rate_setpoint_e3();
     v.has_rates = true;
     v.yaw_e4 = chain.yaw_e4(), v.p_e3 = chain.p_e3(), v.q_e3 = chain.q_e3(), v.r_e3 = chain.r_e3();
+    v.flying = !chain.landed();
+    v.height_mm = chain.height_mm(), v.climb_mm_s = chain.climb_mm_s();
     v.controls = qr_->firmware.controls();
     v.deadline_misses = qr_->scheduler.stats().deadline_misses;
     return v;

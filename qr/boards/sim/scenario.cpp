@@ -156,7 +156,8 @@ void write_trace_header(FILE* trace) {
   std::fprintf(trace,
                "t_s,mode,roll_deg,pitch_deg,yaw_deg,roll_est_deg,pitch_est_deg,yaw_est_deg,roll_sp_deg,pitch_sp_deg,"
                "p_rad_s,q_rad_s,r_rad_s,p_est_rad_s,q_est_rad_s,r_est_rad_s,engine0,engine1,engine2,engine3,"
-               "height_m,north_m,east_m,battery_v,roll_est_e4,pitch_est_e4,yaw_est_e4\n");
+               "height_m,north_m,east_m,battery_v,roll_est_e4,pitch_est_e4,yaw_est_e4,flying,height_est_m,"
+               "climb_est_m_s,ground_clearance_m\n");
 }
 
 // The devboard's frames carry no yaw estimate or estimated rates (FirmwareView::has_rates): its
@@ -167,21 +168,50 @@ void write_trace_line(FILE* trace, double t, uint8_t mode, FlyingQr& qr) {
   const sim::Euler e = sim::to_euler(ps.attitude);
   const FirmwareView ch = qr.view();
   const qr::EngineCommand& eng = qr.board().engines();
-  char yaw[16] = "", p[16] = "", q[16] = "", r[16] = "", yaw_e4[16] = "";
+  char yaw[16] = "", p[16] = "", q[16] = "", r[16] = "", yaw_e4[16] = "", flying[4] = "", height[16] = "",
+       climb[16] = "";
   if (ch.has_rates) {
     std::snprintf(yaw, sizeof yaw, "%.4f", ch.yaw_e4 * 1e-4 * kDeg);
     std::snprintf(p, sizeof p, "%.4f", ch.p_e3 * 1e-3);
     std::snprintf(q, sizeof q, "%.4f", ch.q_e3 * 1e-3);
     std::snprintf(r, sizeof r, "%.4f", ch.r_e3 * 1e-3);
     std::snprintf(yaw_e4, sizeof yaw_e4, "%d", ch.yaw_e4);
+    std::snprintf(flying, sizeof flying, "%d", ch.flying ? 1 : 0);
+    std::snprintf(height, sizeof height, "%.3f", ch.height_mm * 1e-3);
+    std::snprintf(climb, sizeof climb, "%.3f", ch.climb_mm_s * 1e-3);
   }
   std::fprintf(trace,
                "%.3f,%u,%.4f,%.4f,%.4f,%.4f,%.4f,%s,%.4f,%.4f,%.4f,%.4f,%.4f,%s,%s,%s,%u,%u,%u,%u,%.3f,%."
-               "3f,%.3f,%.3f,%d,%d,%s\n",
+               "3f,%.3f,%.3f,%d,%d,%s,%s,%s,%s,%.3f\n",
                t, mode, e.roll * kDeg, e.pitch * kDeg, e.yaw * kDeg, ch.roll_e4 * 1e-4 * kDeg,
                ch.pitch_e4 * 1e-4 * kDeg, yaw, ch.roll_setpoint_e4 * 1e-4 * kDeg, ch.pitch_setpoint_e4 * 1e-4 * kDeg,
                ps.rate.x, ps.rate.y, ps.rate.z, p, q, r, eng.value[0], eng.value[1], eng.value[2], eng.value[3],
-               -ps.position.z, ps.position.x, ps.position.y, plant.battery_volts(), ch.roll_e4, ch.pitch_e4, yaw_e4);
+               -ps.position.z, ps.position.x, ps.position.y, plant.battery_volts(), ch.roll_e4, ch.pitch_e4, yaw_e4, flying, height, climb,
+               -plant.deepest_contact());
+}
+
+// The firmware's flying/landed verdict against the truth (docs/simulator.md section 6.5).
+void record_belief(FlightRecord& rec, double t, uint8_t mode, const FirmwareView& qr, const sim::Quadrotor& plant,
+                   bool was_in_air, bool in_air) {
+  if (!qr.has_rates) return;
+  if (!was_in_air && in_air && std::isnan(rec.left_ground_at)) rec.left_ground_at = t;
+  if (!std::isnan(rec.left_ground_at) && qr.flying && std::isnan(rec.flying_seen_at)) rec.flying_seen_at = t;
+  if (rec.belief_seen && !rec.believed_flying && qr.flying && !in_air) {
+    double thrust = 0;
+    for (double w : plant.state().rotor_speed) thrust += plant.vehicle().thrust_coeff * w * w;
+    if (thrust < plant.vehicle().mass_kg * sim::kGravity) ++rec.false_takeoffs;
+  }
+  // A landing declared while the engines still had lift to give (not the pilot's stick put down;
+  // a landing's touchdown ends its panic in the same tick, so last tick's mode says who flew).
+  const bool pilot_stopped = qr.controls.lift == 0 && rec.belief_mode != static_cast<uint8_t>(wire::Mode::panic) &&
+                             rec.belief_mode != static_cast<uint8_t>(wire::Mode::height_hold);
+  if (rec.belief_seen && rec.believed_flying && !qr.flying && !pilot_stopped) {
+    const double clearance = std::max(0.0, -plant.deepest_contact());
+    rec.declared_clearance = std::isnan(rec.declared_clearance) ? clearance : std::max(rec.declared_clearance, clearance);
+  }
+  rec.belief_seen = true;
+  rec.believed_flying = qr.flying;
+  rec.belief_mode = mode;
 }
 
 // One control period of the record, from t0 on.
@@ -232,6 +262,7 @@ void record_tick(FlightRecord& rec, double t, uint8_t mode, FlyingQr& qr, uint16
   // the contact's damper stops the vehicle within a millisecond.
   // A vehicle in a hand (a turn event) is neither flying nor landing when it is set down.
   const bool in_air = plant.deepest_contact() < 0 && !qr.world().held();
+  record_belief(rec, t, mode, chain, plant, airborne, in_air);
   if (airborne && !in_air && std::isnan(rec.touchdown_speed)) {
     rec.touchdown_speed = last_down_speed;
     rec.touchdown_at = t;

@@ -154,8 +154,8 @@ class FlightChain {
   }
 
   // Task "estimator": calibrated filtered sensors -> attitude, bias-corrected rates, and whether
-  // the vehicle is on the ground (landed_detector.hpp: lift 0 until the accelerometer shows it
-  // climbing).
+  // the vehicle is on the ground (landed_detector.hpp: from the thrust, the accelerometer and the
+  // height estimate; a landing's touchdown only near the ground).
   void estimate() {
     Rate rate[3];
     for (int i = 0; i < 3; ++i) rate[i] = filters_.rate(i) - calibration_.gyro_offset(i);
@@ -166,10 +166,13 @@ class FlightChain {
       estimator_.start(accel);
     }
     estimator_.update_rates(rate, landed_.landed());  // on the ground (last tick's verdict): no drag lag
-    // When the chain flies the lift (height hold, a landing) there is lift: only a touchdown lands.
+    // The thrust the mixer is asked for: the pilot's lift, or the vertical loops' (height hold, a
+    // landing) from their last run.
     const Accel accel_z = filters_.accel(2) - calibration_.accel_offset(2);
-    landed_.update(lift_ == LiftSource::pilot ? pilot_.lift() : uint16_t{1}, accel_z);
-    if (lift_ == LiftSource::descend && touchdown_.impact(accel_z)) landed_.touch_down();
+    const Thrust thrust = lift_ == LiftSource::pilot ? mixer_.thrust_of_lift(pilot_.lift()) : vertical_.thrust();
+    landed_.update({thrust, accel_z, height_.height(), height_.climb()});
+    if (lift_ == LiftSource::descend && touchdown_.impact(accel_z) && landed_.near_ground(height_.height()))
+      landed_.touch_down();
   }
 
   // Task "height": calibrated filtered accelerometer, the attitude estimate and the barometer ->
@@ -187,11 +190,14 @@ class FlightChain {
     vertical_.start(mixer_.thrust_of_lift(pilot_.lift()), height_.height());
     lift_ = LiftSource::hold;
   }
-  // Entry action of a panic that lands: level, descending at panic_descent_mm_s from the thrust
-  // of `flying_lift` (engine units), until touchdown. A lift stick let go just before the panic
-  // made the landed detector say "landed"; the vehicle is flying until the touchdown says not.
+  // Entry action of a panic that lands: level, descending at panic_descent_mm_s from the hover
+  // thrust the landed detector learnt, or before any was learnt from the thrust of `flying_lift`
+  // (engine units: the mean of the last quarter second, which an upset that held one engine full
+  // and its opposite at idle puts far above the hover), until touchdown. A lift stick let go just
+  // before the panic made the landed detector say "landed"; the vehicle is flying until the
+  // touchdown says not.
   void start_descent(uint16_t flying_lift) {
-    vertical_.start(mixer_.thrust_of_lift(flying_lift), height_.height());
+    vertical_.start(landed_.hover_known() ? landed_.hover() : mixer_.thrust_of_lift(flying_lift), height_.height());
     touchdown_.start();
     landed_.take_off();
     lift_ = LiftSource::descend;
@@ -207,7 +213,8 @@ class FlightChain {
     if (lift_ == LiftSource::pilot) return;
     const Climb want = lift_ == LiftSource::hold ? vertical_.climb_to_hold(height_.height()) : -touchdown_.descent();
     vertical_.update(want, height_.climb(), !landed_.landed());
-    if (lift_ == LiftSource::descend && touchdown_.update(height_.climb())) landed_.touch_down();
+    if (lift_ == LiftSource::descend && touchdown_.update(height_.climb()) && landed_.near_ground(height_.height()))
+      landed_.touch_down();
   }
 
   // Entry action of yaw and full control: the yaw loop's integral starts empty.
@@ -295,6 +302,8 @@ class FlightChain {
   uint16_t lift() const { return pilot_.lift(); }
   // On the ground (landed_detector.hpp): the controllers' integrals are held empty.
   bool landed() const { return landed_.landed(); }
+  // The hover lift the landed detector learnt in flight, engine units (0: not learnt yet).
+  uint16_t hover_lift() const { return static_cast<uint16_t>(mixer_.engine_of_thrust(landed_.hover())); }
   // The larger magnitude, then one conversion: scaling and rounding keep the order, so this is the
   // larger of the two converted (the safety machine reads it every tick).
   int32_t tilt_mrad() const {

@@ -1,18 +1,32 @@
-// Whether the vehicle is on the ground, for the controllers' integrals: on the ground a held stick
-// (or a tilted floor) is an angle error the vehicle cannot correct, and an integral that sees it
-// winds up to its clamp; at take-off that trim moment then rolls the vehicle over until it is
-// unwound (a 3 degree stick for 15 s at 75 % of the hover lift rolled the simulated vehicle to
-// 11 degrees after take-off, docs/signal-chain.md).
+// Flying or landed, believed from more than one sense, for the controllers' integrals (on the
+// ground a held stick or a tilted floor is an angle error the vehicle cannot correct, and an
+// integral that sees it winds up and rolls the vehicle over at take-off), for height hold (a
+// height to hold needs a vehicle in the air) and for a landing's touchdown.
 //
-// On the ground the accelerometer reads 1 g whatever the engines do: the ground takes what the
-// thrust does not carry. Only once the thrust exceeds the weight does the vehicle climb, and then
-// the specific force along the thrust exceeds 1 g. So: landed from lift 0 (engines stopped: on
-// the ground, or cut) until the specific force along body z has stayed beyond takeoff_mg for
-// 50 ms (vibration that the 20 Hz low-pass leaves cannot hold it there that long). A hover does
-// not look different from the ground to this sensor, so flying stays flying until the lift is 0.
+// No single sense tells. On the ground the accelerometer reads 1 g whatever the engines do (the
+// ground takes what the thrust does not carry), and so does a steady climb, a hover or a steady
+// descent. A climb beyond 1.1 g shows a firm take-off, but a gentle one (a lift stick a few
+// units above the hover, 0.3 m/s) never reads it, and heavy vibration that the sensor clips
+// reads it in flight and on the ground alike. The height estimate sees every climb, but drifts
+// over minutes. The thrust says what the engines can carry, once the vehicle's hover thrust is
+// known; that is learnt in flight, from the thrust that was flying while the accelerometer read
+// 1 g (then thrust = weight), and kept for the session (a battery that sags raises the true
+// hover above the learnt one, which only makes the gates below more permissive).
 //
-// The lift is the stick, not a threshold on it: the hover lift depends on the vehicle and its
-// battery, and the take-off accelerometer reading does not.
+// Landed -> flying: some thrust (and, with the hover known, at least 90 % of it: less cannot lift
+// the vehicle) and one of
+//   - the accelerometer beyond takeoff_mg for 50 ms (a firm take-off), or
+//   - the height estimate 0.1 m above the ground it rested on and climbing faster than 0.1 m/s,
+//     both for 50 ms (a gentle one; on the ground, vibration x10 moves the estimate by less than
+//     0.05 m and 0.07 m/s).
+// Flying -> landed:
+//   - no thrust (the lift stick down, the engines stopped), at once;
+//   - the ground carries it: the hover known, the thrust below 75 % of it, yet the accelerometer's
+//     mean within 0.1 g of 1 g and the climb slower than 0.25 m/s, all for 0.3 s (in the air that
+//     thrust accelerates the vehicle down at a quarter g, which all three would show);
+//   - a landing's touchdown (vertical_controller.hpp), which the chain accepts only within 1 m
+//     of the ground the vehicle took off from (near_ground): a clipped, vibrating accelerometer
+//     can read an impact at any height.
 #pragma once
 
 #include <stdint.h>
@@ -25,35 +39,91 @@ template <class N, uint32_t SampleHz>
 class LandedDetector {
  public:
   using Accel = typename N::Accel;
+  using Thrust = typename N::Thrust;
+  using Height = typename N::Height;
+  using Climb = typename N::Climb;
 
-  static constexpr uint32_t kClimbSamples = SampleHz / 20;  // 50 ms
+  static constexpr uint32_t kClimbSamples = SampleHz / 20;   // 50 ms
+  static constexpr uint32_t kGroundSamples = SampleHz * 3 / 10;  // 0.3 s
+
+  // What the detector looks at, every tick.
+  struct Senses {
+    Thrust thrust;  // the per-engine thrust the mixer is asked for (0: engines stopped)
+    Accel f_z;      // calibrated, filtered specific force along body z, g (-1 at rest)
+    Height height;  // the height estimate, m
+    Climb climb;    // its vertical speed, m/s, up
+  };
 
   // takeoff_mg: the parameter, 1000..4000 mg. Accel holds +-16 g: the conversion is exact.
   void set_takeoff(int32_t takeoff_mg) { takeoff_ = N::template ratio<Accel>(-takeoff_mg, 1000); }
 
-  // lift: the lift stick; f_z: calibrated, filtered specific force along body z (g, -1 at rest).
-  bool update(uint16_t lift, Accel f_z) {
-    if (lift == 0) {
-      landed_ = true;
-      climbing_ = 0;
+  bool update(const Senses& s) {
+    f_mean_ = f_mean_ + product<Accel>(s.f_z - f_mean_, kMeanGain);
+    const bool one_g = magnitude(f_mean_ - kOneG) < kOneGBand;
+    if (s.thrust <= Thrust{}) {
+      set_landed(true);
     } else if (landed_) {
-      climbing_ = f_z < takeoff_ ? climbing_ + 1 : 0;
-      if (climbing_ >= kClimbSamples) landed_ = false;
+      // The ground it rests on, as the height estimate drifts.
+      ground_ = ground_ + product<Height>(s.height - ground_, kGroundGain);
+      const bool can_lift = !hover_known() || s.thrust >= product<Thrust>(hover_, kLiftShare);
+      climbing_ = can_lift && s.f_z < takeoff_ ? climbing_ + 1 : 0;
+      rising_ = can_lift && s.height - ground_ > kRisen && s.climb > kRising ? rising_ + 1 : 0;
+      if (climbing_ >= kClimbSamples || rising_ >= kClimbSamples) set_landed(false);
+    } else {
+      carried_ = hover_known() && s.thrust < product<Thrust>(hover_, kCarriedShare) && one_g &&
+                         magnitude(s.climb) < kStill
+                     ? carried_ + 1
+                     : 0;
+      if (carried_ >= kGroundSamples) {
+        set_landed(true);
+      } else if (airborne_ < kSettleSamples) {
+        ++airborne_;
+      } else if (one_g) {
+        // Thrust equals weight while the accelerometer reads 1 g in the air.
+        hover_ = hover_known() ? hover_ + product<Thrust>(s.thrust - hover_, kHoverGain) : s.thrust;
+      }
     }
     return landed_;
   }
   bool landed() const { return landed_; }
   // A landing (panic): flying until its touchdown says otherwise, and then on the ground.
-  void take_off() {
-    landed_ = false;
-    climbing_ = 0;
-  }
-  void touch_down() { landed_ = true; }
+  void take_off() { set_landed(false); }
+  void touch_down() { set_landed(true); }
+
+  // The learnt per-engine hover thrust (0: no flight has taught it yet).
+  Thrust hover() const { return hover_; }
+  bool hover_known() const { return hover_ > Thrust{}; }
+  // Within 1 m of the ground the vehicle last rested on, by the height estimate.
+  bool near_ground(Height height) const { return height - ground_ < kNearGround; }
 
  private:
+  void set_landed(bool landed) {
+    landed_ = landed;
+    climbing_ = rising_ = carried_ = airborne_ = 0;
+  }
+
   static constexpr Accel kDefaultTakeoff = Accel(-1.1);
+  static constexpr Accel kOneG = Accel(-1.0);
+  static constexpr Accel kOneGBand = Accel(0.1);
+  static constexpr Height kRisen = Height(0.1);
+  static constexpr Height kNearGround = Height(1.0);
+  static constexpr Climb kRising = Climb(0.1);
+  static constexpr Climb kStill = Climb(0.25);
+  using Scale = typename N::Scale;
+  static constexpr Scale kLiftShare = Scale(0.9);
+  static constexpr Scale kCarriedShare = Scale(0.75);
+  // Time constants, in ticks: the accelerometer's mean 64 ms, the ground's 2 s, the hover 2 s,
+  // learnt from 0.5 s after the take-off (the climb away from the ground is not a hover).
+  static constexpr Scale kMeanGain = Scale(1.0 / (SampleHz * 64 / 1000));
+  static constexpr Scale kGroundGain = Scale(1.0 / (SampleHz * 2));
+  static constexpr Scale kHoverGain = Scale(1.0 / (SampleHz * 2));
+  static constexpr uint32_t kSettleSamples = SampleHz / 2;
+
   Accel takeoff_ = kDefaultTakeoff;
-  uint32_t climbing_ = 0;
+  Accel f_mean_ = kOneG;
+  Thrust hover_{};
+  Height ground_{};
+  uint32_t climbing_ = 0, rising_ = 0, carried_ = 0, airborne_ = 0;
   bool landed_ = true;
 };
 
