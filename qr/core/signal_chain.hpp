@@ -49,6 +49,7 @@ concept SignalChain = requires(C& c, const C& cc, const wire::ParameterValues& p
   // read-outs, in the wire's units
   {cc.calibrated()};
   {cc.landed()};
+  {cc.hover_lift()};  // engine units, 0: not learnt
   {cc.height_valid()};
   {cc.tilt_mrad()};
   {cc.height_mm()};

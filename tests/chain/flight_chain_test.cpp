@@ -445,7 +445,11 @@ TEST(FlightChain, FloatInstantiationFollowsDouble) {
 // small-angle kinematics (it integrates body rates as Euler rates), not arithmetic. The worst
 // error is in pitch during the yaw turn with the roll swinging: q then holds psi' sin(phi) of up to
 // 0.12 rad/s that is no pitch rate, until the accelerometer pulls it back with time constant C1
-// samples, which is twice as long in time at 500 Hz (measured 0.021 rad at 1 kHz, 0.029 at 500 Hz).
+// samples, which is twice as long in time at 500 Hz. Since issue 29 the landed detector sees the
+// script's barometer climb (0.5 m/s at 1 g: a gentle take-off) and the chain flies it, with the
+// estimator's drag model on; the script's sensors have no rotor drag, so the model's expected
+// accelerometer angle is an error here that a real flight's drag would cancel (measured 0.0372 rad
+// at 1 kHz, 0.0265 at 500 Hz; 0.0167 and 0.0162 with that sense disabled, i.e. on the ground).
 template <uint32_t Hz>
 void check_truth(double bound) {
   FlightChain<chain::FixedNumbers, Hz> c;
@@ -463,7 +467,7 @@ void check_truth(double bound) {
   EXPECT_LE(worst, bound);
 }
 
-TEST(FlightChain, EstimateFollowsTheTruthAt1kHz) { check_truth<1000>(0.025); }
+TEST(FlightChain, EstimateFollowsTheTruthAt1kHz) { check_truth<1000>(0.04); }
 TEST(FlightChain, EstimateFollowsTheTruthAt500Hz) { check_truth<500>(0.03); }
 
 TEST(FlightChain, ReadoutsSaturateInsteadOfWrapping) {

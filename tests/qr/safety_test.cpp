@@ -285,14 +285,45 @@ TEST_F(Safety, PanicCutsWhenAnEstimateIsNotTrusted) {
   fly_a_while(550);
   ASSERT_EQ(machine.request(m(Mode::panic), s), NackReason::none);
   EXPECT_FALSE(machine.landing()) << "manual";
-  // A tilt panic: the attitude loops could not hold the vehicle.
-  restart();
+}
+
+// Rule 6 (issue 29): a tilt panic with trusted estimates levels the vehicle with the attitude loops
+// and lands like the others; the cut would hold 90 % with no attitude control and flip it.
+TEST_F(Safety, TiltPanicLandsWithTrustedEstimates) {
   fly_trusted();
   s.tilt_mrad = limits.tilt_limit_mrad + 10;
   run_for(limits.tilt_time_us + 2000);
   ASSERT_EQ(machine.mode(), Mode::panic);
   EXPECT_EQ(machine.panic_cause(), PanicCause::tilt);
-  EXPECT_FALSE(machine.landing()) << "tilt";
+  EXPECT_TRUE(machine.landing()) << "the chain levels and lands it";
+  s.engines = EngineCommand{{700, 300, 500, 500}};
+  const EngineCommand out = machine.limit_engines(s.engines, s);
+  EXPECT_EQ(out.value[0], 700) << "the attitude loops' moments reach the engines";
+  EXPECT_EQ(out.value[1], 300);
+}
+
+// Rule 6 (issue 29): a tilt panic that cannot land (here: no height estimate to descend on) stops
+// the engines at once and keeps them stopped, over the whole of the cut's hold and ramp; the
+// same panic requested keeps the cut's hold (so it is the tilt that stops them, not the cut).
+TEST_F(Safety, TiltPanicWithoutTrustedEstimatesStopsTheEnginesAtOnce) {
+  fly_trusted();
+  s.height_valid = false;
+  s.tilt_mrad = limits.tilt_limit_mrad + 10;
+  run_for(limits.tilt_time_us + 2000);
+  ASSERT_EQ(machine.mode(), Mode::panic);
+  ASSERT_EQ(machine.panic_cause(), PanicCause::tilt);
+  ASSERT_FALSE(machine.landing());
+  for (uint32_t t = 0; t < limits.panic_hold_us + limits.panic_ramp_us && machine.mode() == Mode::panic;
+       t += kPeriodUs) {
+    ASSERT_TRUE(machine.limit_engines(s.engines, s).all_zero()) << t << " us into the tilt panic";
+    run_for(kPeriodUs);
+  }
+  restart();
+  fly_trusted();
+  s.height_valid = false;
+  ASSERT_EQ(machine.request(m(Mode::panic), s), NackReason::none);
+  ASSERT_FALSE(machine.landing());
+  EXPECT_GT(machine.limit_engines(s.engines, s).value[0], limits.idle) << "a requested cut holds";
 }
 
 TEST_F(Safety, LinkLossAndBatteryPanicsLandToo) {

@@ -18,6 +18,7 @@ struct ScriptedChain {
   uint32_t calibration_samples = 10;
   int32_t tilt = 0;
   bool landed_now = false;   // what landed() says
+  uint16_t hover_lift_now = 0;  // what hover_lift() says
   bool height_known = true;  // what height_valid() says
 
   // What the firmware did to it
@@ -84,6 +85,7 @@ struct ScriptedChain {
   void release_lift() { holding = descending = false; }
   bool holding_height() const { return holding; }
   bool landed() const { return landed_now; }
+  uint16_t hover_lift() const { return hover_lift_now; }
   bool height_valid() const { return height_known; }
   int32_t height_mm() const { return 0; }
   int32_t climb_mm_s() const { return 0; }

@@ -16,9 +16,9 @@
 // Landed -> flying: some thrust (and, with the hover known, at least 90 % of it: less cannot lift
 // the vehicle) and one of
 //   - the accelerometer beyond takeoff_mg for 50 ms (a firm take-off), or
-//   - the height estimate 0.1 m above the ground it rested on and climbing faster than 0.1 m/s,
-//     both for 50 ms (a gentle one; on the ground, vibration x10 moves the estimate by less than
-//     0.05 m and 0.07 m/s).
+//   - the height estimate climbing faster than 0.1 m/s and 0.1 m above where it last stood
+//     still, both for 50 ms (a gentle one; on the ground, vibration x10 moves the estimate by
+//     less than 0.05 m and 0.07 m/s).
 // Flying -> landed:
 //   - no thrust (the lift stick down, the engines stopped), at once;
 //   - the ground carries it: the hover known, the thrust below 75 % of it, yet the accelerometer's
@@ -63,11 +63,13 @@ class LandedDetector {
     if (s.thrust <= Thrust{}) {
       set_landed(true);
     } else if (landed_) {
-      // The ground it rests on, as the height estimate drifts.
-      ground_ = ground_ + product<Height>(s.height - ground_, kGroundGain);
+      // The ground it rests on: the height estimate whenever it is not climbing (so the estimate's
+      // drift over minutes on the ground is followed; a copy, the same in every number format).
+      const bool climbs = s.climb > kRising;
+      if (!climbs) ground_ = s.height;
       const bool can_lift = !hover_known() || s.thrust >= product<Thrust>(hover_, kLiftShare);
       climbing_ = can_lift && s.f_z < takeoff_ ? climbing_ + 1 : 0;
-      rising_ = can_lift && s.height - ground_ > kRisen && s.climb > kRising ? rising_ + 1 : 0;
+      rising_ = can_lift && climbs && s.height - ground_ > kRisen ? rising_ + 1 : 0;
       if (climbing_ >= kClimbSamples || rising_ >= kClimbSamples) set_landed(false);
     } else {
       carried_ = hover_known() && s.thrust < product<Thrust>(hover_, kCarriedShare) && one_g &&
@@ -112,10 +114,9 @@ class LandedDetector {
   using Scale = typename N::Scale;
   static constexpr Scale kLiftShare = Scale(0.9);
   static constexpr Scale kCarriedShare = Scale(0.75);
-  // Time constants, in ticks: the accelerometer's mean 64 ms, the ground's 2 s, the hover 2 s,
-  // learnt from 0.5 s after the take-off (the climb away from the ground is not a hover).
+  // Time constants, in ticks: the accelerometer's mean 64 ms, the hover 2 s, learnt from 0.5 s
+  // after the take-off (the climb away from the ground is not a hover).
   static constexpr Scale kMeanGain = Scale(1.0 / (SampleHz * 64 / 1000));
-  static constexpr Scale kGroundGain = Scale(1.0 / (SampleHz * 2));
   static constexpr Scale kHoverGain = Scale(1.0 / (SampleHz * 2));
   static constexpr uint32_t kSettleSamples = SampleHz / 2;
 
