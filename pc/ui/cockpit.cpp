@@ -118,7 +118,8 @@ void Cockpit::draw_system(const Console& console, int width) {
   constexpr Flag kFlags[] = {{wire::kFlagCalibrated, "calibrated", kInfo},
                              {wire::kFlagLogging, "logging", kQr},
                              {wire::kFlagBatteryWarning, "battery low", kError},
-                             {wire::kFlagLogFull, "log full", kWarning}};
+                             {wire::kFlagLogFull, "log full", kWarning},
+                             {wire::kFlagFlying, "flying", kInfo}};
   // The first thing to do, said where the pilot looks first (a newcomer chose a mode at once).
   if (t.attitude && !t.flag(wire::kFlagCalibrated)) {
     const std::string hint = "not calibrated: calibrate (3), keep it still, then choose a mode";
@@ -129,6 +130,16 @@ void Cockpit::draw_system(const Console& console, int width) {
     if (!t.flag(flag.bit)) continue;
     put(3, column, flag.name, flag.pair, A_BOLD);
     column += static_cast<int>(std::string(flag.name).size()) + 1;
+  }
+  // What the QR believes besides: on the ground (no "flying"), and the lift it learnt carries it.
+  if (t.attitude && !t.flag(wire::kFlagFlying)) {
+    put(3, column, "landed", kDim);
+    column += 7;
+  }
+  if (t.height && t.height->hover_lift > 0) {
+    const std::string hover = text("hover lift %u", static_cast<unsigned>(t.height->hover_lift));
+    put(3, column, hover, kInfo);
+    column += static_cast<int>(hover.size()) + 1;
   }
   // The QR's logs: lines kept of the room there is (both logs keep the same number).
   if (const std::optional<wire::LogStatus>& logs = t.log_status;

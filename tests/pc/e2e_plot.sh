@@ -35,7 +35,11 @@ wait_for 'MODE +full' 3 "5 enters full control from the plot screen"
 # Just above the hover command: airborne within a second, climbing gently (some 5 m in 6 s on the
 # default vehicle; 560 climbed 16 m, and the panic's landing at 0.5 m/s then took 35-41 s).
 for _ in $(seq 54); do keys a; done
-sleep 3
+# A climb that never reads 1.1 g: the QR must still believe it flies, and learn its hover lift
+# (issue 29: the accelerometer alone never saw this take-off).
+wait_for ' flying ' 3 "the QR believes it flies (a gentle climb)"
+wait_for 'hover lift [0-9]+' 3 "the hover lift the QR learnt"
+sleep 1
 before=$(screen)
 for _ in $(seq 10); do keys Right; done
 sleep 2
