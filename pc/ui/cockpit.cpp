@@ -133,8 +133,9 @@ void Cockpit::draw_system(const Console& console, int width) {
   }
   // What the QR believes besides: on the ground (no "flying"), and the lift it learnt carries it.
   if (t.attitude && !t.flag(wire::kFlagFlying)) {
-    put(3, column, "landed", kDim);
-    column += 7;
+    const std::string landed = "landed";
+    put(3, column, landed, kDim);
+    column += static_cast<int>(landed.size()) + 1;
   }
   if (t.height && t.height->hover_lift > 0) {
     const std::string hover = text("hover lift %u", static_cast<unsigned>(t.height->hover_lift));

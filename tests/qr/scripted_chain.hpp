@@ -17,9 +17,9 @@ struct ScriptedChain {
   // Scripted behaviour
   uint32_t calibration_samples = 10;
   int32_t tilt = 0;
-  bool landed_now = false;   // what landed() says
+  bool landed_now = false;      // what landed() says
   uint16_t hover_lift_now = 0;  // what hover_lift() says
-  bool height_known = true;  // what height_valid() says
+  bool height_known = true;     // what height_valid() says
 
   // What the firmware did to it
   uint32_t filtered = 0;

@@ -186,8 +186,8 @@ void write_trace_line(FILE* trace, double t, uint8_t mode, FlyingQr& qr) {
                t, mode, e.roll * kDeg, e.pitch * kDeg, e.yaw * kDeg, ch.roll_e4 * 1e-4 * kDeg,
                ch.pitch_e4 * 1e-4 * kDeg, yaw, ch.roll_setpoint_e4 * 1e-4 * kDeg, ch.pitch_setpoint_e4 * 1e-4 * kDeg,
                ps.rate.x, ps.rate.y, ps.rate.z, p, q, r, eng.value[0], eng.value[1], eng.value[2], eng.value[3],
-               -ps.position.z, ps.position.x, ps.position.y, plant.battery_volts(), ch.roll_e4, ch.pitch_e4, yaw_e4, flying, height, climb,
-               -plant.deepest_contact());
+               -ps.position.z, ps.position.x, ps.position.y, plant.battery_volts(), ch.roll_e4, ch.pitch_e4, yaw_e4,
+               flying, height, climb, -plant.deepest_contact());
 }
 
 // The firmware's flying/landed verdict against the truth (docs/simulator.md section 6.5).
@@ -197,9 +197,11 @@ void record_belief(FlightRecord& rec, double t, uint8_t mode, const FirmwareView
   if (!was_in_air && in_air && std::isnan(rec.left_ground_at)) rec.left_ground_at = t;
   if (!std::isnan(rec.left_ground_at) && qr.flying && std::isnan(rec.flying_seen_at)) rec.flying_seen_at = t;
   if (rec.belief_seen && !rec.believed_flying && qr.flying && !in_air) {
-    double thrust = 0;
-    for (double w : plant.state().rotor_speed) thrust += plant.vehicle().thrust_coeff * w * w;
-    if (thrust < plant.vehicle().mass_kg * sim::kGravity) ++rec.false_takeoffs;
+    // Thrust below the weight: the rotors' mean square speed below the hover speed's square.
+    double squares = 0;
+    for (double w : plant.state().rotor_speed) squares += w * w / 4;
+    const double hover = plant.vehicle().hover_speed();
+    if (squares < hover * hover) ++rec.false_takeoffs;
   }
   // A landing declared while the engines still had lift to give (not the pilot's stick put down;
   // a landing's touchdown ends its panic in the same tick, so last tick's mode says who flew).
@@ -207,7 +209,8 @@ void record_belief(FlightRecord& rec, double t, uint8_t mode, const FirmwareView
                              rec.belief_mode != static_cast<uint8_t>(wire::Mode::height_hold);
   if (rec.belief_seen && rec.believed_flying && !qr.flying && !pilot_stopped) {
     const double clearance = std::max(0.0, -plant.deepest_contact());
-    rec.declared_clearance = std::isnan(rec.declared_clearance) ? clearance : std::max(rec.declared_clearance, clearance);
+    rec.declared_clearance = std::isnan(rec.declared_clearance) ? clearance
+                                                                : std::max(rec.declared_clearance, clearance);
   }
   rec.belief_seen = true;
   rec.believed_flying = qr.flying;

@@ -89,7 +89,11 @@ class FlightChain {
   }
 
   // Latest sticks -> set-points (angles, yaw rate) and open-loop moments; every tick.
-  void set_pilot(const ControlInput& c) { pilot_.update(c); }
+  // The lift's thrust with them (the landed detector reads it every tick).
+  void set_pilot(const ControlInput& c) {
+    pilot_.update(c);
+    pilot_thrust_ = mixer_.thrust_of_lift(pilot_.lift());
+  }
 
   // Task "filter": one raw sample through the low-pass filters.
   void filter(const SensorSample& s) {
@@ -169,10 +173,9 @@ class FlightChain {
     // The thrust the mixer is asked for: the pilot's lift, or the vertical loops' (height hold, a
     // landing) from their last run.
     const Accel accel_z = filters_.accel(2) - calibration_.accel_offset(2);
-    const Thrust thrust = lift_ == LiftSource::pilot ? mixer_.thrust_of_lift(pilot_.lift()) : vertical_.thrust();
+    const Thrust thrust = lift_ == LiftSource::pilot ? pilot_thrust_ : vertical_.thrust();
     landed_.update({thrust, accel_z, height_.height(), height_.climb()});
-    if (lift_ == LiftSource::descend && touchdown_.impact(accel_z) && landed_.near_ground(height_.height()))
-      landed_.touch_down();
+    if (lift_ == LiftSource::descend && touchdown_.impact(accel_z)) landed_.touch_down(height_.height());
   }
 
   // Task "height": calibrated filtered accelerometer, the attitude estimate and the barometer ->
@@ -213,8 +216,7 @@ class FlightChain {
     if (lift_ == LiftSource::pilot) return;
     const Climb want = lift_ == LiftSource::hold ? vertical_.climb_to_hold(height_.height()) : -touchdown_.descent();
     vertical_.update(want, height_.climb(), !landed_.landed());
-    if (lift_ == LiftSource::descend && touchdown_.update(height_.climb()) && landed_.near_ground(height_.height()))
-      landed_.touch_down();
+    if (lift_ == LiftSource::descend && touchdown_.update(height_.climb())) landed_.touch_down(height_.height());
   }
 
   // Entry action of yaw and full control: the yaw loop's integral starts empty.
@@ -408,6 +410,7 @@ class FlightChain {
   chain::VerticalController<Num, kHeightRunHz> vertical_;
   chain::TouchdownDetector<Num, kHeightRunHz, SampleHz> touchdown_;
   LiftSource lift_ = LiftSource::pilot;
+  Thrust pilot_thrust_{};                                 // thrust_of_lift(pilot_.lift()), made when the sticks change
   typename Num::template Fixed<0> drag_moment_{};         // thrust units per rad of expected accelerometer angle
   Thrust roll_moment_{}, pitch_moment_{}, yaw_moment_{};  // the controllers' latest outputs
   bool attitude_ran_ = false, yaw_ran_ = false;           // ... computed in this tick

@@ -24,9 +24,9 @@
 //   - the ground carries it: the hover known, the thrust below 75 % of it, yet the accelerometer's
 //     mean within 0.1 g of 1 g and the climb slower than 0.25 m/s, all for 0.3 s (in the air that
 //     thrust accelerates the vehicle down at a quarter g, which all three would show);
-//   - a landing's touchdown (vertical_controller.hpp), which the chain accepts only within 1 m
-//     of the ground the vehicle took off from (near_ground): a clipped, vibrating accelerometer
-//     can read an impact at any height.
+//   - a landing's touchdown (vertical_controller.hpp), accepted only within 1 m of the ground the
+//     vehicle took off from (touch_down): a clipped, vibrating accelerometer can read an impact
+//     at any height.
 #pragma once
 
 #include <stdint.h>
@@ -43,7 +43,7 @@ class LandedDetector {
   using Height = typename N::Height;
   using Climb = typename N::Climb;
 
-  static constexpr uint32_t kClimbSamples = SampleHz / 20;   // 50 ms
+  static constexpr uint32_t kClimbSamples = SampleHz / 20;       // 50 ms
   static constexpr uint32_t kGroundSamples = SampleHz * 3 / 10;  // 0.3 s
 
   // What the detector looks at, every tick.
@@ -67,13 +67,17 @@ class LandedDetector {
       // drift over minutes on the ground is followed; a copy, the same in every number format).
       const bool climbs = s.climb > kRising;
       if (!climbs) ground_ = s.height;
-      const bool can_lift = !hover_known() || s.thrust >= product<Thrust>(hover_, kLiftShare);
-      climbing_ = can_lift && s.f_z < takeoff_ ? climbing_ + 1 : 0;
-      rising_ = can_lift && climbs && s.height - ground_ > kRisen ? rising_ + 1 : 0;
+      const bool pushed = s.f_z < takeoff_, rose = climbs && s.height - ground_ > kRisen;
+      // The thrust's gate, a product, only when a sense says take-off (most ticks on the ground
+      // it does not).
+      const bool can_lift = (pushed || rose) && (!hover_known() || s.thrust >= product<Thrust>(hover_, kLiftShare));
+      climbing_ = can_lift && pushed ? climbing_ + 1 : 0;
+      rising_ = can_lift && rose ? rising_ + 1 : 0;
       if (climbing_ >= kClimbSamples || rising_ >= kClimbSamples) set_landed(false);
     } else {
-      carried_ = hover_known() && s.thrust < product<Thrust>(hover_, kCarriedShare) && one_g &&
-                         magnitude(s.climb) < kStill
+      // The same: the thrust's product last, after the readings that a hover fails.
+      carried_ = one_g && magnitude(s.climb) < kStill && hover_known() &&
+                         s.thrust < product<Thrust>(hover_, kCarriedShare)
                      ? carried_ + 1
                      : 0;
       if (carried_ >= kGroundSamples) {
@@ -88,9 +92,12 @@ class LandedDetector {
     return landed_;
   }
   bool landed() const { return landed_; }
-  // A landing (panic): flying until its touchdown says otherwise, and then on the ground.
+  // A landing (panic): flying until its touchdown says otherwise, and then on the ground; a
+  // touchdown counts only near the ground (near_ground below), at the height estimate `height`.
   void take_off() { set_landed(false); }
-  void touch_down() { set_landed(true); }
+  void touch_down(Height height) {
+    if (near_ground(height)) set_landed(true);
+  }
 
   // The learnt per-engine hover thrust (0: no flight has taught it yet).
   Thrust hover() const { return hover_; }
