@@ -10,8 +10,9 @@
 // reads it in flight and on the ground alike. The height estimate sees every climb, but drifts
 // over minutes. The thrust says what the engines can carry, once the vehicle's hover thrust is
 // known; that is learnt in flight, from the thrust that was flying while the accelerometer read
-// 1 g (then thrust = weight), and kept for the session (a battery that sags raises the true
-// hover above the learnt one, which only makes the gates below more permissive).
+// near 1 g and the vehicle moved slowly up or down (then thrust / |f| = weight), and kept for the
+// session (a battery that sags raises the true hover above the learnt one, which only makes the
+// gates below more permissive).
 //
 // Landed -> flying: some thrust (and, with the hover known, at least 90 % of it: less cannot lift
 // the vehicle) and one of
@@ -21,9 +22,12 @@
 //     less than 0.05 m and 0.07 m/s).
 // Flying -> landed:
 //   - no thrust (the lift stick down, the engines stopped), at once;
-//   - the ground carries it: the hover known, the thrust below 75 % of it, yet the accelerometer's
-//     mean within 0.1 g of 1 g and the climb slower than 0.25 m/s, all for 0.3 s (in the air that
-//     thrust accelerates the vehicle down at a quarter g, which all three would show);
+//   - the ground carries it: the hover known, the thrust below 90 % of it, yet the accelerometer's
+//     mean within 0.1 g of 1 g and the climb slower than 0.25 m/s, all for 0.5 s (in the air that
+//     thrust reads at most 0.9 g and accelerates the vehicle down past 0.25 m/s within 0.3 s: a
+//     lift stick held a little below the hover on the ground is not a flight). Between 90 and
+//     100 % of the hover the ground and a hover read alike: such a vehicle stays "flying", and
+//     its thrust is learnt as the hover (at most 10 % low, which only widens the take-off gate);
 //   - a landing's touchdown (vertical_controller.hpp), accepted only within 1 m of the ground the
 //     vehicle took off from (touch_down): a clipped, vibrating accelerometer can read an impact
 //     at any height.
@@ -43,8 +47,8 @@ class LandedDetector {
   using Height = typename N::Height;
   using Climb = typename N::Climb;
 
-  static constexpr uint32_t kClimbSamples = SampleHz / 20;       // 50 ms
-  static constexpr uint32_t kGroundSamples = SampleHz * 3 / 10;  // 0.3 s
+  static constexpr uint32_t kClimbSamples = SampleHz / 20;  // 50 ms
+  static constexpr uint32_t kGroundSamples = SampleHz / 2;  // 0.5 s
 
   // What the detector looks at, every tick.
   struct Senses {
@@ -76,17 +80,22 @@ class LandedDetector {
       if (climbing_ >= kClimbSamples || rising_ >= kClimbSamples) set_landed(false);
     } else {
       // The same: the thrust's product last, after the readings that a hover fails.
-      carried_ = one_g && magnitude(s.climb) < kStill && hover_known() &&
-                         s.thrust < product<Thrust>(hover_, kCarriedShare)
-                     ? carried_ + 1
-                     : 0;
+      const bool carried = one_g && magnitude(s.climb) < kStill && hover_known() &&
+                           s.thrust < product<Thrust>(hover_, kCarriedShare);
+      carried_ = carried ? carried_ + 1 : 0;
       if (carried_ >= kGroundSamples) {
         set_landed(true);
       } else if (airborne_ < kSettleSamples) {
         ++airborne_;
-      } else if (one_g) {
-        // Thrust equals weight while the accelerometer reads 1 g in the air.
-        hover_ = hover_known() ? hover_ + product<Thrust>(s.thrust - hover_, kHoverGain) : s.thrust;
+      } else if (one_g && !carried && magnitude(s.climb) < kSlow) {
+        // (Not while the ground may be carrying part of the weight: that thrust is no hover.)
+        // In the air the accelerometer reads thrust over weight (f = -T/W g): the weight's thrust
+        // is T / |f|, here T (2 - |f|), within 1 % for |f| within 0.1 g of 1 (a division per tick
+        // saved). Slow only: at a descent of some m/s the airframe's drag carries part of the
+        // weight and the accelerometer reads 1 g with less thrust (by hand at 6 m/s down, a lift
+        // of 510 was learnt for a hover of 535).
+        const Thrust weight = product<Thrust>(s.thrust, kTwoG + f_mean_);
+        hover_ = hover_known() ? hover_ + product<Thrust>(weight - hover_, kHoverGain) : weight;
       }
     }
     return landed_;
@@ -118,9 +127,11 @@ class LandedDetector {
   static constexpr Height kNearGround = Height(1.0);
   static constexpr Climb kRising = Climb(0.1);
   static constexpr Climb kStill = Climb(0.25);
+  static constexpr Climb kSlow = Climb(0.5);
+  static constexpr Accel kTwoG = Accel(2.0);
   using Scale = typename N::Scale;
   static constexpr Scale kLiftShare = Scale(0.9);
-  static constexpr Scale kCarriedShare = Scale(0.75);
+  static constexpr Scale kCarriedShare = Scale(0.9);
   // Time constants, in ticks: the accelerometer's mean 64 ms, the hover 2 s, learnt from 0.5 s
   // after the take-off (the climb away from the ground is not a hover).
   static constexpr Scale kMeanGain = Scale(1.0 / (SampleHz * 64 / 1000));
