@@ -159,6 +159,29 @@ TEST(LandedDetector, ALiftJustBelowTheHoverOnTheGroundIsLanded) {
   EXPECT_LT(n, Detector::kGroundSamples + 100);
 }
 
+// The ground carrying the vehicle needs the accelerometer to agree: with the height estimate
+// standing still (a barometer stuck, or an estimate the vibration biases) but the accelerometer
+// reading 0.7 g, a thrust of 70 % of the hover is a fall, not the ground.
+TEST(LandedDetector, AStillHeightWithoutOneGIsNoLanding) {
+  Detector d;
+  learn_hover(d, 300);
+  for (uint32_t n = 0; n < 3 * kHz; ++n) {
+    d.update(senses(210, -0.7, 2.0, 0));
+    ASSERT_FALSE(d.landed()) << "at tick " << n;
+  }
+}
+
+// A landing's touchdown (a vibrating accelerometer's impact) counts only near the ground the
+// vehicle took off from: at 4 m it is refused, at 0.5 m taken.
+TEST(LandedDetector, ATouchdownInTheAirIsRefused) {
+  Detector d;
+  d.take_off();
+  d.touch_down(q<N::Height>(4.0));
+  EXPECT_FALSE(d.landed());
+  d.touch_down(q<N::Height>(0.5));
+  EXPECT_TRUE(d.landed());
+}
+
 TEST(LandedDetector, NearGroundIsWithinOneMetreOfWhereItLastStood) {
   Detector d;
   for (uint32_t n = 0; n < 100; ++n) d.update(senses(100, -1.0, 2.0, 0));  // rests at 2 m (a table)
