@@ -127,15 +127,22 @@ void Pilot::on_frame(const wire::Frame& frame, uint64_t sent_at_us) {
   if (on_every_frame_) on_every_frame_(frame, parser_.counters());
 }
 
-uint16_t lift_for_height(const sim::Quadrotor& plant, double target, double ramp) {
+uint16_t lift_for_height(const sim::Quadrotor& plant, double target, double ramp, double trim) {
   const sim::PlantState& s = plant.state();
   const double height = -s.position.z, climb = -s.velocity.z;
-  const double accel = std::clamp(2.0 * (target - height) - 2.5 * climb, -3.0, 3.0);
+  const double accel = std::clamp(2.0 * (target - height) - 2.5 * climb + trim, -3.0, 3.0);
   const sim::Vec3 body_down = sim::rotate(s.attitude, {0, 0, 1});
   const double cos_tilt = std::max(0.5, body_down.z);
   const double thrust_ratio = std::max(0.0, (sim::kGravity + accel) / (sim::kGravity * cos_tilt));
   const double lift = plant.hover_command() * std::sqrt(thrust_ratio) * std::clamp(ramp, 0.0, 1.0);
   return static_cast<uint16_t>(std::clamp(std::lround(lift), 0L, 1000L));
+}
+
+uint16_t HeightThumb::lift(const sim::Quadrotor& plant, double target, double ramp, double dt) {
+  const double error = target + plant.state().position.z;  // target - height
+  if (std::abs(error) < 0.5 && std::abs(plant.state().velocity.z) < 0.5)
+    trim_ = std::clamp(trim_ + 0.5 * error * dt, -2.0, 2.0);
+  return lift_for_height(plant, target, ramp, trim_);
 }
 
 }  // namespace qrsim

@@ -33,6 +33,7 @@ enum class Phase : uint8_t { power_up, calibrate, arm, take_off, settle, manoeuv
 constexpr double kHoverHeight = 1.5;    // m, centre of mass above the ground
 constexpr double kSettleSeconds = 1.5;  // steady hover before the manoeuvre
 constexpr double kPreflightLimit = 20;  // s
+constexpr double kPeriodSeconds = 1.0 / qr::kControlHz;  // the pilot's hands move once a control period
 
 int16_t stick(double value) { return static_cast<int16_t>(std::clamp(std::lround(value), -1000L, 1000L)); }
 
@@ -44,14 +45,15 @@ struct Hands {
   double lift_share = 0;
   bool still = false;  // the lift stick stays at still_lift
   uint16_t still_lift = 0;
+  HeightThumb thumb;  // also the preflight's take-off and settle
 
-  uint16_t lift(const sim::Quadrotor& plant) const {
+  uint16_t lift(const sim::Quadrotor& plant) {
     if (still) return still_lift;
-    return hold_height ? lift_for_height(plant, height, 1)
+    return hold_height ? thumb.lift(plant, height, 1, kPeriodSeconds)
                        : static_cast<uint16_t>(std::clamp(std::lround(lift_share * plant.hover_command()), 0L, 1000L));
   }
 
-  Sticks sticks(const sim::Quadrotor& plant, const wire::ParameterValues& p) const {
+  Sticks sticks(const sim::Quadrotor& plant, const wire::ParameterValues& p) {
     // Full control: roll and pitch sticks are angle set-points, full stick max_tilt_mrad; the yaw
     // stick is a rate, full stick max_yaw_rate_rad_s (Q10 rad/s).
     const double per_degree = kRad * 1000 / (p.get(wire::ParamId::max_tilt_mrad) * 1e-3);
@@ -420,13 +422,13 @@ ScenarioResult run_scenario(const ScenarioScript& script, const RunOptions& opti
         }
         break;
       case Phase::take_off: {
-        pilot.set_sticks({lift_for_height(plant, kHoverHeight, (t - phase_start) / 1.0), 0, 0, 0});
+        pilot.set_sticks({hands.thumb.lift(plant, kHoverHeight, (t - phase_start) / 1.0, kPeriodSeconds), 0, 0, 0});
         const sim::PlantState& s = plant.state();
         if (std::abs(-s.position.z - kHoverHeight) < 0.1 && std::abs(s.velocity.z) < 0.1) enter(Phase::settle);
         break;
       }
       case Phase::settle:
-        pilot.set_sticks({lift_for_height(plant, kHoverHeight, 1), 0, 0, 0});
+        pilot.set_sticks({hands.thumb.lift(plant, kHoverHeight, 1, kPeriodSeconds), 0, 0, 0});
         if (t - phase_start >= kSettleSeconds) begin_manoeuvre();
         break;
       case Phase::manoeuvre: break;
