@@ -30,9 +30,9 @@ constexpr double kRad = std::numbers::pi / 180;
 // preflight after kPreflightLimit fails with the phase's name as its error.
 enum class Phase : uint8_t { power_up, calibrate, arm, take_off, settle, manoeuvre };
 
-constexpr double kHoverHeight = 1.5;    // m, centre of mass above the ground
-constexpr double kSettleSeconds = 1.5;  // steady hover before the manoeuvre
-constexpr double kPreflightLimit = 20;  // s
+constexpr double kHoverHeight = 1.5;                     // m, centre of mass above the ground
+constexpr double kSettleSeconds = 1.5;                   // steady hover before the manoeuvre
+constexpr double kPreflightLimit = 20;                   // s
 constexpr double kPeriodSeconds = 1.0 / qr::kControlHz;  // the pilot's hands move once a control period
 
 int16_t stick(double value) { return static_cast<int16_t>(std::clamp(std::lround(value), -1000L, 1000L)); }
