@@ -62,6 +62,7 @@ struct EngineFrame {
   uint32_t kick = 0;  // the sensors frame this answers
   uint16_t engines[4] = {0, 0, 0, 0};
   uint8_t mode = 0;
+  uint8_t flags = 0;          // the QR's telemetry flags (wire::kFlag*: calibrated, flying, ...)
   uint32_t ground_bytes = 0;  // bytes the QR has written to its ground line so far (wraps)
   uint32_t deadline_misses = 0;
   int16_t angles_e4[kAngles] = {};   // 1e-4 rad, in Angle order
@@ -75,7 +76,7 @@ struct EngineFrame {
 
   template <class Self, class V>
   static constexpr void fields(Self& s, V& v) {
-    v(s.kick), v(s.engines), v(s.mode), v(s.ground_bytes), v(s.deadline_misses), v(s.angles_e4);
+    v(s.kick), v(s.engines), v(s.mode), v(s.flags), v(s.ground_bytes), v(s.deadline_misses), v(s.angles_e4);
     v(s.yaw_rate_setpoint_e3), v(s.stats_row), v(s.stats);
   }
   constexpr bool valid() const { return true; }

@@ -59,6 +59,7 @@ struct FaultyFlight {
     int16_t yaw_rate_setpoint_e3() const { return 0; }
   };
   uint8_t mode() const { return 2; }  // manual: the engines are the flight's
+  uint8_t telemetry_flags() const { return 0; }
   Chain chain() const { return {}; }
   void fail() {
     if (ticks < kFaultTick) return;

@@ -66,6 +66,7 @@ class VirtBoard {
     f.kick = kick_;
     for (int i = 0; i < 4; ++i) f.engines[i] = engines_.value[i];
     f.mode = static_cast<uint8_t>(flight.mode());
+    f.flags = flight.telemetry_flags();
     f.ground_bytes = ground_sent_;
     f.deadline_misses = deadline_misses;
     const auto& chain = flight.chain();

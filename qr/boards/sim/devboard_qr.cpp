@@ -135,6 +135,7 @@ bool DevboardQr::tick() {
   for (int i = 0; i < 4; ++i) engines.value[i] = answer.engines[i];
   board_.set_engines(engines);
   view_.mode = answer.mode;
+  view_.flying = (answer.flags & wire::kFlagFlying) != 0;
   view_.roll_e4 = answer.angles_e4[simlink::EngineFrame::roll_estimate];
   view_.pitch_e4 = answer.angles_e4[simlink::EngineFrame::pitch_estimate];
   view_.roll_setpoint_e4 = answer.angles_e4[simlink::EngineFrame::roll_setpoint];

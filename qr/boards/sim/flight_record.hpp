@@ -29,8 +29,7 @@ struct FlightRecord {
   double battery_v_min = kNotMeasured, rested_v_min = kNotMeasured;
   double touchdown_speed = kNotMeasured;  // m/s, the first after having been airborne
   double touchdown_at = kNotMeasured, engines_stopped_at = kNotMeasured;
-  // What the firmware believed against the truth (host build only: the devboard's frames do not
-  // carry its verdict). From t0 on:
+  // What the firmware believed against the truth, from t0 on:
   bool belief_seen = false;                  // the firmware's flying/landed verdict was read
   bool believed_flying = false;              // ... and what it was last tick
   uint8_t belief_mode = 0;                   // the mode last tick

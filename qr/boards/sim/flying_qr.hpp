@@ -20,12 +20,12 @@ namespace qrsim {
 // What the figures read of the firmware after each tick, in the wire's integer units.
 struct FirmwareView {
   uint8_t mode = 0;
+  bool flying = false;                // the landed detector's verdict
   int16_t roll_e4 = 0, pitch_e4 = 0;  // estimate
   int16_t roll_setpoint_e4 = 0, pitch_setpoint_e4 = 0, yaw_rate_setpoint_e3 = 0;
   // Only the host build shows these (the devboard's frames leave them out, common/sensor_link.hpp).
   bool has_rates = false;
   int16_t yaw_e4 = 0, p_e3 = 0, q_e3 = 0, r_e3 = 0;
-  bool flying = false;                    // the landed detector's verdict
   int32_t height_mm = 0, climb_mm_s = 0;  // the height estimate
   qr::ControlInput controls;              // the sticks the tick flew with
   uint32_t deadline_misses = 0;

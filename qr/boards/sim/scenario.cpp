@@ -162,8 +162,8 @@ void write_trace_header(FILE* trace) {
                "climb_est_m_s,ground_clearance_m\n");
 }
 
-// The devboard's frames carry no yaw estimate or estimated rates (FirmwareView::has_rates): its
-// trace leaves those columns empty.
+// The devboard's frames carry no yaw estimate, estimated rates or height estimate
+// (FirmwareView::has_rates): its trace leaves those columns empty.
 void write_trace_line(FILE* trace, double t, uint8_t mode, FlyingQr& qr) {
   const sim::Quadrotor& plant = qr.world().plant();
   const sim::PlantState& ps = plant.state();
@@ -178,10 +178,10 @@ void write_trace_line(FILE* trace, double t, uint8_t mode, FlyingQr& qr) {
     std::snprintf(q, sizeof q, "%.4f", ch.q_e3 * 1e-3);
     std::snprintf(r, sizeof r, "%.4f", ch.r_e3 * 1e-3);
     std::snprintf(yaw_e4, sizeof yaw_e4, "%d", ch.yaw_e4);
-    std::snprintf(flying, sizeof flying, "%d", ch.flying ? 1 : 0);
     std::snprintf(height, sizeof height, "%.3f", ch.height_mm * 1e-3);
     std::snprintf(climb, sizeof climb, "%.3f", ch.climb_mm_s * 1e-3);
   }
+  std::snprintf(flying, sizeof flying, "%d", ch.flying ? 1 : 0);
   std::fprintf(trace,
                "%.3f,%u,%.4f,%.4f,%.4f,%.4f,%.4f,%s,%.4f,%.4f,%.4f,%.4f,%.4f,%s,%s,%s,%u,%u,%u,%u,%.3f,%."
                "3f,%.3f,%.3f,%d,%d,%s,%s,%s,%s,%.3f\n",
@@ -195,7 +195,6 @@ void write_trace_line(FILE* trace, double t, uint8_t mode, FlyingQr& qr) {
 // The firmware's flying/landed verdict against the truth (docs/simulator.md section 6.5).
 void record_belief(FlightRecord& rec, double t, uint8_t mode, const FirmwareView& qr, const sim::Quadrotor& plant,
                    bool was_in_air, bool in_air) {
-  if (!qr.has_rates) return;
   if (!was_in_air && in_air && std::isnan(rec.left_ground_at)) rec.left_ground_at = t;
   if (!std::isnan(rec.left_ground_at) && qr.flying && std::isnan(rec.flying_seen_at)) rec.flying_seen_at = t;
   if (rec.belief_seen && !rec.believed_flying && qr.flying && !in_air) {

@@ -61,7 +61,7 @@ inline constexpr FigureSpec kFigureTable[] = {
     {"touchdown_speed_m_s", "vertical speed at the first ground contact after being airborne in the window"},
     {"engines_stop_s", "from the touchdown until every engine is zero (a landing's end)"},
     {"takeoff_seen_s",
-     "from the truth's first leaving the ground in the window to the firmware's first flying verdict (host build)"},
+     "from the truth's first leaving the ground in the window to the firmware's first flying verdict"},
     {"false_takeoffs",
      "the firmware's landed-to-flying verdicts while the vehicle was on the ground with its thrust below its weight"},
     {"touchdown_declared_clearance_m_max",
