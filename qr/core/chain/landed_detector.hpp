@@ -74,22 +74,22 @@ class LandedDetector {
       const bool pushed = s.f_z < takeoff_, rose = climbs && s.height - ground_ > kRisen;
       // The thrust's gate, a product, only when a sense says take-off (most ticks on the ground
       // it does not).
-      const bool can_lift = (pushed || rose) && (!hover_known() || s.thrust >= product<Thrust>(hover_, kLiftShare));
+      const bool can_lift = (pushed || rose) && (!hover_known() || s.thrust >= product<Thrust>(hover_, kBelowHover));
       climbing_ = can_lift && pushed ? climbing_ + 1 : 0;
       rising_ = can_lift && rose ? rising_ + 1 : 0;
       if (climbing_ >= kClimbSamples || rising_ >= kClimbSamples) set_landed(false);
     } else {
       // The same: the thrust's product last, after the readings that a hover fails.
       const bool carried = one_g && magnitude(s.climb) < kStill && hover_known() &&
-                           s.thrust < product<Thrust>(hover_, kCarriedShare);
+                           s.thrust < product<Thrust>(hover_, kBelowHover);
       carried_ = carried ? carried_ + 1 : 0;
       if (carried_ >= kGroundSamples) {
         set_landed(true);
       } else if (airborne_ < kSettleSamples) {
         ++airborne_;
       } else if (one_g && !carried && magnitude(s.climb) < kSlow) {
-        // (Not while the ground may be carrying part of the weight: that thrust is no hover.)
-        // In the air the accelerometer reads thrust over weight (f = -T/W g): the weight's thrust
+        // Not while the ground may carry part of the weight (that thrust is no hover). In the
+        // air the accelerometer reads thrust over weight (f = -T/W g): the weight's thrust
         // is T / |f|, here T (2 - |f|), within 1 % for |f| within 0.1 g of 1 (a division per tick
         // saved). Slow only: at a descent of some m/s the airframe's drag carries part of the
         // weight and the accelerometer reads 1 g with less thrust (by hand at 6 m/s down, a lift
@@ -130,8 +130,9 @@ class LandedDetector {
   static constexpr Climb kSlow = Climb(0.5);
   static constexpr Accel kTwoG = Accel(2.0);
   using Scale = typename N::Scale;
-  static constexpr Scale kLiftShare = Scale(0.9);
-  static constexpr Scale kCarriedShare = Scale(0.9);
+  // Below 90 % of the hover thrust the engines cannot lift the vehicle, and on the ground
+  // with the accelerometer at 1 g the ground carries the rest: one share for both rules.
+  static constexpr Scale kBelowHover = Scale(0.9);
   // Time constants, in ticks: the accelerometer's mean 64 ms, the hover 2 s, learnt from 0.5 s
   // after the take-off (the climb away from the ground is not a hover).
   static constexpr Scale kMeanGain = Scale(1.0 / (SampleHz * 64 / 1000));
