@@ -251,4 +251,40 @@ TEST(Qrsim, TruthChannelTurnsTheVehicle) {
   EXPECT_EQ(side.finish(), 0);
 }
 
+// Everything qrsim prints for a command line (stdout and stderr together) and its exit status.
+struct QrsimRun {
+  std::string out;
+  int status = -1;
+};
+
+QrsimRun run_qrsim(const std::string& arguments) {
+  QrsimRun run;
+  FILE* out = popen((std::string(QRSIM_PATH) + " " + arguments + " 2>&1").c_str(), "r");
+  if (out == nullptr) return run;
+  char buffer[4096];
+  for (size_t n; (n = fread(buffer, 1, sizeof buffer, out)) > 0;) run.out.append(buffer, n);
+  const int status = pclose(out);
+  run.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return run;
+}
+
+// A scenario file that does not read names its line and points to where the format is described
+// (docs/simulator.md section 6.2), not to --help, which lists the options only; --help points
+// there too.
+TEST(Qrsim, BadScenarioFilePointsToTheFormatNotTheHelp) {
+  const std::string path = ::testing::TempDir() + "qrsim_bad_scenario.txt";
+  FILE* file = std::fopen(path.c_str(), "w");
+  ASSERT_NE(file, nullptr);
+  std::fputs("seconds: 3\nat 1 roll ten\nband final_mode == full\n", file);
+  std::fclose(file);
+  const QrsimRun bad = run_qrsim("--scenario " + path);
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.out.find("qrsim_bad_scenario.txt:2: bad number 'ten'"), std::string::npos) << bad.out;
+  EXPECT_NE(bad.out.find("docs/simulator.md section 6.2"), std::string::npos) << bad.out;
+  EXPECT_EQ(bad.out.find("--help"), std::string::npos) << bad.out;
+  const QrsimRun help = run_qrsim("--help");
+  EXPECT_EQ(help.status, 0);
+  EXPECT_NE(help.out.find("docs/simulator.md section 6.2"), std::string::npos) << help.out;
+}
+
 }  // namespace

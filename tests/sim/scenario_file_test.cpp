@@ -109,6 +109,21 @@ TEST(ScenarioFile, ReadsSettingsEventsAndBands) {
   EXPECT_EQ(s.bands[2].limit, static_cast<double>(wire::Mode::safe));
 }
 
+// Several parameters before the flight, each on its own line, uploaded in the file's order.
+TEST(ScenarioFile, ReadsSeveralParamLinesInOrder) {
+  const Parsed p = parse(
+      "seconds: 3\nparam: yaw_p 20\nparam: max_tilt_mrad 600\nparam: idle_level 150\n"
+      "band final_mode == full\n");
+  ASSERT_TRUE(p.ok) << p.error;
+  ASSERT_EQ(p.script.parameters.size(), 3u);
+  EXPECT_EQ(p.script.parameters[0].first, wire::ParamId::yaw_p);
+  EXPECT_EQ(p.script.parameters[0].second, 20 * 16);  // yaw_p has 4 fraction bits
+  EXPECT_EQ(p.script.parameters[1].first, wire::ParamId::max_tilt_mrad);
+  EXPECT_EQ(p.script.parameters[1].second, 600);
+  EXPECT_EQ(p.script.parameters[2].first, wire::ParamId::idle_level);
+  EXPECT_EQ(p.script.parameters[2].second, 150);
+}
+
 // A hand turn: the axis, whole turns (negative the other way) and the time; one may follow the
 // last as it ends.
 TEST(ScenarioFile, ReadsTurns) {
@@ -163,6 +178,8 @@ const Mistake kMistakes[] = {
     {"seconds: 3\nparam: no_such 1\n", "mine.txt:2: ", "unknown parameter 'no_such'"},
     {"seconds: 3\nat 1 param yaw_q 1\n", "mine.txt:2: ", "unknown parameter 'yaw_q'"},
     {"seconds: 3\nparam: yaw_p 100000\n", "mine.txt:2: ", "out of range"},
+    {"seconds: 3\nparam: yaw_p 20\nparam: idle_level 150\nparam: yaw_p 30\n",
+     "mine.txt:4: ", "param: yaw_p given twice (first on line 2)"},
     {"seconds: 3\nband rise < 1\n", "mine.txt:2: ", "unknown band figure 'rise'"},
     {"seconds: 3\nband rise_s > 1\n", "mine.txt:2: ", "unknown comparison '>'"},
     {"seconds: 3\nband rise_s < 1 2\n", "mine.txt:2: ", "band FIGURE OP LIMIT"},

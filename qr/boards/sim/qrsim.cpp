@@ -53,7 +53,8 @@ rate) flying in a simulated IN4073-class quadrotor.
                    in (push, reset, turn, radio: docs/simulator.md); the firmware never sees it
   --scenario NAME  fly a scenario headless, in simulated time, and score it on the simulator's
                    truth; exit status 0 when every pass band holds, 1 when one does not. NAME is
-                   a built-in (qrsim --list) or a scenario file (format in docs/simulator.md)
+                   a built-in (qrsim --list) or a scenario file: its format (settings, events,
+                   bands) is docs/simulator.md section 6.2, its figures section 6.5
   --sweep NAME     fly the scenario over --seeds N seeds (default 30), each on a vehicle drawn
                    around it (mass, inertia, motor lag, vibration, noise); one JSON line per run,
                    then per band {"sweep", "band", "passed", "of", "worst"}; exit status 0 when
@@ -108,6 +109,11 @@ int usage_error(const std::string& message) {
   return 2;
 }
 
+// A scenario that does not read: --help does not describe the file, the document does.
+int scenario_error(const std::string& message) {
+  std::fprintf(stderr, "qrsim: %s (the scenario file format: %s)\n", message.c_str(), qrsim::kScenarioFormatDoc);
+  return 2;
+}
 
 }  // namespace
 
@@ -177,7 +183,7 @@ int main(int argc, char** argv) {
       if (v == nullptr) return usage_error(arg + " needs a scenario name or file");
       command = arg == "--scenario" ? Command::scenario : Command::sweep;
       std::string error;
-      if (!qrsim::find_scenario(v, script, error)) return usage_error(error);
+      if (!qrsim::find_scenario(v, script, error)) return scenario_error(error);
     } else if (arg == "--no-draw") {
       draw = false;
     } else if (arg == "--seeds") {

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <utility>
 
 #include <qr/boards/sim/scenario_figures.hpp>
 #include <qr/boards/sim/text_fields.hpp>
@@ -97,6 +98,8 @@ class Reader {
   }
 
   bool setting(const std::string& key, const std::vector<std::string>& w) {
+    // A flight may need several parameters changed: param: is the one setting that repeats.
+    if (key == "param") return parameter_line(w);
     if (seen(key)) return fail("'" + key + ":' given twice");
     seen_.push_back(key);
     const std::string value = joined(w, 1);
@@ -127,15 +130,6 @@ class Reader {
       }
       return true;
     }
-    if (key == "param") {
-      if (w.size() != 3) return fail("param: needs NAME VALUE");
-      wire::ParamId id{};
-      int32_t raw = 0;
-      const std::string problem = parameter_from_text(w[1], w[2], id, raw);
-      if (!problem.empty()) return fail(problem);
-      out_.parameters.emplace_back(id, raw);
-      return true;
-    }
     struct Number {
       const char* key;
       double* field;
@@ -161,6 +155,22 @@ class Reader {
       return true;
     }
     return fail("unknown setting '" + key + ":'");
+  }
+
+  // param: NAME VALUE, uploaded in the file's order. The same parameter twice is a mistake, not
+  // an override: which of the two values the user meant cannot be told.
+  bool parameter_line(const std::vector<std::string>& w) {
+    if (w.size() != 3) return fail("param: needs NAME VALUE");
+    wire::ParamId id{};
+    int32_t raw = 0;
+    const std::string problem = parameter_from_text(w[1], w[2], id, raw);
+    if (!problem.empty()) return fail(problem);
+    for (const auto& [earlier, line] : parameter_lines_) {
+      if (earlier == id) return fail("param: " + w[1] + " given twice (first on line " + std::to_string(line) + ")");
+    }
+    parameter_lines_.emplace_back(id, line_);
+    out_.parameters.emplace_back(id, raw);
+    return true;
   }
 
   bool vector_for(const std::vector<std::string>& w, Event& e, const char* unit) {
@@ -337,6 +347,7 @@ class Reader {
   ScenarioScript& out_;
   int line_ = 0;
   std::vector<std::string> seen_;
+  std::vector<std::pair<wire::ParamId, int>> parameter_lines_;  // each param: line's parameter and line
   std::string error_;
   double turn_until_ = 0;  // when the last turn event ends, after t0
   int turn_line_ = 0;

@@ -100,6 +100,9 @@ bool parse_scenario(const std::string& text, const std::string& name, const std:
 // Reads a scenario file and the vehicle file it names (relative to the scenario file).
 bool load_scenario_file(const std::string& path, ScenarioScript& out, std::string& error);
 
+// Where a user reads the format when a file does not read: qrsim's messages point there.
+inline constexpr const char* kScenarioFormatDoc = "docs/simulator.md section 6.2";
+
 using qr::host::parameter_from_text;  // a parameter by its name and a value in its unit
 
 const char* compare_text(Compare compare);  // "<", "<=", "=="
