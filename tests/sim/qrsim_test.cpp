@@ -287,4 +287,13 @@ TEST(Qrsim, BadScenarioFilePointsToTheFormatNotTheHelp) {
   EXPECT_NE(help.out.find("docs/simulator.md section 6.2"), std::string::npos) << help.out;
 }
 
+// --param out of its range: the message says the range and the unit (max_yaw_rate_rad_s is
+// written in rad/s, carried in Q10).
+TEST(Qrsim, ScenarioParamOutOfRangeSaysTheRange) {
+  const QrsimRun run = run_qrsim("--scenario hover --param max_yaw_rate_rad_s=9");
+  EXPECT_EQ(run.status, 2);
+  EXPECT_NE(run.out.find("parameter max_yaw_rate_rad_s: 9 is out of its range 0 .. 8 (rad/s)"), std::string::npos)
+      << run.out;
+}
+
 }  // namespace

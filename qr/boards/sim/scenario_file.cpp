@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <sstream>
 #include <utility>
 
@@ -354,6 +355,23 @@ class Reader {
 };
 
 }  // namespace
+
+std::string parameter_from_text(const std::string& name, const std::string& value, wire::ParamId& id, int32_t& raw) {
+  const std::string problem = qr::host::parameter_from_text(name, value, id, raw);
+  if (problem.empty()) return problem;
+  // Only a known name with a good number fails on its range; the other problems stand as they are.
+  double real = 0;
+  if (!parse_real(value, real)) return problem;
+  for (const wire::ParameterSpec& s : wire::kParameterTable) {
+    if (name != s.name) continue;
+    // The range in the unit the value is written in: raw / 2^frac_bits.
+    std::ostringstream range;
+    range << std::setprecision(10) << "parameter " << name << ": " << value << " is out of its range "
+          << std::ldexp(s.min, -s.frac_bits) << " .. " << std::ldexp(s.max, -s.frac_bits) << " (" << s.unit << ")";
+    return range.str();
+  }
+  return problem;
+}
 
 const char* compare_text(Compare compare) {
   switch (compare) {

@@ -103,7 +103,10 @@ bool load_scenario_file(const std::string& path, ScenarioScript& out, std::strin
 // Where a user reads the format when a file does not read: qrsim's messages point there.
 inline constexpr const char* kScenarioFormatDoc = "docs/simulator.md section 6.2";
 
-using qr::host::parameter_from_text;  // a parameter by its name and a value in its unit
+// A parameter by its name and a value in its unit (qr::host::parameter_from_text), for the
+// scenario files' param lines and events and qrsim's --param. A value out of range is told the
+// parameter's range and unit, so a user need not look them up. Empty on success.
+std::string parameter_from_text(const std::string& name, const std::string& value, wire::ParamId& id, int32_t& raw);
 
 const char* compare_text(Compare compare);  // "<", "<=", "=="
 std::string band_text(const Band& band);    // "rise_s < 0.3", "final_mode == full"
