@@ -124,6 +124,20 @@ TEST(ScenarioFile, ReadsSeveralParamLinesInOrder) {
   EXPECT_EQ(p.script.parameters[2].second, 150);
 }
 
+// Every comparison a band may make, and its text back as written.
+TEST(ScenarioFile, ReadsEveryComparison) {
+  const Parsed p = parse(
+      "seconds: 3\nband rise_s < 1\nband rise_s <= 1\nband entered_panic == 0\n"
+      "band height_m_end > 1.2\nband height_m_end >= 1.25\n");
+  ASSERT_TRUE(p.ok) << p.error;
+  ASSERT_EQ(p.script.bands.size(), 5u);
+  const qrsim::Compare expected[] = {qrsim::Compare::below, qrsim::Compare::at_most, qrsim::Compare::equal,
+                                     qrsim::Compare::above, qrsim::Compare::at_least};
+  for (size_t i = 0; i < 5; ++i) EXPECT_EQ(p.script.bands[i].compare, expected[i]) << i;
+  EXPECT_EQ(qrsim::band_text(p.script.bands[3]), "height_m_end > 1.2");
+  EXPECT_EQ(qrsim::band_text(p.script.bands[4]), "height_m_end >= 1.25");
+}
+
 // A hand turn: the axis, whole turns (negative the other way) and the time; one may follow the
 // last as it ends.
 TEST(ScenarioFile, ReadsTurns) {
@@ -187,7 +201,9 @@ const Mistake kMistakes[] = {
     {"seconds: 3\nparam: yaw_p 20\nparam: idle_level 150\nparam: yaw_p 30\n",
      "mine.txt:4: ", "param: yaw_p given twice (first on line 2)"},
     {"seconds: 3\nband rise < 1\n", "mine.txt:2: ", "unknown band figure 'rise'"},
-    {"seconds: 3\nband rise_s > 1\n", "mine.txt:2: ", "unknown comparison '>'"},
+    {"seconds: 3\nband rise_s != 1\n", "mine.txt:2: ", "unknown comparison '!=' (<, <=, ==, > or >=)"},
+    {"seconds: 3\nband rise_s => 1\n", "mine.txt:2: ", "unknown comparison '=>'"},
+    {"seconds: 3\nband final_mode >= full\n", "mine.txt:2: ", "compared with =="},
     {"seconds: 3\nband rise_s < 1 2\n", "mine.txt:2: ", "band FIGURE OP LIMIT"},
     {"seconds: 3\nband final_mode < 1\n", "mine.txt:2: ", "compared with =="},
     {"seconds: 3\nband final_mode == flying\n", "mine.txt:2: ", "unknown mode 'flying'"},

@@ -116,4 +116,32 @@ TEST(ScenarioScore, BandsJudgeTheirFigure) {
   EXPECT_FALSE(r.pass);
 }
 
+// The floors: > and >= judge the other way round, and a figure not measured fails them too.
+TEST(ScenarioScore, FloorBandsJudgeTheirFigure) {
+  qrsim::ScenarioScript script;
+  std::string error;
+  ASSERT_TRUE(
+      qrsim::parse_scenario("seconds: 1\nband height_m_end > 1.5\nband height_m_end >= 1.5\n"
+                            "band speed_m_s_end > 0.1\nband battery_v_end >= 10\n"
+                            "band touchdown_speed_m_s >= 0\n",
+                            "f", "f", script, error))
+      << error;
+  qrsim::ScenarioResult r;
+  r.figures = {
+      {"height_m_end", 1.5}, {"speed_m_s_end", 0.2}, {"battery_v_end", 9.9}, {"touchdown_speed_m_s", std::nan("")}};
+  qrsim::judge(script, r);
+  ASSERT_EQ(r.checks.size(), 5u);
+  EXPECT_FALSE(r.checks[0].pass) << "1.5 is not above 1.5";
+  EXPECT_TRUE(r.checks[1].pass) << "1.5 is at least 1.5";
+  EXPECT_EQ(r.checks[1].band, "height_m_end >= 1.5");
+  EXPECT_TRUE(r.checks[2].pass) << "0.2 is above 0.1";
+  EXPECT_FALSE(r.checks[3].pass) << "9.9 is below 10";
+  EXPECT_FALSE(r.checks[4].pass) << "a figure not measured fails";
+  EXPECT_FALSE(r.pass);
+  r = {};
+  r.figures = {{"height_m_end", 1.6}, {"speed_m_s_end", 0.2}, {"battery_v_end", 10}, {"touchdown_speed_m_s", 0}};
+  qrsim::judge(script, r);
+  EXPECT_TRUE(r.pass);
+}
+
 }  // namespace

@@ -1,7 +1,7 @@
 // The scenario file format (docs/simulator.md): one statement a line, `#` starts a comment.
 //   keyword: value          a setting (summary, seconds, start, vehicle, mass, ...)
 //   at T action values...   an event, T seconds after t0, in time order
-//   band figure op limit    a pass band, op one of <, <=, ==
+//   band figure op limit    a pass band, op one of <, <=, ==, >, >=
 // Every error names the file and the line, so a user finds the mistake without the source.
 #include <qr/boards/sim/scenario_script.hpp>
 
@@ -323,15 +323,13 @@ class Reader {
     b.line = line_;
     b.figure = w[1];
     if (!is_figure(b.figure)) return fail("unknown band figure '" + b.figure + "' (docs/simulator.md lists them)");
-    if (w[2] == "<") {
-      b.compare = Compare::below;
-    } else if (w[2] == "<=") {
-      b.compare = Compare::at_most;
-    } else if (w[2] == "==") {
-      b.compare = Compare::equal;
-    } else {
-      return fail("unknown comparison '" + w[2] + "' (<, <= or ==)");
+    bool known = false;
+    for (const Compare c : {Compare::below, Compare::at_most, Compare::equal, Compare::above, Compare::at_least}) {
+      if (w[2] != compare_text(c)) continue;
+      b.compare = c;
+      known = true;
     }
+    if (!known) return fail("unknown comparison '" + w[2] + "' (<, <=, ==, > or >=)");
     if (b.figure == "final_mode") {
       if (b.compare != Compare::equal) return fail("final_mode is compared with ==");
       wire::Mode mode{};
@@ -378,6 +376,8 @@ const char* compare_text(Compare compare) {
     case Compare::below: return "<";
     case Compare::at_most: return "<=";
     case Compare::equal: return "==";
+    case Compare::above: return ">";
+    case Compare::at_least: return ">=";
   }
   return "?";
 }

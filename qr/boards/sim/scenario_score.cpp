@@ -184,6 +184,8 @@ void judge(const ScenarioScript& script, ScenarioResult& result) {
       case Compare::below: ok = value < band.limit; break;
       case Compare::at_most: ok = value <= band.limit; break;
       case Compare::equal: ok = value == band.limit; break;
+      case Compare::above: ok = value > band.limit; break;
+      case Compare::at_least: ok = value >= band.limit; break;
     }
     result.checks.push_back({band_text(band), ok});
     result.pass = result.pass && ok;

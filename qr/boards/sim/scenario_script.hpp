@@ -27,7 +27,8 @@ enum class Start : uint8_t {
   safe,    // calibrate: then t0, in safe on the ground; the script arms (`mode full`) itself
 };
 
-enum class Compare : uint8_t { below, at_most, equal };
+// <, <=, ==, >, >=: a floor (a figure that must reach a value) is as natural a band as a ceiling.
+enum class Compare : uint8_t { below, at_most, equal, above, at_least };
 
 // A pass band: figure `compare` limit. A figure that was not measured (NaN) fails.
 struct Band {
@@ -108,7 +109,7 @@ inline constexpr const char* kScenarioFormatDoc = "docs/simulator.md section 6.2
 // parameter's range and unit, so a user need not look them up. Empty on success.
 std::string parameter_from_text(const std::string& name, const std::string& value, wire::ParamId& id, int32_t& raw);
 
-const char* compare_text(Compare compare);  // "<", "<=", "=="
+const char* compare_text(Compare compare);  // "<", "<=", "==", ">", ">="
 std::string band_text(const Band& band);    // "rise_s < 0.3", "final_mode == full"
 
 }  // namespace qrsim
