@@ -180,6 +180,27 @@ TEST(Controllers, IntegralIsHeldClampedAndReset) {
   EXPECT_EQ(saturated.integral(), F::Thrust{});
 }
 
+// Far from the set-point the integral learns at an eighth of its rate (kIntegralZone): a push
+// that holds the angle off must not be learnt as a trim, or the vehicle hangs the other way
+// after it (sim/scenarios/held-push.txt). Within the zone it learns at its full rate.
+TEST(Controllers, IntegralLearnsSlowlyFarFromTheSetPoint) {
+  // P1 = 4 /s, I = 100: an angle error of 0.05 rad (within 5 degrees) is a rate error of 0.2
+  // rad/s, 20 thrust units a second; one of 0.2 rad (11 degrees) is 0.8 rad/s, 80 a second at
+  // the full rate and 10 at an eighth.
+  auto near = tilt_controller<F>(1024, 800, 1600);
+  auto far = tilt_controller<F>(1024, 800, 1600);
+  for (int n = 0; n < 1000; ++n) {
+    near.moment(test::quantise<FAngle>(0.05), FAngle{}, FRate{}, true);
+    far.moment(test::quantise<FAngle>(0.2), FAngle{}, FRate{}, true);
+  }
+  EXPECT_NEAR(near.integral().to_double(), 20.0, 1e-3);
+  EXPECT_NEAR(far.integral().to_double(), 10.0, 1e-3);
+  // Either side of the set-point alike.
+  auto below = tilt_controller<F>(1024, 800, 1600);
+  for (int n = 0; n < 1000; ++n) below.moment(FAngle{}, test::quantise<FAngle>(0.2), FRate{}, true);
+  EXPECT_NEAR(below.integral().to_double(), -10.0, 1e-3);
+}
+
 // An integral far below the Thrust lsb per tick still accumulates: 1e-6 rad/s of rate error at
 // I = 100 is 1e-7 thrust units per tick (the Thrust lsb is 1.5e-5, so a Thrust sum would stay
 // at 0), 0.01 after 100 s (the rate quantised to Q<27> is 0.9984e-6 rad/s).

@@ -150,6 +150,10 @@ class TiltEstimator {
     }
   }
 
+  // A turn the gyro did not see (ClipBridge, gyro_clip.hpp): the angle moves, the accelerometer's
+  // expected angle follows it through the drag's lag as it does every turn.
+  void turn(Angle missed) { angle_.add(fx::mul_wide(missed, kOne)); }
+
   // The accelerometer angle the model expects now (for the other axis' cross term, the logs).
   Angle expected() const { return expected_.angle(); }
   Angle angle() const { return angle_.angle(); }
@@ -163,6 +167,7 @@ class TiltEstimator {
   // reads is its floor, a shift without the rounding bit.
   static constexpr BiasSum kBiasHalf = half_lsb<Rate, BiasSum>();
 
+  static constexpr typename N::AngleGain kOne = typename N::AngleGain(1.0);
   typename N::AngleGain k1_{};
   static constexpr typename N::AngleGain kNoLag = typename N::AngleGain(1.0);
   typename N::AngleGain follow_ = kNoLag;  // dt / lag, at most 1
@@ -283,6 +288,14 @@ class AttitudeEstimator {
     yaw_.add(fx::mul_wide(yaw_rate_, kDt));
   }
 
+  // Turns the gyro missed while it read full scale (gyro_clip.hpp), about the body's x, y and z:
+  // roll, pitch and yaw take them as they are (the Euler coupling of a few degrees is left out).
+  void turn(const Angle (&missed)[3]) {
+    roll_.turn(missed[0]);
+    pitch_.turn(missed[1]);
+    yaw_.add(fx::mul_wide(missed[2], kOneAngle));
+  }
+
   Angle roll() const { return roll_.angle(); }
   Angle pitch() const { return pitch_.angle(); }
   Angle yaw() const { return yaw_.angle(); }
@@ -309,6 +322,7 @@ class AttitudeEstimator {
   static constexpr typename N::Scale kDt = typename N::Scale(1.0 / SampleHz);
   static constexpr Unit kOne = Unit(1.0);
   static constexpr typename N::AngleGain kNoLag = typename N::AngleGain(1.0);
+  static constexpr typename N::AngleGain kOneAngle = typename N::AngleGain(1.0);
 
   // One copy for both callers (the accelerometer-angle task and a restart): inlined into each, it
   // cost the image 1.3 KiB twice over.

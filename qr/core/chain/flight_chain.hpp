@@ -26,6 +26,7 @@
 #include <qr/core/chain/controllers.hpp>
 #include <qr/core/chain/engine_mixer.hpp>
 #include <qr/core/chain/fixed_numbers.hpp>
+#include <qr/core/chain/gyro_clip.hpp>
 #include <qr/core/chain/gyro_turns.hpp>
 #include <qr/core/chain/height_estimator.hpp>
 #include <qr/core/chain/landed_detector.hpp>
@@ -71,6 +72,7 @@ class FlightChain {
                                Units::rate_per_count(p.get(ParamId::gyro_scale_y_ppm)),
                                Units::rate_per_count(p.get(ParamId::gyro_scale_z_ppm))};
     filters_.set_gyro_scale(per_count);
+    for (int i = 0; i < 3; ++i) clip_angle_[i] = chain::product<typename Num::Scale>(per_count[i], kDt);
     calibration_.set_gyro_scale(per_count);
     gyro_turns_ = p.get(ParamId::gyro_turns);
     estimator_.set_divisors(p.get(ParamId::attitude_c1), p.get(ParamId::attitude_c2));
@@ -99,6 +101,7 @@ class FlightChain {
   void filter(const SensorSample& s) {
     sample_ = s;
     filters_.update(s);
+    for (int i = 0; i < 3; ++i) clipped_[i] += clips_[i].update(s.gyro[i]);
   }
 
   // Task "calibration": averages the samples filter() was given; true once this run is done.
@@ -170,12 +173,24 @@ class FlightChain {
       estimator_.start(accel);
     }
     estimator_.update_rates(rate, landed_.landed());  // on the ground (last tick's verdict): no drag lag
+    if ((clipped_[0] | clipped_[1] | clipped_[2]) != 0) take_clipped_turns();
     // The thrust the mixer is asked for: the pilot's lift, or the vertical loops' (height hold, a
     // landing) from their last run.
     const Accel accel_z = filters_.accel(2) - calibration_.accel_offset(2);
     const Thrust thrust = lift_ == LiftSource::pilot ? pilot_thrust_ : vertical_.thrust();
     landed_.update({thrust, accel_z, height_.height(), height_.climb()});
     if (lift_ == LiftSource::descend && touchdown_.impact(accel_z)) landed_.touch_down(height_.height());
+  }
+
+  // What the gyro missed at full scale (gyro_clip.hpp), counts x samples -> angles, into the
+  // estimate once.
+  void take_clipped_turns() {
+    Angle missed[3];
+    for (int i = 0; i < 3; ++i) {
+      missed[i] = chain::product_sat<Angle>(Num::template fixed<0>(clipped_[i]), clip_angle_[i]);
+      clipped_[i] = 0;
+    }
+    estimator_.turn(missed);
   }
 
   // Task "height": calibrated filtered accelerometer, the attitude estimate and the barometer ->
@@ -387,6 +402,7 @@ class FlightChain {
   static constexpr Count kTenThousand = Count(10000.0);
   static constexpr Count kMillion = Count(1000000.0);
 
+  static constexpr typename Num::Scale kDt = typename Num::Scale(1.0 / SampleHz);
   static int16_t angle_e4(Angle a) { return wire::saturate_i16(Num::round_to_int(fx::mul_wide(a, kTenThousand))); }
   static int16_t rate_e3(Rate r) { return wire::saturate_i16(Num::round_to_int(fx::mul_wide(r, kThousand))); }
   static int32_t thrust_e1(Thrust t) { return Num::round_to_int(fx::mul_wide(t, kTen)); }
@@ -400,6 +416,9 @@ class FlightChain {
   chain::GyroTurns<SampleHz> turns_;
   int32_t gyro_turns_ = 0;  // the parameter: turns the next calibration run measures after its average
   bool turns_ended_ = false;
+  chain::ClipBridge clips_[3];              // per gyro axis: the turn it missed at full scale
+  int32_t clipped_[3] = {};                 // ... counts x samples, not yet in the estimate
+  typename Num::Scale clip_angle_[3] = {};  // rad per count x sample: the gyro's scale x dt
   chain::AttitudeEstimator<Num, SampleHz> estimator_;
   chain::HeightEstimator<Num, kHeightRunHz> height_;
   chain::PilotSetpoints<Num> pilot_;
@@ -417,9 +436,8 @@ class FlightChain {
   chain::Moments<Thrust> moments_{};                      // what the last mix asked for
   EngineCommand engines_{};
   SensorSample sample_{};
-  bool attitude_entered_ = false;
-  bool yaw_entered_ =
-      false;  // yaw or full control entered: the next control_yaw() integrates  // full control entered: the next control_attitude() integrates
+  bool attitude_entered_ = false;  // full control entered: the next control_attitude() integrates
+  bool yaw_entered_ = false;       // yaw or full control entered: the next control_yaw() integrates
 };
 
 using FixedChain = FlightChain<chain::FixedNumbers>;
