@@ -1,10 +1,12 @@
 // Every scenario file of sim/scenarios/ flown at seed 1 and judged by its own bands on the
 // simulator's truth. A file with a known_failure line must still fail (a band, not the
 // preflight): when the firmware is fixed the test says so, and the line must go. The built-ins
-// compiled into qrsim must be these files, byte for byte.
+// compiled into qrsim must be these files, byte for byte. ScenarioFlights.*: short flights of
+// their own, for what the record measures in them (which modes, which ticks, what cause).
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -83,6 +85,31 @@ TEST(BuiltinScenarios, IncludeTheIssuesScenarios) {
         "heavy-slow", "step-roll-20", "vibration-x5"}) {
     EXPECT_NE(std::find(files.begin(), files.end(), name), files.end()) << name;
   }
+}
+
+// A scenario's text flown at seed 1.
+qrsim::ScenarioResult fly(const std::string& text) {
+  qrsim::ScenarioScript script;
+  std::string error;
+  EXPECT_TRUE(qrsim::parse_scenario(text, "flight", "flight.txt", script, error)) << error;
+  const qrsim::ScenarioResult r = qrsim::run_scenario(script, {});
+  EXPECT_TRUE(r.error.empty()) << r.error;
+  return r;
+}
+
+// Height hold flies the attitude loops as full control does: an upset in it is measured (the
+// record took the attitude errors in full control only, so peak_error_deg was null).
+TEST(ScenarioFlights, AnUpsetInHeightHoldIsMeasured) {
+  const qrsim::ScenarioResult r = fly(
+      "seconds: 4\nat 0 lift still\nat 0.5 mode height\nat 1.5 torque 1.0 1.0 0 for 0.2\n"
+      "band final_mode == height\n");
+  EXPECT_EQ(r.final_mode, "height") << "the push must not end height hold, or the test proves nothing";
+  EXPECT_GT(r.figure("height_hold_s"), 3.0) << "height hold held through the push";
+  EXPECT_GT(r.figure("max_tilt_deg_truth"), 30.0);
+  EXPECT_GT(r.figure("peak_error_deg"), 30.0);
+  EXPECT_TRUE(std::isfinite(r.figure("att_rms_deg_last_s")));
+  EXPECT_GT(r.figure("att_rms_deg_truth"), 1.0) << "the upset is in the window's RMS";
+  EXPECT_TRUE(std::isfinite(r.figure("est_err_max_deg")));
 }
 
 }  // namespace

@@ -15,12 +15,13 @@ struct FlightRecord {
   Trace roll_true, pitch_true, roll_est, pitch_est, roll_sp, pitch_sp;  // degrees, every tick
   Trace r_true;                                                         // rad/s
   Trace tilt;                                                           // degrees from vertical
-  // Full-control ticks only (the attitude figures judge the flight, not a panic's descent):
+  // Ticks in full control or height hold only, where the attitude loops fly the pilot's
+  // set-points (the attitude figures judge the flight, not a panic's descent):
   Trace att_err;       // √((e_φ² + e_θ²)/2) of truth - set-point
   Trace axis_err;      // max(|e_φ|, |e_θ|) of truth - set-point
   Trace est_err;       // √((x_φ² + x_θ²)/2) of estimate - truth
   Trace est_err_axis;  // max(|x_φ|, |x_θ|)
-  Trace saturated;     // 0 or 100
+  Trace saturated;     // full-control ticks: 0 or 100
   Trace worst_err;     // every tick: max(|e_φ|, |e_θ|), for the recovery after a push
 
   bool entered_panic = false;

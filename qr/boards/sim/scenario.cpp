@@ -218,6 +218,14 @@ void record_belief(FlightRecord& rec, double t, uint8_t mode, const FirmwareView
   rec.belief_mode = mode;
 }
 
+// The modes whose attitude loops fly the pilot's roll and pitch set-points: full control and
+// height hold (which holds the height with the lift and flies the attitude as full control does).
+// Not a panic's descent, which levels the vehicle by its own set-points, nor yaw control.
+bool attitude_loops_fly(uint8_t mode) {
+  return mode == static_cast<uint8_t>(wire::Mode::full_control) ||
+         mode == static_cast<uint8_t>(wire::Mode::height_hold);
+}
+
 // One control period of the record, from t0 on.
 void record_tick(FlightRecord& rec, double t, uint8_t mode, FlyingQr& qr, uint16_t idle, bool& airborne,
                  double& last_down_speed) {
@@ -241,12 +249,14 @@ void record_tick(FlightRecord& rec, double t, uint8_t mode, FlyingQr& qr, uint16
   if (!qr.world().held()) rec.tilt.push_back({t, std::acos(std::clamp(body_down.z, -1.0, 1.0)) * kDeg});
   const double er = roll - roll_sp, ep = pitch - pitch_sp;
   rec.worst_err.push_back({t, std::max(std::abs(er), std::abs(ep))});
-  if (mode == static_cast<uint8_t>(wire::Mode::full_control)) {
+  if (attitude_loops_fly(mode)) {
     rec.att_err.push_back({t, std::sqrt((er * er + ep * ep) / 2)});
     rec.axis_err.push_back({t, std::max(std::abs(er), std::abs(ep))});
     const double xr = roll_est - roll, xp = pitch_est - pitch;
     rec.est_err.push_back({t, std::sqrt((xr * xr + xp * xp) / 2)});
     rec.est_err_axis.push_back({t, std::max(std::abs(xr), std::abs(xp))});
+  }
+  if (mode == static_cast<uint8_t>(wire::Mode::full_control)) {
     bool at_limit = false;
     for (uint16_t v : qr.board().engines().value) at_limit = at_limit || v >= 1000 || v <= idle;
     rec.saturated.push_back({t, at_limit ? 100.0 : 0.0});
