@@ -23,6 +23,7 @@ enum class Action : uint8_t {
   lift_down,
   lift_up_coarse,  // ten steps at once: from the ground to a hover in a few presses
   lift_down_coarse,
+  lift_hover,  // the lift to the hover lift the QR learnt in flight (nothing while it has learnt none)
   roll_left,
   roll_right,
   pitch_down,  // nose down: the stick pushed forward
@@ -73,6 +74,7 @@ inline constexpr ActionSpec kActions[] = {
     {Action::lift_down, "lift down"},
     {Action::lift_up_coarse, "lift up x10"},
     {Action::lift_down_coarse, "lift down x10"},
+    {Action::lift_hover, "lift to the hover"},
     {Action::roll_left, "roll left"},
     {Action::roll_right, "roll right"},
     {Action::pitch_down, "pitch: nose down"},

@@ -252,6 +252,7 @@ void Console::act(Action action, uint32_t now_ms) {
       read_back_differ_.clear();
       break;
     case Action::tasks_print: print_tasks(); break;
+    case Action::lift_hover: lift_to_hover(); break;
     case Action::sim_push:
       if (!simulator_) {
         note(Severity::warning, "no simulator: n pushes only a QR the console started in qrsim");
@@ -457,6 +458,30 @@ bool Console::arm_radio(wire::Mode mode, bool in_safe) {
 void Console::send_control() {
   last_control_ = controls_.control();
   link_.send_control(last_control_, now_ms_);
+}
+
+void Console::lift_to_hover() {
+  // The QR reports its hover in engine units (FlightChain::hover_lift(): the engine command that
+  // gives the learnt per-engine hover thrust). The lift stick is on the same scale: lift l asks
+  // each engine for the thrust l^2 / 1000, which is engine command l (engine_mixer.hpp), so the
+  // hover lift is the lift stick value that carries the vehicle, with no conversion
+  // (HoverKey.TheHoverLiftIsTheLiftStickThatGivesTheHoverThrust holds the firmware to it).
+  const uint16_t hover = telemetry_.height ? telemetry_.height->hover_lift : 0;
+  const int32_t before = controls_.control().lift;
+  if (hover == 0) {
+    note(Severity::warning,
+         "no hover lift known yet: the QR learns it in flight, a few seconds flying slowly; lift stays " +
+             std::to_string(before));
+    return;
+  }
+  const int32_t lift = controls_.set_lift(hover);
+  if (lift == hover) {
+    note(Severity::info, "lift " + std::to_string(before) + " -> " + std::to_string(lift) +
+                             ", the hover lift the QR learnt (more lift to stop a descent: PgUp)");
+  } else {
+    note(Severity::warning, "the throttle alone gives lift " + std::to_string(lift) + ", above the hover lift " +
+                                std::to_string(hover) + ": lift trim 0; close the throttle to reach the hover");
+  }
 }
 
 void Console::print_tasks() {

@@ -157,6 +157,8 @@ class Console {
   // safe), or nothing sent (in flight, where the switch's off-and-on would be a panic).
   bool arm_radio(wire::Mode mode, bool in_safe);
   void send_control();
+  // The hover key: the lift to the hover lift the QR learnt, or a message that it has none yet.
+  void lift_to_hover();
   void print_tasks();
   void record_received(const uint8_t* data, size_t count);
   void finish_exit(Severity severity, const std::string& why, bool confirmed);

@@ -9,10 +9,10 @@ struct NamedKey {
 };
 
 constexpr NamedKey kNamedKeys[] = {
-    {kKeyEscape, "ESC"},  {kKeyInterrupt, "^C"},        {kKeyUp, "up"}, {kKeyDown, "down"},
-    {kKeyLeft, "left"},   {kKeyRight, "right"},         {' ', "space"}, {kKeyTab, "Tab"},
-    {kKeyEnter, "Enter"}, {kKeyBackspace, "Backspace"}, {19, "^S"},     {15, "^O"},
-    {kKeyPageUp, "PgUp"}, {kKeyPageDown, "PgDn"},
+    {kKeyEscape, "ESC"},  {kKeyInterrupt, "^C"},        {kKeyUp, "up"},     {kKeyDown, "down"},
+    {kKeyLeft, "left"},   {kKeyRight, "right"},         {' ', "space"},     {kKeyTab, "Tab"},
+    {kKeyEnter, "Enter"}, {kKeyBackspace, "Backspace"}, {19, "^S"},         {15, "^O"},
+    {kKeyPageUp, "PgUp"}, {kKeyPageDown, "PgDn"},       {kKeyHome, "Home"},
 };
 
 }  // namespace

@@ -24,6 +24,7 @@ inline constexpr Key kKeyRight = 0x110003;
 inline constexpr Key kKeyBackspace = 0x110004;
 inline constexpr Key kKeyPageUp = 0x110005;
 inline constexpr Key kKeyPageDown = 0x110006;
+inline constexpr Key kKeyHome = 0x110007;
 
 // "ESC", "up", "a", "?": what the help overlay and the documentation call the key.
 std::string key_name(Key key);

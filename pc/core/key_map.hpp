@@ -1,9 +1,12 @@
 // The keyboard, as one table: key -> action. The IN4073 map (ESC, 0-5, 7, a/z, arrows, q/w, u/j,
-// i/k, o/l) plus our keys for the filter constants, logs, parameters, the simulator's push, reset,
-// turn and radio arm switch, and help.
+// i/k, o/l) plus our keys for the coarse lift and the hover, the filter constants, logs,
+// parameters, the simulator's push, reset, turn and radio arm switch, and help.
 #pragma once
 
 #include <stddef.h>
+
+#include <string>
+#include <vector>
 
 #include <pc/core/action.hpp>
 #include <pc/core/key.hpp>
@@ -30,6 +33,7 @@ inline constexpr KeyBinding kKeyMap[] = {
     {'z', Action::lift_down},
     {kKeyPageUp, Action::lift_up_coarse},
     {kKeyPageDown, Action::lift_down_coarse},
+    {kKeyHome, Action::lift_hover},  // beside PgUp and PgDn, the other lift keys
     {kKeyLeft, Action::roll_left},
     {kKeyRight, Action::roll_right},
     {kKeyUp, Action::pitch_down},
@@ -65,5 +69,16 @@ inline constexpr size_t kKeyBindingCount = sizeof(kKeyMap) / sizeof(kKeyMap[0]);
 // The action bound to a key; Action::none for an unbound key. Capital letters act like small ones,
 // so a pilot with caps lock on still has every key (the map binds no capital letter).
 Action action_for(Key key);
+
+// The help overlay's entries: the key map in its order, keys that do the same sharing one entry
+// ("x ^C", "h ?").
+struct HelpEntry {
+  std::string keys;
+  Action action;
+};
+std::vector<HelpEntry> help_entries();
+
+// The help overlay at 80x24 holds three columns of 14 entries under the engine rows.
+inline constexpr size_t kHelpEntriesAt80x24 = 3 * 14;
 
 }  // namespace qrterm

@@ -48,6 +48,11 @@ bool PilotControls::apply(Action action) {
   return false;
 }
 
+int32_t PilotControls::set_lift(int32_t lift) {
+  trims_.lift = std::clamp(lift - joystick_.lift, 0, kLiftMax);
+  return control().lift;
+}
+
 wire::Control PilotControls::control() const {
   wire::Control c;
   c.lift = static_cast<uint16_t>(std::clamp(joystick_.lift + trims_.lift, 0, kLiftMax));

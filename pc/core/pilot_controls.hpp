@@ -23,6 +23,11 @@ class PilotControls {
   // action is not ours: false.
   bool apply(Action action);
 
+  // The lift trim set so that joystick plus trim gives `lift` (the hover key), as far as the trim's
+  // range 0..1000 allows: a throttle already above `lift` leaves the trim at 0. Returns the lift
+  // that goes out now.
+  int32_t set_lift(int32_t lift);
+
   void set_joystick(const Sticks& sticks) { joystick_ = sticks; }
   const Sticks& joystick() const { return joystick_; }
   const Sticks& trims() const { return trims_; }

@@ -372,10 +372,12 @@ void Cockpit::draw_link_alarm(const Console& console, int width) {
 
 void Cockpit::draw_help(int rows, int width) {
   // Below the title, MODE/LINK, battery, QR and engine rows: the pilot flies by those while
-  // reading the keys. Two columns where the rows allow, else three narrower ones.
+  // reading the keys. Two columns where the rows allow, else three narrower ones. Keys that do the
+  // same (x and ^C, h and ?) share an entry, so every entry fits at 80x24.
+  const std::vector<HelpEntry> entries = help_entries();
   constexpr int kTop = 8;
   constexpr int kEntry = 6 + static_cast<int>(kActionTextMax);  // "right " and the text
-  const int count = static_cast<int>(kKeyBindingCount);
+  const int count = static_cast<int>(entries.size());
   const int columns = (count + 1) / 2 + 3 <= rows - kTop ? 2 : 3;
   const int per_column = (count + columns - 1) / columns;
   const int column_width = std::max(kEntry, std::min(38, (width - 2) / columns));
@@ -386,13 +388,14 @@ void Cockpit::draw_help(int rows, int width) {
   for (int r = 0; r < box_height; ++r) put(top + r, left, std::string(static_cast<size_t>(box_width), ' '), kTitle);
   put(top, left + 2, "keys (h or ? closes; any other key acts and closes)", kTitle, A_BOLD);
   const int column_left = left + (box_width - columns * column_width) / 2;
-  for (size_t i = 0; i < kKeyBindingCount; ++i) {
-    const int column = static_cast<int>(i) / per_column;
-    const int row = top + 2 + static_cast<int>(i) % per_column;
+  for (int i = 0; i < count; ++i) {
+    const int column = i / per_column;
+    const int row = top + 2 + i % per_column;
     if (row >= top + box_height) continue;
-    const KeyBinding& binding = kKeyMap[i];
     put(row, column_left + column * column_width,
-        text("%-5s %s", key_name(binding.key).c_str(), action_text(binding.action)), kTitle);
+        text("%-5s %s", entries[static_cast<size_t>(i)].keys.c_str(),
+             action_text(entries[static_cast<size_t>(i)].action)),
+        kTitle);
   }
 }
 

@@ -14,10 +14,11 @@ struct KeyCode {
   Key key;
 };
 
+// 127 is what most terminals send for Backspace, 8 what the others do.
 constexpr KeyCode kKeyCodes[] = {
     {KEY_UP, kKeyUp},          {KEY_DOWN, kKeyDown},           {KEY_LEFT, kKeyLeft},
     {KEY_RIGHT, kKeyRight},    {KEY_BACKSPACE, kKeyBackspace}, {KEY_PPAGE, kKeyPageUp},
-    {KEY_NPAGE, kKeyPageDown}, {127, kKeyBackspace},  // what most terminals send for Backspace
+    {KEY_NPAGE, kKeyPageDown}, {KEY_HOME, kKeyHome},           {127, kKeyBackspace},
     {8, kKeyBackspace},        {KEY_ENTER, kKeyEnter},         {'\n', kKeyEnter},
 };
 

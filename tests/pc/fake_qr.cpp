@@ -159,9 +159,11 @@ void FakeQr::send_telemetry() {
   wire::TelemetryAttitude attitude;
   attitude.tick = tick_++;
   attitude.mode = mode;
-  attitude.flags = static_cast<uint8_t>((calibrated ? wire::kFlagCalibrated : 0) | (logging ? wire::kFlagLogging : 0));
+  attitude.flags = static_cast<uint8_t>((calibrated ? wire::kFlagCalibrated : 0) | (logging ? wire::kFlagLogging : 0) |
+                                        (flying_flag ? wire::kFlagFlying : 0));
   send(wire::encode(attitude));
   send(wire::encode(wire::TelemetryRates{}));
+  if (height) send(wire::encode(*height));
   switch (slow_group_++ % 5) {
     case 0: {
       wire::TelemetryEngines engines;

@@ -48,6 +48,8 @@ class FakeQr {
   std::map<uint16_t, wire::SensorLogRecord> sensor_log;            // lines 0..size-1
   std::map<uint16_t, wire::TelemetryLogRecord> telemetry_log;
   bool logging = false;
+  bool flying_flag = false;                     // the flying/landed verdict's telemetry flag
+  std::optional<wire::TelemetryHeight> height;  // sent every telemetry period when set
 
   // --- what it has seen and what it is
   wire::Mode mode = wire::Mode::safe;

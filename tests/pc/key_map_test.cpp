@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <map>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -111,6 +112,26 @@ TEST(KeyMap, CoarseLiftKeysReachAHoverInAFewPresses) {
   EXPECT_EQ(controls.control().lift, 1000);
   for (int i = 0; i < 20; ++i) controls.apply(Action::lift_down_coarse);
   EXPECT_EQ(controls.control().lift, 0);
+}
+
+// The help overlay at 80x24 shows every key: keys that do the same share an entry, and each key is
+// in exactly one.
+TEST(KeyMap, TheHelpOverlayHoldsEveryKeyAt80x24) {
+  const std::vector<qrterm::HelpEntry> entries = qrterm::help_entries();
+  EXPECT_LE(entries.size(), qrterm::kHelpEntriesAt80x24);
+  std::map<std::string, Action> shown;  // key name -> the action its entry says
+  for (const qrterm::HelpEntry& entry : entries) {
+    std::istringstream keys(entry.keys);
+    for (std::string key; keys >> key;) EXPECT_TRUE(shown.emplace(key, entry.action).second) << key << " twice";
+  }
+  EXPECT_EQ(shown.size(), qrterm::kKeyBindingCount);
+  for (const qrterm::KeyBinding& binding : qrterm::kKeyMap) {
+    const auto it = shown.find(qrterm::key_name(binding.key));
+    ASSERT_NE(it, shown.end()) << qrterm::key_name(binding.key);
+    EXPECT_EQ(it->second, binding.action) << qrterm::key_name(binding.key);
+  }
+  EXPECT_EQ(entries[1].keys, "x ^C");
+  EXPECT_EQ(entries.back().keys, "h ?");
 }
 
 // docs/console.md has a table of keys, rows like "| `a` | ... |": it must list every bound key
