@@ -112,4 +112,19 @@ TEST(ScenarioFlights, AnUpsetInHeightHoldIsMeasured) {
   EXPECT_TRUE(std::isfinite(r.figure("est_err_max_deg")));
 }
 
+// The record knows a panic's cause from the firmware's announcement: a link loss in hover, the
+// pack full, is no battery panic; a climb that sags a half-full pack below a battery_panic_mv set
+// just under its resting voltage (the sag model off: battery_sag_mv 0) is one, the rest above.
+TEST(ScenarioFlights, OnlyABatteryPanicIsJudgedOnTheRestedVoltage) {
+  const qrsim::ScenarioResult link = fly("seconds: 3\nat 0.2 link off\nband entered_panic == 1\n");
+  EXPECT_EQ(link.figure("entered_panic"), 1);
+  EXPECT_EQ(link.figure("panic_while_rested_above_threshold"), 0) << "a link loss, not a battery panic";
+  const qrsim::ScenarioResult sag = fly(
+      "seconds: 4\nbattery_pct: 50\nparam: battery_sag_mv 0\nparam: battery_panic_mv 11200\n"
+      "at 0 lift 1.6\nband entered_panic == 1\n");
+  EXPECT_EQ(sag.figure("entered_panic"), 1);
+  EXPECT_GT(sag.figure("battery_rested_v_min"), 11.2) << "the pack rested above the threshold all along";
+  EXPECT_EQ(sag.figure("panic_while_rested_above_threshold"), 1);
+}
+
 }  // namespace

@@ -13,6 +13,7 @@
 namespace {
 
 constexpr double kTau = 0.05;
+constexpr double kNaN = qrsim::kNotMeasured;
 
 struct Flight {
   qrsim::ScenarioScript script;
@@ -94,6 +95,29 @@ TEST(ScenarioScore, NoStepMeansNoStepFiguresAndTheWholeWindowIsHeld) {
   EXPECT_TRUE(std::isnan(figure(out, "rise_s")));
   EXPECT_TRUE(std::isnan(figure(out, "release_settle_s")));
   EXPECT_NEAR(figure(out, "att_err_deg_truth_max_after_settle"), 10, 0.01);  // the step's first tick counts
+}
+
+// panic_while_rested_above_threshold is about a battery panic only, by the cause the firmware
+// announced: a link loss with a full pack is no false battery panic.
+TEST(ScenarioScore, RestedAboveThresholdJudgesABatteryPanicOnly) {
+  const Flight f = step_flight();
+  qrsim::EndState end;
+  end.battery_panic_volts = 10.5;
+  const auto judged = [&](bool panicked, const std::string& cause, double rested) {
+    qrsim::FlightRecord rec = f.rec;
+    rec.entered_panic = panicked;
+    rec.panic_cause = cause;
+    rec.rested_v_at_panic = rested;
+    std::vector<qrsim::Figure> out;
+    qrsim::add_flight_figures(f.script, rec, end, out);
+    return figure(out, "panic_while_rested_above_threshold");
+  };
+  EXPECT_EQ(judged(true, "battery low", 11.2), 1) << "a battery panic with the pack's rest above the threshold";
+  EXPECT_EQ(judged(true, "battery low", 10.4), 0) << "a battery panic of an empty pack";
+  EXPECT_EQ(judged(true, "link lost", 11.2), 0);
+  EXPECT_EQ(judged(true, "requested", 11.2), 0);
+  EXPECT_EQ(judged(false, "", kNaN), 0) << "no panic";
+  EXPECT_TRUE(std::isnan(judged(true, "", 11.2))) << "a panic whose cause was not heard is not measured";
 }
 
 TEST(ScenarioScore, BandsJudgeTheirFigure) {

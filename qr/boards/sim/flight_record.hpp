@@ -5,6 +5,8 @@
 
 #include <stdint.h>
 
+#include <string>
+
 #include <qr/boards/sim/scoring.hpp>
 
 namespace qrsim {
@@ -27,6 +29,9 @@ struct FlightRecord {
   bool entered_panic = false;
   double panic_at = kNotMeasured, safe_at = kNotMeasured;
   double rested_v_at_panic = kNotMeasured;
+  // Why, as the firmware announced it on its debug text ("battery low", "link lost", ...: the
+  // names of qr::kPanicCauseNames); empty when no announcement was heard by the window's end.
+  std::string panic_cause;
   double battery_v_min = kNotMeasured, rested_v_min = kNotMeasured;
   double touchdown_speed = kNotMeasured;  // m/s, the first after having been airborne
   double touchdown_at = kNotMeasured, engines_stopped_at = kNotMeasured;

@@ -298,6 +298,18 @@ void record_tick(FlightRecord& rec, double t, uint8_t mode, FlyingQr& qr, uint16
   last_down_speed = std::abs(s.velocity.z);
 }
 
+// The cause of the first panic the firmware announced on its debug text from `from` on ("mode:
+// panic (battery low)", Flight::announce_mode): the record cannot see the safety machine's state
+// on the devboard's binary, but both builds say why they panic, and the pilot hears it.
+std::string first_panic_cause(const std::string& text, size_t from) {
+  const std::string said = std::string("mode: ") + wire::mode_name(wire::Mode::panic) + " (";
+  const size_t at = text.find(said, from);
+  if (at == std::string::npos) return {};
+  const size_t begin = at + said.size();
+  const size_t end = text.find(')', begin);
+  return end == std::string::npos ? std::string() : text.substr(begin, end - begin);
+}
+
 // The binary's own cost in this flight, from the scheduler's statistics the board reported (RV32
 // instructions, exact under QEMU's -icount): the tick, then each task that ran.
 void add_instruction_figures(const DevboardQr& devboard, std::vector<Figure>& f) {
@@ -370,6 +382,7 @@ ScenarioResult run_scenario(const ScenarioScript& script, const RunOptions& opti
   rec.t_end = 1e9;
   bool airborne = false;
   double last_down_speed = 0;
+  size_t text_at_t0 = 0;  // how much debug text the pilot had heard at t0
   FILE* record = options.record_path.empty() ? nullptr : std::fopen(options.record_path.c_str(), "w");
   if (record != nullptr) std::fprintf(record, "%s\n", qr::host::replay_input_header().c_str());
   bool recording = false;
@@ -390,6 +403,7 @@ ScenarioResult run_scenario(const ScenarioScript& script, const RunOptions& opti
       rec.t0 = t;
       rec.t_end = t + seconds;
       airborne = plant.deepest_contact() < 0;
+      text_at_t0 = pilot.view().debug_text.size();
     };
 
     // ---- the pilot ----
@@ -482,6 +496,7 @@ ScenarioResult run_scenario(const ScenarioScript& script, const RunOptions& opti
   if (trace != nullptr) std::fclose(trace);
   if (record != nullptr) std::fclose(record);
   if (!qr->error().empty() && result.error.empty()) result.error = "devboard: " + qr->error();
+  if (rec.entered_panic) rec.panic_cause = first_panic_cause(pilot.view().debug_text, text_at_t0);
 
   // ---- what only the end knows ----
   EndState end;

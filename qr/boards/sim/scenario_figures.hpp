@@ -55,7 +55,8 @@ inline constexpr FigureSpec kFigureTable[] = {
     {"panic_after_s", "when (from t0) it entered panic"},
     {"safe_after_s", "when, after the panic, it entered safe"},
     {"panic_while_rested_above_threshold",
-     "1 when it entered panic while the battery's resting voltage was above battery_panic_mv"},
+     "1 when it entered a battery panic (the cause it announced) while the battery's resting voltage was above "
+     "battery_panic_mv; 0 for another cause or no panic; null when the cause was not heard"},
     {"battery_v_min", "lowest terminal voltage in the window (what the sensor sees)"},
     {"battery_rested_v_min", "lowest resting (open-circuit) voltage in the window"},
     {"touchdown_speed_m_s", "vertical speed at the first ground contact after being airborne in the window"},

@@ -1,6 +1,7 @@
 #include <qr/boards/sim/scenario_score.hpp>
 
 #include <qr/core/rate.hpp>
+#include <qr/core/safety.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -162,8 +163,18 @@ void add_flight_figures(const ScenarioScript& script, const FlightRecord& rec, c
   f.push_back({"entered_panic", rec.entered_panic ? 1.0 : 0.0});
   f.push_back({"panic_after_s", rec.panic_at - t0});
   f.push_back({"safe_after_s", rec.safe_at - t0});
-  f.push_back({"panic_while_rested_above_threshold",
-               rec.entered_panic && rec.rested_v_at_panic > end.battery_panic_volts ? 1.0 : 0.0});
+  {
+    // A battery panic only (a link loss or the pilot's stop says nothing about the battery), by
+    // the cause the firmware announced; one whose cause was not heard is not measured.
+    const char* battery = qr::kPanicCauseNames[static_cast<uint8_t>(qr::PanicCause::battery_low)];
+    double rested_above = 0;
+    if (rec.entered_panic && rec.panic_cause.empty()) {
+      rested_above = kNotMeasured;
+    } else if (rec.entered_panic && rec.panic_cause == battery) {
+      rested_above = rec.rested_v_at_panic > end.battery_panic_volts ? 1.0 : 0.0;
+    }
+    f.push_back({"panic_while_rested_above_threshold", rested_above});
+  }
   f.push_back({"battery_v_min", rec.battery_v_min});
   f.push_back({"battery_rested_v_min", rec.rested_v_min});
   f.push_back({"touchdown_speed_m_s", rec.touchdown_speed});
