@@ -127,4 +127,15 @@ TEST(ScenarioFlights, OnlyABatteryPanicIsJudgedOnTheRestedVoltage) {
   EXPECT_EQ(sag.figure("panic_while_rested_above_threshold"), 1);
 }
 
+// Armed on the ground with the lift stick down, every engine is at idle: that is no saturation.
+// Only the ticks airborne in full control count (a ground start counted 100 % before the take-off).
+TEST(ScenarioFlights, EngineSaturationCountsAirborneTicksOnly) {
+  const qrsim::ScenarioResult ground = fly("seconds: 2\nstart: ground\nband final_mode == full\n");
+  EXPECT_LT(ground.figure("height_m_end"), 0.2) << "it stayed on the ground";
+  EXPECT_TRUE(std::isnan(ground.figure("engine_saturation_pct"))) << "no tick airborne: not measured";
+  const qrsim::ScenarioResult takeoff = fly("seconds: 5\nstart: ground\nat 1 lift hold\nband final_mode == full\n");
+  EXPECT_GT(takeoff.figure("height_m_end"), 1.0) << "it took off";
+  EXPECT_LT(takeoff.figure("engine_saturation_pct"), 5) << "a gentle take-off and hover saturate no engine";
+}
+
 }  // namespace

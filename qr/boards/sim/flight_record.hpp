@@ -23,7 +23,7 @@ struct FlightRecord {
   Trace axis_err;      // max(|e_φ|, |e_θ|) of truth - set-point
   Trace est_err;       // √((x_φ² + x_θ²)/2) of estimate - truth
   Trace est_err_axis;  // max(|x_φ|, |x_θ|)
-  Trace saturated;     // full-control ticks: 0 or 100
+  Trace saturated;     // full-control ticks airborne only: 0 or 100
   Trace worst_err;     // every tick: max(|e_φ|, |e_θ|), for the recovery after a push
 
   bool entered_panic = false;

@@ -256,11 +256,6 @@ void record_tick(FlightRecord& rec, double t, uint8_t mode, FlyingQr& qr, uint16
     rec.est_err.push_back({t, std::sqrt((xr * xr + xp * xp) / 2)});
     rec.est_err_axis.push_back({t, std::max(std::abs(xr), std::abs(xp))});
   }
-  if (mode == static_cast<uint8_t>(wire::Mode::full_control)) {
-    bool at_limit = false;
-    for (uint16_t v : qr.board().engines().value) at_limit = at_limit || v >= 1000 || v <= idle;
-    rec.saturated.push_back({t, at_limit ? 100.0 : 0.0});
-  }
   const double rested = plant.battery().open_circuit_volts();
   if (mode == static_cast<uint8_t>(wire::Mode::panic) && !rec.entered_panic) {
     rec.entered_panic = true;
@@ -277,6 +272,13 @@ void record_tick(FlightRecord& rec, double t, uint8_t mode, FlyingQr& qr, uint16
   // A vehicle in a hand (a turn event) is neither flying nor landing when it is set down.
   const bool in_air = plant.deepest_contact() < 0 && !qr.world().held();
   record_belief(rec, t, mode, chain, plant, airborne, in_air);
+  // Saturation is a flying vehicle's: on the ground, armed with the lift stick down, every engine
+  // sits at or below idle by design, and that is no engine out of authority.
+  if (in_air && mode == static_cast<uint8_t>(wire::Mode::full_control)) {
+    bool at_limit = false;
+    for (uint16_t v : qr.board().engines().value) at_limit = at_limit || v >= 1000 || v <= idle;
+    rec.saturated.push_back({t, at_limit ? 100.0 : 0.0});
+  }
   if (airborne && !in_air && std::isnan(rec.touchdown_speed)) {
     rec.touchdown_speed = last_down_speed;
     rec.touchdown_at = t;

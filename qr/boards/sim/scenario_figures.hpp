@@ -76,7 +76,9 @@ inline constexpr FigureSpec kFigureTable[] = {
     {"gyro_scale_error_ppm_max",
      "truth: the gyro's largest per-axis scale error the firmware flies with at the end, its gyro_scale_*_ppm "
      "parameters divided out (ppm)"},
-    {"engine_saturation_pct", "share of full-control ticks with an engine at 1000 or at or below idle"},
+    {"engine_saturation_pct",
+     "share of the ticks airborne in full control with an engine at 1000 or at or below idle (on the ground idle "
+     "is no saturation); null without such a tick"},
     {"engines_at_end_max", "the largest engine value at the end"},
     {"deadline_misses", "the scheduler's count"},
     {"final_mode", "the mode at the end (a band compares the mode key: safe, panic, full, ...)"},
