@@ -86,6 +86,43 @@ TEST(ScenarioScore, TheHeldPartStartsAtTheSettleTargetAndEndsAtTheRelease) {
   EXPECT_NEAR(figure(out, "max_tilt_deg_truth"), 10.7, 1e-3);
 }
 
+// The release's settling is judged up to the next event that moves the attitude: a push or a
+// stick after the release (here a 3° bump at 2.5-2.6 s) is not counted as the release's, while
+// an event that moves no attitude (log start) leaves the window to its end.
+TEST(ScenarioScore, ReleaseSettleEndsAtTheNextDisturbance) {
+  Flight f = step_flight();
+  for (qrsim::Sample& s : f.rec.roll_true) {
+    if (s.t >= 2.5 && s.t < 2.6) s.value += 3;
+  }
+  const double settled = kTau * std::log(10.0);
+  const char* const kDisturbing[] = {"at 2.5 torque 0.5 0 0 for 0.1", "at 2.5 force 0 3 0 for 0.1", "at 2.5 pitch 5",
+                                     "at 2.5 roll 0", "at 2.5 turn z 1 for 1.6"};
+  for (const char* event : kDisturbing) {
+    std::string error;
+    ASSERT_TRUE(
+        qrsim::parse_scenario(std::string("seconds: 3\nat 0 roll 10\nat 2 roll 0\n") + event + "\nband rise_s < 1\n",
+                              "release", "release", f.script, error))
+        << error;
+    std::vector<qrsim::Figure> out;
+    qrsim::add_flight_figures(f.script, f.rec, {}, out);
+    EXPECT_NEAR(figure(out, "release_settle_s"), settled, 2e-3) << event;
+  }
+  std::string error;
+  ASSERT_TRUE(qrsim::parse_scenario("seconds: 3\nat 0 roll 10\nat 2 roll 0\nat 2.5 log start\nband rise_s < 1\n",
+                                    "release", "release", f.script, error))
+      << error;
+  std::vector<qrsim::Figure> out;
+  qrsim::add_flight_figures(f.script, f.rec, {}, out);
+  EXPECT_NEAR(figure(out, "release_settle_s"), 2.6 - 2.01, 2e-3) << "the bump counts when nothing explains it";
+  // An event beside the release, at its time, leaves nothing to judge.
+  ASSERT_TRUE(qrsim::parse_scenario("seconds: 3\nat 0 roll 10\nat 2 pitch 3\nat 2 roll 0\nband rise_s < 1\n", "release",
+                                    "release", f.script, error))
+      << error;
+  out.clear();
+  qrsim::add_flight_figures(f.script, f.rec, {}, out);
+  EXPECT_TRUE(std::isnan(figure(out, "release_settle_s")));
+}
+
 TEST(ScenarioScore, NoStepMeansNoStepFiguresAndTheWholeWindowIsHeld) {
   Flight f = step_flight();
   std::string error;

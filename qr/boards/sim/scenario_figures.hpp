@@ -43,7 +43,9 @@ inline constexpr FigureSpec kFigureTable[] = {
     {"rise_s_est", "the same three on the firmware's estimate"},
     {"overshoot_pct_est", "estimate: overshoot"},
     {"settle_s_est", "estimate: settling time"},
-    {"release_settle_s", "truth: from the stick's return to centre until within 1 deg of level for good"},
+    {"release_settle_s",
+     "truth: from the stick's return to centre until within 1 deg of level for good, up to the next push, turn or "
+     "roll or pitch stick event"},
     {"yaw_rate_setpoint_rad_s", "the firmware's yaw-rate set-point at the end"},
     {"yaw_rate_rad_s", "mean true yaw rate over the last 40 % of the window"},
     {"yaw_rate_p_only_rad_s", "where the yaw loop's P term alone would settle"},

@@ -9,25 +9,50 @@
 namespace qrsim {
 namespace {
 
-// The scenario's attitude step: the first roll or pitch event away from centre, and the first
-// later event on the same axis back to centre (the release), if any.
+// The scenario's attitude step: the first roll or pitch event away from centre, the first later
+// event on the same axis back to centre (the release), if any, and the first event from the
+// release on that moves the attitude again, which ends the release's settling.
 struct StepPlan {
   bool roll = true;
   double amount = 0;  // degrees
   double at_s = 0;
   double release_at_s = kNotMeasured;
+  double disturbed_at_s = kNotMeasured;
 };
+
+// A push, a hand's turn or a roll or pitch stick: what moves the attitude away from where the
+// release left it, so a settling after it is not the release's.
+bool disturbs_attitude(const Event& e) {
+  switch (e.action) {
+    case Action::torque:
+    case Action::force:
+    case Action::turn:
+    case Action::roll:
+    case Action::pitch: return true;
+    default: return false;
+  }
+}
 
 bool find_step(const ScenarioScript& script, StepPlan& plan) {
   bool found = false;
-  for (const Event& e : script.events) {
+  for (size_t i = 0; i < script.events.size(); ++i) {
+    const Event& e = script.events[i];
     const bool axis = e.action == Action::roll || e.action == Action::pitch;
     if (!axis) continue;
     if (!found && e.value != 0) {
-      plan = {e.action == Action::roll, e.value, e.at_s, kNotMeasured};
+      plan = {e.action == Action::roll, e.value, e.at_s, kNotMeasured, kNotMeasured};
       found = true;
     } else if (found && (e.action == Action::roll) == plan.roll && e.value == 0) {
       plan.release_at_s = e.at_s;
+      // Events are in time order: the first disturbing one at or after the release's time (one
+      // written beside it at the same time counts too) ends the window.
+      for (size_t j = 0; j < script.events.size(); ++j) {
+        const Event& next = script.events[j];
+        if (j != i && next.at_s >= e.at_s && disturbs_attitude(next)) {
+          plan.disturbed_at_s = next.at_s;
+          break;
+        }
+      }
       break;
     }
   }
@@ -90,7 +115,12 @@ void step_figures(const ScenarioScript& script, const FlightRecord& rec, std::ve
       held_from = t_step + kSettleAllowanceS;
       held_to = std::min(t_release, rec.t_end + 1);
       if (t_release <= rec.t_end) {
-        release_settle = recovery_time(between(difference(real, sp), t_release, rec.t_end + 1), t_release, 1.0);
+        // Up to the next event that moves the attitude (or the window's end): a push after the
+        // release is the push's recovery, not the release's settling. A window that next event
+        // leaves empty measures nothing.
+        const double until = std::isnan(plan.disturbed_at_s) ? rec.t_end + 1 : rec.t0 + plan.disturbed_at_s;
+        const Trace after = between(difference(real, sp), t_release, until);
+        release_settle = after.empty() ? kNotMeasured : recovery_time(after, t_release, 1.0);
       }
     }
   }
