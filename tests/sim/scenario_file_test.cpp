@@ -124,6 +124,15 @@ TEST(ScenarioFile, ReadsSeveralParamLinesInOrder) {
   EXPECT_EQ(p.script.parameters[2].second, 150);
 }
 
+// Height hold with the hand still, and again after a lift change once the hand is still again.
+TEST(ScenarioFile, ModeHeightFollowsLiftStill) {
+  const Parsed p = parse(
+      "seconds: 9\nat 0 lift still\nat 0.5 mode height\nat 3 lift 1.05\nat 4 lift still\n"
+      "at 4 mode height\nat 5 roll 5\nat 6 mode full\nband final_mode == full\n");
+  ASSERT_TRUE(p.ok) << p.error;
+  EXPECT_EQ(p.script.events.size(), 7u);
+}
+
 // Every comparison a band may make, and its text back as written.
 TEST(ScenarioFile, ReadsEveryComparison) {
   const Parsed p = parse(
@@ -237,6 +246,12 @@ const Mistake kMistakes[] = {
     {"seconds: 3\nat 0 lift up\n", "mine.txt:2: ", "bad number 'up'"},
     {"seconds: 3\nat 0 lift height\n", "mine.txt:2: ", "bad number 'height'"},
     {"seconds: 3\nat 0 lift 5\n", "mine.txt:2: ", "lift share must be"},
+    // Height hold ends at the lift stick's first change: the pilot's hand must be still first.
+    {"seconds: 3\nat 0.5 mode height\n", "mine.txt:2: ", "add 'at T lift still' before it"},
+    {"seconds: 3\nat 0 lift still\nat 0.2 lift hold\nat 0.5 mode height\n",
+     "mine.txt:4: ", "mode height with the pilot's lift hand moving"},
+    {"seconds: 3\nat 0 lift still\nat 0 lift 1.02\nat 0.5 mode height\n", "mine.txt:4: ", "lift still"},
+    {"seconds: 3\nat 0.5 mode height\nat 0.5 lift still\n", "mine.txt:2: ", "lift still"},
     {"seconds: 3\nstart: sky\n", "mine.txt:2: ", "start: is 'hover', 'ground' or 'safe'"},
     {"seconds: 3\nseconds: 4\n", "mine.txt:2: ", "given twice"},
     {"seconds: 3\nmass: 0\n", "mine.txt:2: ", "outside"},

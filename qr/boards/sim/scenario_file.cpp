@@ -247,6 +247,7 @@ class Reader {
       return true;
     };
     bool ok = false;
+    if (action == "lift") lift_still_ = false;  // any lift event moves the hand, but `lift still` below
     if (action == "roll") {
       ok = one_number(Action::roll, "degrees", 90);
     } else if (action == "pitch") {
@@ -259,6 +260,7 @@ class Reader {
         ok = true;
       } else if (w.size() == 4 && w[3] == "still") {
         e.action = Action::lift_still;
+        lift_still_ = true;
         ok = true;
       } else if (w.size() == 5 && w[3] == "height") {
         e.action = Action::lift_height;
@@ -275,6 +277,14 @@ class Reader {
       e.action = Action::mode;
       if (w.size() != 4) return fail("mode needs one mode key (" + mode_keys() + ")");
       ok = mode_from_key(w[3], e.mode) || fail("unknown mode '" + w[3] + "' (" + mode_keys() + ")");
+      // The firmware leaves height hold as soon as the lift stick moves (SafetyMachine::sticks_moved), and the pilot's
+      // hand moves it every period unless told to stop: the hold would last a few hundredths of a
+      // second with no word of why.
+      if (ok && e.mode == wire::Mode::height_hold && !lift_still_) {
+        ok = fail(
+            "mode height with the pilot's lift hand moving: height hold ends at the lift stick's first "
+            "change; add 'at T lift still' before it");
+      }
     } else if (action == "param") {
       e.action = Action::param;
       if (w.size() != 5) return fail("param needs NAME VALUE");
@@ -348,7 +358,8 @@ class Reader {
   std::vector<std::string> seen_;
   std::vector<std::pair<wire::ParamId, int>> parameter_lines_;  // each param: line's parameter and line
   std::string error_;
-  double turn_until_ = 0;  // when the last turn event ends, after t0
+  double turn_until_ = 0;    // when the last turn event ends, after t0
+  bool lift_still_ = false;  // the last lift event was `lift still`: the stick stays put
   int turn_line_ = 0;
 };
 
