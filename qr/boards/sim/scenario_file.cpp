@@ -277,9 +277,9 @@ class Reader {
       e.action = Action::mode;
       if (w.size() != 4) return fail("mode needs one mode key (" + mode_keys() + ")");
       ok = mode_from_key(w[3], e.mode) || fail("unknown mode '" + w[3] + "' (" + mode_keys() + ")");
-      // The firmware leaves height hold as soon as the lift stick moves (SafetyMachine::sticks_moved), and the pilot's
-      // hand moves it every period unless told to stop: the hold would last a few hundredths of a
-      // second with no word of why.
+      // The firmware leaves height hold as soon as the lift stick moves (SafetyMachine::sticks_moved),
+      // and the pilot's hand moves it every period unless told to stop: the hold would last a few
+      // hundredths of a second with no word of why.
       if (ok && e.mode == wire::Mode::height_hold && !lift_still_) {
         ok = fail(
             "mode height with the pilot's lift hand moving: height hold ends at the lift stick's first "
