@@ -95,7 +95,7 @@ struct Console::Receiver {
   void operator()(const wire::TelemetryLink& m) { console.telemetry_.on(m); }
   void operator()(const wire::TelemetryTask& m) { console.telemetry_.on(m); }
   void operator()(const wire::LogStatus& m) { console.on_log_status(m); }
-  void operator()(const wire::TelemetryHeight& m) { console.telemetry_.on(m); }
+  void operator()(const wire::TelemetryHeight& m) { console.on_height(m); }
   void operator()(const wire::TelemetryRadio& m) { console.telemetry_.on(m); }
   void operator()(const wire::TelemetryRpm& m) { console.telemetry_.on(m); }
   void operator()(const wire::SensorLogPart& part) { console.downloader_.on_part(part, console.now_ms_); }
@@ -587,6 +587,52 @@ void Console::on_attitude(const wire::TelemetryAttitude& attitude) {
       file_failed(files_.telemetry_csv, "telemetry.csv", "telemetry.partial.csv");
     }
   }
+}
+
+namespace {
+
+// The descent warning's log line: what, where, why, and what to do.
+std::string sinking_text(const DescentVerdict& verdict, double height_m, double climb_m_s) {
+  char why[160];
+  if (verdict.danger == DescentDanger::too_fast_low) {
+    std::snprintf(why, sizeof why, "within %.0f m of the ground, faster than a safe touchdown (%.1f m/s)", kNearGroundM,
+                  kSafeTouchdownMS);
+  } else if (std::isinf(verdict.needed_m)) {
+    std::snprintf(why, sizeof why, "the engines have no lift to spare above the hover: it cannot stop");
+  } else {
+    std::snprintf(why, sizeof why, "it needs %.1f m to stop (%.0f s to act, braking at %.1f m/s^2, %.0f m to spare)",
+                  verdict.needed_m, kReactionS, verdict.spare_m_s2, kMarginM);
+  }
+  char line[240];
+  std::snprintf(line, sizeof line, "SINKING %.1f m/s at %.1f m: %s; lift now (PgUp)", -climb_m_s, height_m, why);
+  return line;
+}
+
+}  // namespace
+
+void Console::on_height(const wire::TelemetryHeight& height) {
+  telemetry_.on(height);
+  const bool valid = (height.flags & wire::kHeightValid) != 0;
+  const bool flying = telemetry_.flag(wire::kFlagFlying);
+  const double h = height.height_mm / 1000.0, v = height.climb_mm_s / 1000.0;
+  const DescentVerdict verdict = valid ? judge_descent(h, v, height.hover_lift, flying) : DescentVerdict{};
+  if (verdict.warn) {
+    if (!sinking_) note(Severity::error, sinking_text(verdict, h, v));
+    sinking_ = Sinking{-v, now_ms_};
+    return;
+  }
+  if (!sinking_) return;
+  // Landed ends it at once (the ground has stopped the descent); else it holds a moment.
+  if (!flying || !valid || now_ms_ - sinking_->last_warn_ms >= kSinkingHoldMs) {
+    sinking_.reset();
+  } else {
+    sinking_->speed_m_s = -v;
+  }
+}
+
+std::optional<double> Console::sinking_m_s() const {
+  if (!sinking_ || link_state_ != LinkState::up) return std::nullopt;
+  return sinking_->speed_m_s;
 }
 
 void Console::file_failed(std::ostream*& file, const char* name, const char* partial_name) {

@@ -20,6 +20,7 @@
 #include <pc/core/console_log.hpp>
 #include <pc/core/csv_writer.hpp>
 #include <pc/core/debug_text.hpp>
+#include <pc/core/descent_warning.hpp>
 #include <pc/core/key.hpp>
 #include <pc/core/link_session.hpp>
 #include <pc/core/log_downloader.hpp>
@@ -42,6 +43,10 @@ inline constexpr uint32_t kExitWaitMs = wire::kGiveUpAfterMs + 200;
 // rx.hex grows by some 70 MB an hour of telemetry: past this size it starts again, the part before
 // kept as rx.old.hex, so the disk holds at most twice this and the newest bytes are always there.
 inline constexpr size_t kRxHexPartBytes = 16u << 20;
+
+// The descent warning stays up until its rule has been clear for this long: a climb rate that
+// wavers about the threshold does not make it blink, nor write a log line at each blink.
+inline constexpr uint32_t kSinkingHoldMs = 1000;
 
 // Where the console writes; any may be absent.
 struct ConsoleFiles {
@@ -108,6 +113,9 @@ class Console {
   bool exit_confirmed() const { return exit_confirmed_; }
 
   // --- what the screen shows
+  // The descent warning (descent_warning.hpp) while it stands and the link is up: the descent
+  // speed now, m/s, down.
+  std::optional<double> sinking_m_s() const;
   uint32_t now_ms() const { return now_ms_; }
   uint32_t uptime_ms() const { return now_ms_ - start_ms_; }
   LinkState link_state() const { return link_.state(now_ms_); }
@@ -167,6 +175,7 @@ class Console {
   void on_answer(wire::MessageType type, wire::NackReason reason, const Answer& answer);
   void on_gave_up(const wire::ResendEvent& event);
   void on_attitude(const wire::TelemetryAttitude& attitude);
+  void on_height(const wire::TelemetryHeight& height);
   void on_log_status(const wire::LogStatus& status);
   void on_link_state(LinkState state);
   // A report of the read-back `p` asked for: once all are in, the log says what came back.
@@ -207,6 +216,11 @@ class Console {
   uint32_t exit_started_ms_ = 0;
   bool exit_confirmed_ = false;
   std::optional<wire::Mode> requested_mode_;
+  struct Sinking {
+    double speed_m_s;       // down, the latest report's
+    uint32_t last_warn_ms;  // the last report whose verdict warned
+  };
+  std::optional<Sinking> sinking_;
   uint32_t invalid_frames_ = 0;
   uint32_t unhandled_frames_ = 0;
   std::set<uint8_t> unhandled_types_;

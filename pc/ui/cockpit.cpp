@@ -77,6 +77,15 @@ void Cockpit::draw_mode_and_link(const Console& console, int width) {
   }
   put(1, 20, "LINK", 0, A_BOLD);
   put(1, 25, state == LinkState::up ? "up" : "waiting", state == LinkState::up ? kInfo : kWarning, A_BOLD);
+  // The descent warning takes the link's figures' place: on every screen, beside the mode, where
+  // LINK LOST would be; the figures come back when it ends. A bell when it starts.
+  const std::optional<double> sinking = console.sinking_m_s();
+  if (sinking && !sinking_shown_) bell_ = true;
+  sinking_shown_ = sinking.has_value();
+  if (sinking) {
+    put(1, 34, text(" SINKING %.1f m/s: lift! ", *sinking), kAlarm, A_BOLD);
+    return;
+  }
   const std::string rtt = f.round_trip_ms >= 0 ? text("%d ms", f.round_trip_ms) : std::string(kUnknown);
   put(1, 34, text("%3u frames/s   round trip %-6s  bad %u", f.frames_per_s, rtt.c_str(), c.check_failures));
   (void)width;
@@ -288,7 +297,9 @@ void Cockpit::draw_height(const Console& console, int width) {
   } else if ((t.height->flags & wire::kHeightValid) == 0) {
     put(13, 10, "-- m  (no reference: calibrate)", kDim);  // ends before column 44
   } else {
-    put(13, 10, text("%+7.2f m  climb %+5.2f m/s", t.height->height_mm / 1000.0, t.height->climb_mm_s / 1000.0));
+    const bool sinking = console.sinking_m_s().has_value();
+    put(13, 10, text("%+7.2f m  climb %+5.2f m/s", t.height->height_mm / 1000.0, t.height->climb_mm_s / 1000.0),
+        sinking ? kError : 0, sinking ? A_BOLD : A_NORMAL);
   }
   const bool holding = t.attitude && t.attitude->mode == wire::Mode::height_hold;
   put(13, 44, holding ? " HEIGHT HOLD " : "height hold off (7)", holding ? kWarning : kDim,

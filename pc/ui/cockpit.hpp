@@ -57,7 +57,8 @@ class Cockpit {
   int64_t measured_sample_ms_ = -1;
   std::vector<uint32_t> latencies_ms_;
   LinkState alarmed_ = LinkState::waiting;
-  bool bell_ = false;  // the link was just lost: ring once
+  bool bell_ = false;  // the link was just lost, or the descent warning came up: ring once
+  bool sinking_shown_ = false;
 };
 
 }  // namespace qrterm
