@@ -2,7 +2,9 @@
 # The plot screen in tmux, flying the firmware in qrsim (issue 17): Tab to the plot screen, pick phi
 # and its set-point by name, fly full control, roll right, and read from the captured pane that
 # the phi trace went up (plain characters: the pane runs under the C locale); then ask for more
-# than the line carries and see the QR's refusal with its reason.
+# than the line carries and see the QR's refusal with its reason. In the same flight, on the
+# cockpit: the flying/landed row and the hover lift the QR learnt, Home sending that lift, and the
+# descent warning before the ground.
 set -euo pipefail
 
 qrterm=${1:?usage: e2e_plot.sh QRTERM QRSIM}
@@ -77,11 +79,42 @@ wait_for '4 x 1000 Hz = 4000 samples/s: 12000 of 8370 B/s OVER' 5 "the cost show
 wait_for 'refused: over_budget' 10 "the QR refuses the selection"
 wait_for 'QR refused the stream: the line cannot carry it' 3 "with its reason in the log"
 
+# The hover key and the descent warning, on the cockpit as the pilot sees them (a pilot flying by
+# hand fell at 5.7 m/s into the ground with no warning of any kind): Home sends the hover lift the
+# QR learnt; 100 below it the vehicle sinks, and SINKING comes up beside the mode while the
+# simulator's true height is still well above the ground, with one line in the log; the pilot's
+# PgUp stops the descent and the warning goes.
+keys Tab Tab
+wait_for 'cockpit \(Tab\)' 2 "Tab Tab: the cockpit"
+hover=$(screen | sed -nE 's/.* hover lift ([0-9]+).*/\1/p' | head -1)
+[[ -n $hover ]] || fail "no hover lift on the QR row"
+keys Home
+wait_for "^sending +lift +$hover " 2 "Home: the lift sent is the hover lift the QR learnt, $hover"
+grep -q "the hover lift the QR learnt" "$work/logs/console.log" || fail "Home said nothing in the log"
+keys PgDn
+wait_for 'LINK up +SINKING [0-9.]+ m/s: lift!' 10 "the descent warning, beside the mode"
+warned=$(screen)
+keys PgUp PgUp PgUp
+truth=$(sed -nE 's/.* truth roll .* height ([-0-9.]+) m .*/\1/p' <<<"$warned")
+read -r estimate climb < <(sed -nE 's/^height +([+-][0-9.]+) m +climb +([+-][0-9.]+) m\/s.*/\1 \2/p' <<<"$warned")
+awk -v t="$truth" 'BEGIN { exit !(t > 2.0) }' || fail "SINKING came at a true height of '$truth' m: too late"
+line=$(grep -E 'ERROR: SINKING [0-9.]+ m/s at [-0-9.]+ m: ' "$work/logs/console.log") || fail "no SINKING line in the log"
+echo "e2e: ok: SINKING on the screen at a true height of $truth m (estimate $estimate m, climb $climb m/s);" \
+  "the log: ${line#*ERROR: }"
+# Climbing again, back to the hover (a short landing for the panic below), and the warning goes.
+wait_for '^height +[+-][0-9.]+ m +climb +\+' 5 "PgUp stopped the descent"
+keys Home
+wait_for 'LINK up +[0-9]+ frames/s' 5 "the warning gone, the link's figures back"
+keys Tab
+wait_for 'plot \(Tab\)' 2 "Tab: the plot again"
+
 keys Escape
 wait_for 'MODE +panic ' 3 "ESC aborts from the plot screen"
 # The lift above (54 presses, above the hover command) has been climbing for seconds: the panic
 # lands at its descent rate (panic_descent_mm_s, 0.5 m/s) from there before it settles in safe.
 wait_for 'MODE +safe ' 40 "panic lands and settles in safe"
+# The panic's landing at 0.5 m/s is no danger: still the one SINKING line.
+[[ $(grep -c 'SINKING' "$work/logs/console.log") == 1 ]] || fail "more than one SINKING line: $(grep SINKING "$work/logs/console.log")"
 
 # Every sample went to a CSV with units in the column names.
 csv=$work/logs/observables_1.csv
