@@ -296,4 +296,25 @@ TEST(Qrsim, ScenarioParamOutOfRangeSaysTheRange) {
       << run.out;
 }
 
+// Without --json the notes go to stderr beside the figures, so a clamped stick is not missed.
+TEST(Qrsim, ScenarioNotesGoToStderr) {
+  const std::string path = ::testing::TempDir() + "qrsim_note_scenario.txt";
+  FILE* file = std::fopen(path.c_str(), "w");
+  ASSERT_NE(file, nullptr);
+  std::fputs("seconds: 1\nat 0.5 roll 45\nband final_mode == full\n", file);
+  std::fclose(file);
+  // stderr alone: onto the pipe, stdout (the figures) away.
+  FILE* out = popen((std::string(QRSIM_PATH) + " --scenario " + path + " 2>&1 >/dev/null").c_str(), "r");
+  ASSERT_NE(out, nullptr);
+  QrsimRun stderr_only;
+  char buffer[4096];
+  for (size_t n; (n = fread(buffer, 1, sizeof buffer, out)) > 0;) stderr_only.out.append(buffer, n);
+  pclose(out);
+  EXPECT_NE(stderr_only.out.find(
+                "qrsim: note: at 0.5 s: roll 45 deg asks for more than max_tilt_mrad allows (30 deg): the set-point "
+                "is 30 deg"),
+            std::string::npos)
+      << stderr_only.out;
+}
+
 }  // namespace

@@ -138,4 +138,30 @@ TEST(ScenarioFlights, EngineSaturationCountsAirborneTicksOnly) {
   EXPECT_LT(takeoff.figure("engine_saturation_pct"), 5) << "a gentle take-off and hover saturate no engine";
 }
 
+// A stick event beyond full stick (max_tilt_mrad, the default's 30 deg or one uploaded) is said
+// in the flight's notes and its JSON; the set-point the firmware holds is full stick's.
+TEST(ScenarioFlights, AStickBeyondFullStickIsNoted) {
+  const qrsim::ScenarioResult beyond = fly("seconds: 3\nat 0 roll 45\nband final_mode == full\n");
+  ASSERT_EQ(beyond.notes.size(), 1u);
+  EXPECT_EQ(beyond.notes[0],
+            "at 0 s: roll 45 deg asks for more than max_tilt_mrad allows (30 deg): the set-point is 30 deg");
+  EXPECT_NEAR(beyond.figure("step_setpoint_deg"), 30, 0.1) << "the firmware holds full stick";
+  EXPECT_NE(qrsim::to_json(beyond).find(", \"notes\": [\"at 0 s: roll 45 deg asks"), std::string::npos)
+      << qrsim::to_json(beyond);
+
+  // The max_tilt_mrad uploaded before the flight (698 mrad: 40 deg) and by an event in it.
+  const qrsim::ScenarioResult uploaded = fly(
+      "seconds: 3\nparam: max_tilt_mrad 698\nat 0 pitch -45\nat 1 pitch 35\nat 1.5 param max_tilt_mrad 524\n"
+      "at 2 pitch 35\nband final_mode == full\n");
+  ASSERT_EQ(uploaded.notes.size(), 2u);
+  EXPECT_EQ(uploaded.notes[0],
+            "at 0 s: pitch -45 deg asks for more than max_tilt_mrad allows (40 deg): the set-point is -40 deg");
+  EXPECT_EQ(uploaded.notes[1],
+            "at 2 s: pitch 35 deg asks for more than max_tilt_mrad allows (30 deg): the set-point is 30 deg");
+
+  const qrsim::ScenarioResult within = fly("seconds: 1\nat 0 roll 30\nat 0.5 pitch -20\nband final_mode == full\n");
+  EXPECT_TRUE(within.notes.empty()) << within.notes[0];
+  EXPECT_EQ(qrsim::to_json(within).find("\"notes\""), std::string::npos) << "no notes, no field";
+}
+
 }  // namespace

@@ -311,6 +311,8 @@ int main(int argc, char** argv) {
       if (json) {
         std::printf("%s\n", qrsim::to_json(result).c_str());
       } else {
+        // Beside the figures on stdout: what the flight did otherwise than the file says.
+        for (const std::string& note : result.notes) std::fprintf(stderr, "qrsim: note: %s\n", note.c_str());
         std::printf("scenario %s on %s: %s\n", result.scenario.c_str(), result.vehicle.c_str(),
                     result.pass ? "PASS" : "FAIL");
         if (!result.error.empty()) std::printf("  error: %s\n", result.error.c_str());

@@ -98,6 +98,22 @@ sim::VehicleParams vehicle_for(const ScenarioScript& script, const RunOptions& o
   return v;
 }
 
+// A roll or pitch event beyond full stick: the pilot's stick stops at full (Hands::sticks), so the
+// firmware holds max_tilt_mrad, not the angle the file asks for. Said rather than clamped in
+// silence; empty when the stick reaches the angle. `uploaded`: the parameters the pilot has
+// uploaded so far over the defaults, the max_tilt_mrad in effect.
+std::string beyond_full_stick(const Event& e, const wire::ParameterValues& uploaded) {
+  if (e.action != Action::roll && e.action != Action::pitch) return {};
+  const double full_deg = uploaded.get(wire::ParamId::max_tilt_mrad) * 1e-3 * kDeg;
+  if (std::abs(e.value) <= full_deg) return {};
+  char text[192];
+  std::snprintf(text, sizeof text,
+                "at %g s: %s %g deg asks for more than max_tilt_mrad allows (%.3g deg): the set-point is %.3g deg",
+                e.at_s, e.action == Action::roll ? "roll" : "pitch", e.value, full_deg,
+                std::copysign(full_deg, e.value));
+  return text;
+}
+
 // The pushes (torque, force events) acting at `since`, summed.
 void apply_pushes(const ScenarioScript& script, double since, sim::Quadrotor& plant) {
   sim::Vec3 torque, force;
@@ -391,6 +407,11 @@ ScenarioResult run_scenario(const ScenarioScript& script, const RunOptions& opti
   FILE* trace = options.trace_path.empty() ? nullptr : std::fopen(options.trace_path.c_str(), "w");
   if (trace != nullptr) write_trace_header(trace);
   const auto idle = static_cast<uint16_t>(qr->parameters().get(wire::ParamId::idle_level));
+  // The parameters as the pilot uploads them, over the defaults: the scenario's, --param, then the
+  // param events as they come (for the notes on what a stick event can ask for).
+  wire::ParameterValues uploaded;
+  for (const auto& [id, raw] : script.parameters) uploaded.set(static_cast<uint8_t>(id), raw);
+  for (const auto& [id, raw] : options.parameters) uploaded.set(static_cast<uint8_t>(id), raw);
 
   for (;;) {
     const double t = static_cast<double>(qr->world().now_us()) * 1e-6;
@@ -463,6 +484,8 @@ ScenarioResult run_scenario(const ScenarioScript& script, const RunOptions& opti
       while (next_event < script.events.size() && script.events[next_event].at_s <= since + 1e-9) {
         const Event& e = script.events[next_event++];
         apply(e, hands, pilot, console.get(), plant);
+        if (e.action == Action::param) uploaded.set(static_cast<uint8_t>(e.param), e.raw);
+        if (std::string note = beyond_full_stick(e, uploaded); !note.empty()) result.notes.push_back(std::move(note));
         const std::string refused = e.action == Action::turn ? qr->world().start_hand_turn(e.turn) : "";
         if (!refused.empty()) {
           result.error = script.origin + ":" + std::to_string(e.line) + ": the turn was refused: " + refused;

@@ -67,6 +67,9 @@ struct ScenarioResult {
   std::string known_failure;    // the scenario's, copied
   std::vector<Figure> figures;  // in print order
   std::vector<CheckResult> checks;
+  // What the flight did otherwise than the file says, for the user to know (a stick beyond full
+  // stick, clamped): "at 2 s: roll 45 deg asks for more than max_tilt_mrad allows (30 deg): ...".
+  std::vector<std::string> notes;
   bool pass = false;
 
   double figure(const std::string& name) const;

@@ -39,6 +39,11 @@ std::string to_json(const ScenarioResult& r) {
   }
   if (!r.error.empty()) out += ", \"error\": " + quoted(r.error);
   if (!r.known_failure.empty()) out += ", \"known_failure\": " + quoted(r.known_failure);
+  if (!r.notes.empty()) {
+    out += ", \"notes\": [";
+    for (size_t i = 0; i < r.notes.size(); ++i) out += (i == 0 ? "" : ", ") + quoted(r.notes[i]);
+    out += "]";
+  }
   out += ", \"bands\": {";
   for (size_t i = 0; i < r.checks.size(); ++i) {
     out += (i == 0 ? "" : ", ") + quoted(r.checks[i].band) + ": " + (r.checks[i].pass ? "true" : "false");
