@@ -56,7 +56,12 @@ std::string parameters_markdown() {
       "gives ae²/1000 ([signal-chain.md](signal-chain.md), engine mapping). `attitude_c1` and\n"
       "`attitude_c2` are the divisors of the attitude estimator, a complementary filter (not a Kalman\n"
       "filter): the angle follows the accelerometer with a time constant of C1 samples, and the gyro\n"
-      "bias loop is critically damped at C2 = 4 C1².\n";
+      "bias loop is critically damped at C2 = 4 C1².\n"
+      "\n"
+      "Angles are in mrad (1000 mrad = 57.3 deg); the console's parameter screen shows each beside its value in\n"
+      "degrees. Full roll or pitch stick in full control and height hold asks for `max_tilt_mrad` as the angle\n"
+      "set-point, a stick half way for half of it: at most 698 mrad, 40 deg. `tilt_limit_mrad` is no stick's\n"
+      "angle but the tilt beyond which the QR panics (785 mrad, 45 deg, by default).\n";
   return text;
 }
 

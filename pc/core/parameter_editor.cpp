@@ -17,6 +17,40 @@ constexpr const char* kStatusNames[] = {"pending", "read back", "differs", "no r
 
 const char* status_name(ParamStatus status) { return kStatusNames[static_cast<size_t>(status)]; }
 
+std::optional<double> degrees_of(const wire::ParameterSpec& spec, int32_t raw) {
+  if (std::string(spec.unit) != "mrad") return std::nullopt;
+  constexpr double kDegPerRad = 57.29577951308232;
+  return raw / 1000.0 * kDegPerRad;
+}
+
+std::string name_and_value(const wire::ParameterSpec& spec, int32_t raw, size_t width) {
+  const std::string name = spec.name;
+  const std::string value = format_real(spec, raw);
+  std::string angle;
+  if (const std::optional<double> degrees = degrees_of(spec, raw)) {
+    // One decimal where it fits, else whole degrees, else none: the value's column is what must stay.
+    char text[32];
+    for (const char* format : {"(%.1f deg) ", "(%.0f deg) "}) {
+      std::snprintf(text, sizeof text, format, *degrees);
+      if (name.size() + 1 + std::string(text).size() + value.size() <= width) {
+        angle = text;
+        break;
+      }
+    }
+  }
+  const std::string right = angle + value;
+  if (name.size() + 1 + right.size() > width) return (name + " " + right).substr(0, width);
+  return name + std::string(width - name.size() - right.size(), ' ') + right;
+}
+
+std::string unit_with_degrees(const wire::ParameterSpec& spec, int32_t raw) {
+  const std::optional<double> degrees = degrees_of(spec, raw);
+  if (!degrees) return spec.unit;
+  char text[48];
+  std::snprintf(text, sizeof text, "%s, now %.1f deg", spec.unit, *degrees);
+  return text;
+}
+
 void ParameterEditor::move(int rows) {
   const long next = static_cast<long>(cursor_) + rows;
   cursor_ = static_cast<size_t>(std::clamp<long>(next, 0, static_cast<long>(wire::kParameterCount) - 1));
@@ -51,9 +85,16 @@ std::string ParameterEditor::set_typed(ParameterSync& sync, const std::string& t
   const wire::ParameterSpec& spec = selected();
   int64_t raw = 0;
   if (!parse_real(spec, text, raw)) return "\"" + text + "\" is not a number";
-  if (raw < spec.min || raw > spec.max)
-    return std::string(spec.name) + " = " + text + " is outside " + format_real(spec, spec.min) + " .. " +
-           format_real(spec, spec.max) + " " + spec.unit;
+  if (raw < spec.min || raw > spec.max) {
+    std::string range = format_real(spec, spec.min) + " .. " + format_real(spec, spec.max) + " " + spec.unit;
+    if (degrees_of(spec, spec.min)) {
+      char degrees[48];
+      std::snprintf(degrees, sizeof degrees, " (%.1f .. %.1f deg)", *degrees_of(spec, spec.min),
+                    *degrees_of(spec, spec.max));
+      range += degrees;
+    }
+    return std::string(spec.name) + " = " + text + " is outside " + range;
+  }
   sync.set(spec.id, static_cast<int32_t>(raw));
   return "";
 }

@@ -25,6 +25,19 @@ enum class ParamStatus : uint8_t {
 
 const char* status_name(ParamStatus status);
 
+// An angle parameter (unit mrad) in degrees; nothing for any other. A pilot thinks in degrees: one
+// who wanted a 45 deg stick found that full stick asks for max_tilt_mrad, at most 698 mrad, 40 deg.
+std::optional<double> degrees_of(const wire::ParameterSpec& spec, int32_t raw);
+
+// A row's name and value columns in `width` characters: the name at the left, the value at the
+// right (so the values line up), and an angle's degrees just left of its value, where they fit:
+// "max_tilt_mrad (30.0 deg)  524".
+std::string name_and_value(const wire::ParameterSpec& spec, int32_t raw, size_t width);
+
+// The unit as the selected row's meaning line names it: "mrad", or for an angle with the value in
+// degrees, "mrad, now 30.0 deg".
+std::string unit_with_degrees(const wire::ParameterSpec& spec, int32_t raw);
+
 class ParameterEditor {
  public:
   explicit ParameterEditor(const wire::ParameterValues& file_values, std::string file_name)

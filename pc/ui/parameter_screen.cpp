@@ -29,8 +29,9 @@ void draw_parameter_screen(const Console& console, int top, int rows, int width)
     const std::string qr = status_name(status);
     const std::optional<int32_t> in_file = editor.file_difference(sync, spec.id);
     const std::string range = format_real(spec, spec.min) + ".." + format_real(spec, spec.max);
-    const std::string line = text("%-19.19s %10.10s %-10.10s %-15.15s %10.10s %10.10s", spec.name,
-                                  format_real(spec, wanted).c_str(), qr.c_str(), range.c_str(),
+    // Name and value share their 30 columns: an angle's degrees go between them.
+    const std::string line = text("%-30.30s %-10.10s %-15.15s %10.10s %10.10s",
+                                  name_and_value(spec, wanted, 30).c_str(), qr.c_str(), range.c_str(),
                                   format_real(spec, spec.default_value).c_str(),
                                   in_file ? format_real(spec, *in_file).c_str() : "");
     const short color = status == ParamStatus::pending   ? kWarning
@@ -41,7 +42,8 @@ void draw_parameter_screen(const Console& console, int top, int rows, int width)
   }
   // The selected parameter's unit and meaning, on up to two rows.
   const wire::ParameterSpec& selected = editor.selected();
-  std::string meaning = std::string(selected.name) + " [" + selected.unit + "]: " + selected.meaning;
+  std::string meaning = std::string(selected.name) + " [" +
+                        unit_with_degrees(selected, sync.wanted().get(selected.id)) + "]: " + selected.meaning;
   if (editor.status(sync, selected.id) == ParamStatus::differs)
     meaning = "QR reports " + format_real(selected, *sync.reported(selected.id)) + "; " + meaning;
   const int meaning_row = list_top + list_rows;
