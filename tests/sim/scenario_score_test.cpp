@@ -157,6 +157,55 @@ TEST(ScenarioScore, RestedAboveThresholdJudgesABatteryPanicOnly) {
   EXPECT_TRUE(std::isnan(judged(true, "", 11.2))) << "a panic whose cause was not heard is not measured";
 }
 
+// A push from 1.0 s to 1.2 s: the truth's error is 5° until 1.5 s, the roll estimate 2° off the
+// truth until 1.6 s and the pitch estimate 1.5° off from 1.6 s to 1.8 s. recovery_s counts from
+// the push's start, push_end_recovery_s from its end; est_recovery_s waits for both axes.
+TEST(ScenarioScore, RecoveriesFromThePushEnd) {
+  Flight f;
+  std::string error;
+  ASSERT_TRUE(qrsim::parse_scenario("seconds: 3\nat 1 torque 0.5 0 0 for 0.2\nband recovery_s < 1\n", "push", "push",
+                                    f.script, error))
+      << error;
+  qrsim::FlightRecord& r = f.rec;
+  r.t0 = 0;
+  r.t_end = 3;
+  for (int k = 0; k <= 3000; ++k) {
+    const double t = k * 1e-3;
+    const double err = t >= 1.0 && t < 1.5 ? 5 : 0.2;
+    const double roll_off = t >= 1.0 && t < 1.6 ? 2 : 0.5;
+    const double pitch_off = t >= 1.6 && t < 1.8 ? -1.5 : -0.5;
+    r.worst_err.push_back({t, err});
+    r.att_err.push_back({t, err / std::sqrt(2.0)});
+    r.roll_true.push_back({t, err});
+    r.pitch_true.push_back({t, 0});
+    r.roll_est.push_back({t, err + roll_off});
+    r.pitch_est.push_back({t, pitch_off});
+  }
+  std::vector<qrsim::Figure> out;
+  qrsim::add_flight_figures(f.script, r, {}, out);
+  EXPECT_NEAR(figure(out, "recovery_s"), 0.5, 1e-9);
+  EXPECT_NEAR(figure(out, "push_end_recovery_s"), 0.3, 1e-9);
+  EXPECT_NEAR(figure(out, "est_recovery_s"), 0.6, 1e-9) << "the pitch estimate is off until 1.8 s";
+
+  // A push that ends after the window has no recovery from its end.
+  ASSERT_TRUE(qrsim::parse_scenario("seconds: 3\nat 2.5 force 0 2 0 for 1\nband recovery_s < 1\n", "late", "late",
+                                    f.script, error))
+      << error;
+  out.clear();
+  qrsim::add_flight_figures(f.script, r, {}, out);
+  EXPECT_TRUE(std::isnan(figure(out, "push_end_recovery_s")));
+  EXPECT_TRUE(std::isnan(figure(out, "est_recovery_s")));
+
+  // No push: no push figures at all (a band on one fails, as on a null).
+  ASSERT_TRUE(qrsim::parse_scenario("seconds: 3\nband recovery_s < 1\n", "calm", "calm", f.script, error)) << error;
+  out.clear();
+  qrsim::add_flight_figures(f.script, r, {}, out);
+  for (const qrsim::Figure& fig : out) {
+    EXPECT_NE(fig.name, "push_end_recovery_s");
+    EXPECT_NE(fig.name, "est_recovery_s");
+  }
+}
+
 TEST(ScenarioScore, BandsJudgeTheirFigure) {
   qrsim::ScenarioScript script;
   std::string error;

@@ -82,6 +82,15 @@ Trace difference(const Trace& a, const Trace& b) {
   return out;
 }
 
+// max(|a|, |b|) sample by sample: both axes within a band when this is.
+Trace larger_magnitude(const Trace& a, const Trace& b) {
+  Trace out;
+  for (size_t i = 0; i < a.size() && i < b.size(); ++i) {
+    out.push_back({a[i].t, std::max(std::abs(a[i].value), std::abs(b[i].value))});
+  }
+  return out;
+}
+
 void step_figures(const ScenarioScript& script, const FlightRecord& rec, std::vector<Figure>& f, double& held_from,
                   double& held_to) {
   StepFigures truth, estimate;
@@ -188,6 +197,22 @@ void add_flight_figures(const ScenarioScript& script, const FlightRecord& rec, c
     f.push_back({"peak_error_deg", peak_abs(rec.att_err, t_push, t_end) * std::sqrt(2.0)});
     f.push_back({"recovery_s", recovery_time(between(rec.worst_err, t_push, t_end + 1), t_push, 1.0)});
     f.push_back({"recovery_2deg_s", recovery_time(between(rec.worst_err, t_push, t_end + 1), t_push, 2.0)});
+    // From the push's end: recovery_s counts the time the push was still pushing, which a longer
+    // push lengthens whatever the loops do; these count only what the loops take once it stops.
+    // The estimate is judged on every tick as the truth is (not only where the attitude loops fly:
+    // a panic after the push must not cut its trace short), on both axes.
+    const double t_push_end = t_push + push->duration_s;
+    double push_end_recovery = kNotMeasured, est_recovery = kNotMeasured;
+    if (t_push_end <= t_end) {
+      const Trace truth_after = between(rec.worst_err, t_push_end, t_end + 1);
+      const Trace est_after = between(
+          larger_magnitude(difference(rec.roll_est, rec.roll_true), difference(rec.pitch_est, rec.pitch_true)),
+          t_push_end, t_end + 1);
+      if (!truth_after.empty()) push_end_recovery = recovery_time(truth_after, t_push_end, 1.0);
+      if (!est_after.empty()) est_recovery = recovery_time(est_after, t_push_end, 1.0);
+    }
+    f.push_back({"push_end_recovery_s", push_end_recovery});
+    f.push_back({"est_recovery_s", est_recovery});
   }
 
   f.push_back({"entered_panic", rec.entered_panic ? 1.0 : 0.0});
