@@ -75,17 +75,22 @@ TEST(GyroClip, ClipsBothWaysAreTwoRuns) {
   EXPECT_EQ(got[0], -got[1]);
 }
 
-// A spin that stays clipped is measured as kMaxRun samples and a peak of one full scale above:
-// bounded, whatever the run's length.
-TEST(GyroClip, ALongRunIsBounded) {
-  std::vector<int16_t> s;
-  for (int i = 0; i < 8; ++i) s.push_back(static_cast<int16_t>(4000 * i));
-  for (int i = 0; i < 5000; ++i) s.push_back(32767);
-  for (int i = 0; i < 8; ++i) s.push_back(static_cast<int16_t>(28000 - 4000 * i));
-  const std::vector<int32_t> got = areas(s);
-  ASSERT_EQ(got.size(), 1u);
-  EXPECT_LE(got[0], ClipBridge::kMaxRun * kFs / 2);
-  EXPECT_GT(got[0], 0);
+// A spin that stays clipped longer than kMaxRun is no triangle: the bridge adds nothing for it,
+// however long; a run of kMaxRun samples still counts.
+TEST(GyroClip, ASpinAddsNothing) {
+  auto run = [](int32_t clipped) {
+    std::vector<int16_t> s;
+    for (int i = 0; i < 8; ++i) s.push_back(static_cast<int16_t>(4000 * i));
+    for (int i = 0; i < clipped; ++i) s.push_back(32767);
+    for (int i = 0; i < 8; ++i) s.push_back(static_cast<int16_t>(28000 - 4000 * i));
+    return areas(s);
+  };
+  EXPECT_TRUE(run(ClipBridge::kMaxRun + 1).empty());
+  EXPECT_TRUE(run(5000).empty());
+  const std::vector<int32_t> longest = run(ClipBridge::kMaxRun);
+  ASSERT_EQ(longest.size(), 1u);
+  EXPECT_GT(longest[0], 0);
+  EXPECT_LE(longest[0], ClipBridge::kMaxRun * kFs / 2);
 }
 
 }  // namespace
