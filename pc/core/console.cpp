@@ -592,7 +592,7 @@ void Console::on_attitude(const wire::TelemetryAttitude& attitude) {
 namespace {
 
 // The descent warning's log line: what, where, why, and what to do.
-std::string sinking_text(const DescentVerdict& verdict, double height_m, double climb_m_s) {
+std::string sinking_text(const DescentVerdict& verdict, double height_m, double climb_m_s, const char* advice) {
   char why[160];
   if (verdict.danger == DescentDanger::too_fast_low) {
     std::snprintf(why, sizeof why, "within %.0f m of the ground, faster than a safe touchdown (%.1f m/s)", kNearGroundM,
@@ -604,7 +604,7 @@ std::string sinking_text(const DescentVerdict& verdict, double height_m, double 
                   verdict.needed_m, kReactionS, verdict.spare_m_s2, kMarginM);
   }
   char line[240];
-  std::snprintf(line, sizeof line, "SINKING %.1f m/s at %.1f m: %s; lift now (PgUp)", -climb_m_s, height_m, why);
+  std::snprintf(line, sizeof line, "SINKING %.1f m/s at %.1f m: %s; %s", -climb_m_s, height_m, why, advice);
   return line;
 }
 
@@ -617,7 +617,15 @@ void Console::on_height(const wire::TelemetryHeight& height) {
   const double h = height.height_mm / 1000.0, v = height.climb_mm_s / 1000.0;
   const DescentVerdict verdict = valid ? judge_descent(h, v, height.hover_lift, flying) : DescentVerdict{};
   if (verdict.warn) {
-    if (!sinking_) note(Severity::error, sinking_text(verdict, h, v));
+    if (!sinking_) {
+      // What the pilot can do: the console's lift keys, unless the QR ignores them (panic) or
+      // flies a real radio's sticks (the simulator's radio takes the console's).
+      const bool radio_flies = telemetry_.radio && (telemetry_.radio->flags & wire::kRadioPilot) != 0;
+      const char* advice = sinking_in_panic() ? "the QR is in panic: the sticks do nothing, it comes down by itself"
+                           : radio_flies && !simulator_ ? "lift now, on the radio's throttle"
+                                                        : "lift now (PgUp)";
+      note(Severity::error, sinking_text(verdict, h, v, advice));
+    }
     sinking_ = Sinking{-v, now_ms_};
     return;
   }
@@ -629,6 +637,8 @@ void Console::on_height(const wire::TelemetryHeight& height) {
     sinking_->speed_m_s = -v;
   }
 }
+
+bool Console::sinking_in_panic() const { return telemetry_.attitude && telemetry_.attitude->mode == wire::Mode::panic; }
 
 std::optional<double> Console::sinking_m_s() const {
   if (!sinking_ || link_state_ != LinkState::up) return std::nullopt;

@@ -116,6 +116,8 @@ class Console {
   // The descent warning (descent_warning.hpp) while it stands and the link is up: the descent
   // speed now, m/s, down.
   std::optional<double> sinking_m_s() const;
+  // The QR is in panic: the sticks do nothing, so the warning asks for no lift.
+  bool sinking_in_panic() const;
   uint32_t now_ms() const { return now_ms_; }
   uint32_t uptime_ms() const { return now_ms_ - start_ms_; }
   LinkState link_state() const { return link_.state(now_ms_); }

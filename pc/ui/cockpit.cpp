@@ -83,7 +83,8 @@ void Cockpit::draw_mode_and_link(const Console& console, int width) {
   if (sinking && !sinking_shown_) bell_ = true;
   sinking_shown_ = sinking.has_value();
   if (sinking) {
-    put(1, 34, text(" SINKING %.1f m/s: lift! ", *sinking), kAlarm, A_BOLD);
+    put(1, 34, text(console.sinking_in_panic() ? " SINKING %.1f m/s (panic) " : " SINKING %.1f m/s: lift! ", *sinking),
+        kAlarm, A_BOLD);
     return;
   }
   const std::string rtt = f.round_trip_ms >= 0 ? text("%d ms", f.round_trip_ms) : std::string(kUnknown);

@@ -171,6 +171,31 @@ TEST(DescentWarning, LandedEndsItAtOnce) {
   EXPECT_FALSE(b.console.sinking_m_s());
 }
 
+// The advice is what the pilot can do: in panic nothing (the QR ignores the sticks); with a real
+// radio flying, its throttle, not the console's keys.
+TEST(DescentWarning, InPanicItAsksForNoLift) {
+  Bench b;
+  flying_full_control(b);
+  b.key(qrterm::kKeyEscape);
+  ASSERT_TRUE(b.run_until([&] { return b.console.sinking_in_panic(); }, 200));
+  b.qr.height = wire::TelemetryHeight{3000, -4000, wire::kHeightValid, kHover};
+  b.run(100);
+  ASSERT_TRUE(b.console.sinking_m_s());
+  EXPECT_TRUE(b.logged("; the QR is in panic: the sticks do nothing, it comes down by itself"));
+  EXPECT_FALSE(b.logged("PgUp"));
+}
+
+TEST(DescentWarning, WithARealRadioFlyingItNamesTheRadiosThrottle) {
+  Bench b;
+  flying_full_control(b);
+  const wire::FrameBytes radio = wire::encode(wire::TelemetryRadio{wire::kRadioPilot | wire::kRadioLinkUp, 60, 100});
+  b.console.receive(radio.bytes, radio.size, b.now);
+  b.qr.height = wire::TelemetryHeight{3000, -4000, wire::kHeightValid, kHover};
+  b.run(100);
+  ASSERT_TRUE(b.console.sinking_m_s());
+  EXPECT_TRUE(b.logged("; lift now, on the radio's throttle"));
+}
+
 TEST(DescentWarning, NoWarningOnTheGroundWithoutAHeightReferenceOrWithoutTheLink) {
   Bench b;
   flying_full_control(b);
