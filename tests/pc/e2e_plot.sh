@@ -101,8 +101,18 @@ awk -v t="$truth" 'BEGIN { exit !(t > 2.0) }' || fail "SINKING came at a true he
 line=$(grep -E 'ERROR: SINKING [0-9.]+ m/s at [-0-9.]+ m: ' "$work/logs/console.log") || fail "no SINKING line in the log"
 echo "e2e: ok: SINKING on the screen at a true height of $truth m (estimate $estimate m, climb $climb m/s);" \
   "the log: ${line#*ERROR: }"
-# Climbing again, back to the hover (a short landing for the panic below), and the warning goes.
-wait_for '^height +[+-][0-9.]+ m +climb +\+' 5 "PgUp stopped the descent"
+# PgUp stops the descent in the air: the lowest true height on the screen until it climbs again.
+lowest=$truth
+deadline=$((SECONDS + 5))
+until screen | grep -Eq '^height +[+-][0-9.]+ m +climb +\+'; do
+  ((SECONDS <= deadline)) || fail "PgUp did not stop the descent within 5 s"
+  now=$(screen | sed -nE 's/.* truth roll .* height ([-0-9.]+) m .*/\1/p')
+  [[ -n $now ]] && lowest=$(awk -v a="$lowest" -v b="$now" 'BEGIN { print (b < a ? b : a) }')
+  sleep 0.05
+done
+awk -v l="$lowest" 'BEGIN { exit !(l > 0.5) }' || fail "after the warning the vehicle came down to $lowest m"
+echo "e2e: ok: PgUp stopped the descent at a true height of $lowest m"
+# Back to the hover (a short landing for the panic below), and the warning goes.
 keys Home
 wait_for 'LINK up +[0-9]+ frames/s' 5 "the warning gone, the link's figures back"
 keys Tab
