@@ -33,7 +33,7 @@ namespace qr::chain {
 
 class ClipBridge {
  public:
-  static constexpr int32_t kSlopeSamples = 4;
+  static constexpr int32_t kSlopeSamples = 4;  // a power of two: the history is a ring
   static constexpr int32_t kMaxRun = 100;
   static constexpr int32_t kFullScale = 32767;
 
@@ -41,18 +41,18 @@ class ClipBridge {
   // measured, else 0.
   int32_t update(int16_t counts) {
     const int32_t c = counts;
-    const int32_t sign = c >= kFullScale ? 1 : c <= -kFullScale ? -1 : 0;
-    if (sign != 0) {
+    const int32_t oldest = history_[next_];  // kSlopeSamples samples before this one
+    history_[next_] = c;
+    next_ = (next_ + 1) & (kSlopeSamples - 1);
+    if (c >= kFullScale || c <= -kFullScale) {
       if (run_ == 0) {
-        sign_ = sign;
-        rise_ = sign * (c - history_[0]);  // over kSlopeSamples samples, towards the clip
+        sign_ = c > 0 ? 1 : -1;
+        rise_ = sign_ * (c - oldest);  // over kSlopeSamples samples, towards the clip
       }
       if (run_ <= kMaxRun) ++run_;
       after_ = 0;
-      push(c);
       return 0;
     }
-    push(c);
     if (run_ == 0 || ++after_ < kSlopeSamples) return 0;
     const int32_t fall = sign_ * (sign_ * kFullScale - c);  // over kSlopeSamples samples, away from it
     const int32_t area = run_ > kMaxRun ? 0 : sign_ * triangle(run_, rise_, fall);
@@ -72,12 +72,8 @@ class ClipBridge {
     const uint32_t capped = peak < static_cast<uint32_t>(kFullScale) ? peak : static_cast<uint32_t>(kFullScale);
     return static_cast<int32_t>(static_cast<uint32_t>(n) * capped / 2);  // < 2^7 x 2^15
   }
-  void push(int32_t c) {
-    for (int32_t i = 0; i < kSlopeSamples - 1; ++i) history_[i] = history_[i + 1];
-    history_[kSlopeSamples - 1] = c;
-  }
-
-  int32_t history_[kSlopeSamples] = {};  // the last samples, oldest first
+  int32_t history_[kSlopeSamples] = {};  // the last samples, a ring
+  int32_t next_ = 0;                     // where the next goes (the oldest is there)
   int32_t run_ = 0;                      // clipped samples in this run
   int32_t after_ = 0;                    // unclipped samples since it ended
   int32_t rise_ = 0;
