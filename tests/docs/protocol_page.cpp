@@ -40,7 +40,7 @@ void consume(std::string& text, const std::regex& pattern, Take&& take) {
 // reader does not understand, and so one nothing would check: the row fails instead.
 bool leftover_range(const std::string& rest, std::string& what) {
   static const std::regex kLimit(
-      R"((\.\.|≤|≥|<|>|\bbits?\b|\bsaturated at\b|\bat (most|least)\b|\bbetween\b|\bno (more|less) than\b|\bor (more|less)\b))");
+      R"((\.\.|≤|≥|<|>|\bbits?\b|\branges?\b|\bsaturated at\b|\bat (most|least)\b|\bbetween\b|\bno (more|less) than\b|\bor (more|less)\b))");
   std::smatch m;
   if (!std::regex_search(rest, m, kLimit)) return false;
   what = m[0].str();
@@ -58,6 +58,8 @@ Range read_range(const std::string& cell, const std::string& own_name, int line,
   consume(text, std::regex(R"(\ba client takes any number\b)"), [&](const std::smatch&) { r.sender_only = true; });
   consume(text, std::regex("`0x00` only as padding"), [&](const std::smatch&) { r.nul_padding = true; });
   consume(text, std::regex(R"(\ban acked type\b)"), [&](const std::smatch&) { r.acked_type = true; });
+  consume(text, std::regex(R"(\bwithin the parameter's range\b)"),
+          [&](const std::smatch&) { r.parameter_range = true; });
   consume(text, std::regex(R"(\bas (?:in )?([a-z]+_[a-z_]+)\b)"),
           [&](const std::smatch& m) { r.same_as = m[1].str(); });
   // "0..4 (sensor), 0..6 (telemetry)": a table two messages share.
@@ -163,7 +165,7 @@ std::string Scalar::name() const { return (is_signed ? "i" : "u") + std::to_stri
 
 bool Range::states_a_range() const {
   return min || max || !for_message.empty() || bits || !below.empty() || !at_most.empty() || acked_type ||
-         nul_padding || counter;
+         nul_padding || counter || parameter_range;
 }
 
 std::string Range::describe() const {
@@ -182,6 +184,7 @@ std::string Range::describe() const {
   if (acked_type) add("an acked type");
   if (nul_padding) add("0x00 only as padding");
   if (counter) add("+1 per frame");
+  if (parameter_range) add("within the parameter's range");
   if (!same_as.empty()) add("as " + same_as);
   if (sender_only) add("the sender's promise, no decoding rule");
   return d.empty() ? "no range" : d;
@@ -374,7 +377,7 @@ std::vector<long long> values_of(const Field& field, const uint8_t* bytes, size_
 }
 
 std::vector<Violation> check(const Page& page, const Table& table, const std::string& message, const uint8_t* bytes,
-                             size_t length, bool decoding_rules_only) {
+                             size_t length, bool decoding_rules_only, ParameterRange parameter_ok) {
   std::vector<Violation> out;
   const std::string prefix = (message.empty() ? table.record : message) + ".";
   const auto first_value = [&](const std::string& name, long long& v) {
@@ -417,6 +420,8 @@ std::vector<Violation> check(const Page& page, const Table& table, const std::st
         const MessageRow* m = v >= 0 && v <= 255 ? page.message(static_cast<uint8_t>(v)) : nullptr;
         if (m == nullptr || !m->acked) broken(r.describe());
       }
+      if (r.parameter_range && parameter_ok != nullptr && first_value("id", other) && !parameter_ok(other, v))
+        broken(r.describe());
       if (r.nul_padding) {
         if (v == 0) padding = true;
         else if (padding) broken(r.describe());

@@ -37,6 +37,9 @@ struct Range {
   // "+1 per attitude frame (wraps)": one more than the frame before (a sender's promise, checked
   // across frames, not by check()).
   bool counter = false;
+  // "within the parameter's range": the min..max parameters.md gives the parameter the row's
+  // message names in its id field.
+  bool parameter_range = false;
   std::string same_as;  // "as telemetry_attitude": that message's field of the same name
   // "other bits 0 (ignore them)", "a client takes any number": what the QR sends, no decoding rule.
   bool sender_only = false;
@@ -112,7 +115,10 @@ std::vector<long long> values_of(const Field& field, const uint8_t* bytes, size_
 // Checks one payload (or a log record's flat bytes) of `table` against every row's range.
 // `message` names the message it came as (for "0..4 (sensor)"), or the record. With
 // `decoding_rules_only`, sender-only promises are skipped: what a decoder may refuse.
+// Whether `value` is within parameter `id`'s range (parameters.md); none: not judged.
+using ParameterRange = bool (*)(long long id, long long value);
+
 std::vector<Violation> check(const Page& page, const Table& table, const std::string& message, const uint8_t* bytes,
-                             size_t length, bool decoding_rules_only = false);
+                             size_t length, bool decoding_rules_only = false, ParameterRange parameter_ok = nullptr);
 
 }  // namespace protocol_page
