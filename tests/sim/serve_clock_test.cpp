@@ -48,6 +48,46 @@ TEST(ServeClock, ALateWorldCatchesUpAtMostTwiceAsFast) {
   EXPECT_EQ(clock.timing().pauses, 0u);
 }
 
+// The catch-up's pace is counted from where the world fell behind, not kick by kick: a kick the
+// host took late meanwhile (a sleep that overslept, a slow devboard round trip) is made up by the
+// next ones at once, as far as twice the wall clock since the world fell behind allows.
+TEST(ServeClock, AKickTakenLateWhileCatchingUpIsMadeUp) {
+  qrsim::ServeClock clock(kPeriod);
+  clock.start(0, 0);
+  ASSERT_EQ(clock.begin(1000, 11000), 0u);  // 10 ms behind from here: 20 kicks in 10 ms to catch up
+  EXPECT_EQ(clock.due_us(2000), 11500u);
+  ASSERT_EQ(clock.begin(2000, 13000), 0u);  // 1.5 ms late
+  EXPECT_EQ(clock.due_us(3000), 12000u) << "due already: taken at once";
+  ASSERT_EQ(clock.begin(3000, 13000), 0u);
+  EXPECT_EQ(clock.due_us(4000), 12500u);
+  ASSERT_EQ(clock.begin(4000, 13000), 0u);
+  EXPECT_EQ(clock.due_us(5000), 13000u);
+  ASSERT_EQ(clock.begin(5000, 13000), 0u);
+  EXPECT_EQ(clock.due_us(6000), 13500u) << "back on the line of twice the wall clock, and no further";
+}
+
+// Once on time again, a later lag is caught up at the same pace from where that one began (not
+// from the first, long ago, which would let it run back to back).
+TEST(ServeClock, EveryLagIsCaughtUpAtTheSamePace) {
+  qrsim::ServeClock clock(kPeriod);
+  clock.start(0, 0);
+  ASSERT_EQ(clock.begin(1000, 11000), 0u);
+  uint64_t kick = 1000;
+  for (uint64_t wall = 11000; wall > kick;) {
+    kick += kPeriod;
+    wall = clock.due_us(kick);
+    clock.begin(kick, wall);
+  }
+  for (int i = 0; i < 1000; ++i) {
+    kick += kPeriod;
+    ASSERT_EQ(clock.due_us(kick), kick);
+    clock.begin(kick, kick);
+  }
+  kick += kPeriod;
+  ASSERT_EQ(clock.begin(kick, kick + 10000), 0u);
+  EXPECT_EQ(clock.due_us(kick + kPeriod), kick + 10000 + kPeriod / 2);
+}
+
 // Stopped for 2 s (SIGSTOP, a loaded host), the world does not run 2 s to catch up, nor skip them:
 // it pauses, and takes its next kicks on the wall clock from where it stood.
 TEST(ServeClock, AWorldFarBehindPausesAndResumesFromNow) {

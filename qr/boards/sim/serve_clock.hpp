@@ -7,9 +7,11 @@
 // counts simulated time) as a console gone silent. So:
 //
 //  - a world a little behind (up to kMaxBehindUs) catches up, but no faster than kCatchUpFactor
-//    times the wall clock: the console's control frames, 20 ms apart on the wall, are then at most
-//    40 ms apart in the world, and the bytes read at each period arrive in order behind those
-//    already on the line;
+//    times the wall clock, counted from when it fell behind: the console's control frames, 20 ms
+//    apart on the wall, are then about 40 ms apart in the world at most, and the bytes read at
+//    each kick arrive in order behind those already on the line. Counted from when it fell behind,
+//    not kick by kick, so that a kick the host ran late (a sleep that overslept, a devboard round
+//    trip that took long) is made up by the ones after it;
 //  - a world further behind pauses: it resumes from now where it was, and never skips simulated
 //    time. The console's bytes that waited in the pty meanwhile go onto the line in order, at its
 //    115200 baud. The pauses are counted for the report (docs/simulator.md, section 5, "Serve
@@ -45,8 +47,8 @@ class ServeClock {
   // The world is at `sim_us` at wall time `wall_us`.
   void start(uint64_t wall_us, uint64_t sim_us);
   // The wall time at which the kick at simulated `kick_us` may be taken (the physics run up to it,
-  // the firmware's tick): when the wall clock reaches it, and no sooner than 1/kCatchUpFactor of a
-  // period after the last kick was taken.
+  // the firmware's tick): when the wall clock reaches it, and while catching up no sooner than
+  // simulated time at kCatchUpFactor times the wall clock from where the world fell behind.
   uint64_t due_us(uint64_t kick_us) const;
   // The kick at `kick_us` is taken at `wall_us` (at or after due_us()). A world more than
   // kMaxBehindUs behind pauses: returns how long it stood still (0 when it did not).
@@ -63,8 +65,10 @@ class ServeClock {
   uint64_t period_us_;
   // Wall time minus simulated time while the world keeps time; every pause adds its length.
   int64_t wall_minus_sim_us_ = 0;
-  uint64_t last_begin_us_ = 0;
-  bool begun_ = false;
+  // Behind the wall clock: since which kick and wall time, for the catch-up's pace.
+  bool catching_up_ = false;
+  uint64_t behind_since_kick_us_ = 0;
+  uint64_t behind_since_wall_us_ = 0;
   ServeTiming timing_;
 };
 
