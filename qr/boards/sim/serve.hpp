@@ -1,5 +1,7 @@
 // Serve mode: the simulated QR in real time, its serial line on a pseudo terminal (or on stdin and
-// stdout), so the ground console talks to it exactly as to the hardware.
+// stdout), so the ground console talks to it exactly as to the hardware. A host that runs it late
+// pauses the world rather than skip simulated time (serve_clock.hpp); a console that does not
+// read loses the QR's oldest frames rather than stop the world (serve_output.hpp).
 #pragma once
 
 #include <stdint.h>
@@ -29,8 +31,8 @@ struct ServeOptions {
   bool radio = false;
 };
 
-// Runs until the firmware stops (the console sent exit), a signal, or `seconds`. Returns the
-// process exit code.
+// Runs until the firmware stops (the console sent exit), SIGINT or SIGTERM (within a second,
+// whatever it is doing), or `seconds` of simulated time. Returns the process exit code.
 int serve(const ServeOptions& options);
 
 }  // namespace qrsim
