@@ -10,6 +10,7 @@
 #include <pc/core/key_map.hpp>
 #include <pc/core/log_room.hpp>
 #include <pc/core/mode_names.hpp>
+#include <pc/core/radio_pilot.hpp>
 #include <pc/core/telemetry_csv.hpp>
 
 namespace qrterm {
@@ -116,7 +117,8 @@ Console::Console(ConsoleLog& log, ConsoleFiles files, const Setup& setup, uint32
           [this](Severity severity, const std::string& text) { note(severity, text); },
           [this](const std::string& name) { return files_.open ? files_.open(name) : nullptr; },
           [this](const std::string& from, const std::string& to) { return files_.rename && files_.rename(from, to); }}),
-      joystick_(setup.joystick ? JoystickState::ok : JoystickState::none), simulator_(setup.simulator),
+      joystick_(setup.joystick ? JoystickState::ok : JoystickState::none),
+      simulator_(setup.simulator, [this](Severity severity, const std::string& text) { note(severity, text); }),
       streams_(
           StreamSession::Hooks{[this](Severity severity, const std::string& text) { note(severity, text); },
                                [this](const std::string& name) { return files_.open ? files_.open(name) : nullptr; }}),
@@ -129,42 +131,9 @@ void Console::set_time(uint32_t now_ms) { now_ms_ = now_ms; }
 void Console::note(Severity severity, const std::string& text) { log_.add(now_ms_ - start_ms_, severity, text); }
 
 void Console::truth_line(const std::string& line) {
-  if (line.rfind("error", 0) == 0) {
-    note(Severity::warning, "sim: " + line);
-    return;
+  if (const std::optional<PlotModel::TrueState> truth = simulator_.on_line(line, now_ms_)) {
+    streams_.plot().add_truth(uptime_ms() / 1000.0, *truth);
   }
-  if (line.rfind("ok reset", 0) == 0) {
-    note(Severity::info, "sim: the QR stands upright and still; calibrate (3) again if the attitude is off");
-    return;
-  }
-  if (line.rfind("truth ", 0) != 0) return;  // "ok push" and anything newer
-  const auto field = [&](const char* name, double& out) {
-    const std::string key = std::string(" ") + name + "=";
-    const size_t at = line.find(key);
-    if (at == std::string::npos) return false;
-    char* end = nullptr;
-    out = std::strtod(line.c_str() + at + key.size(), &end);
-    return end != line.c_str() + at + key.size();
-  };
-  double roll = 0, pitch = 0, yaw = 0, height = 0, climb = 0, t_s = 0;
-  if (field("t", t_s)) {
-    const int64_t offset = static_cast<int64_t>(now_ms_) - std::llround(t_s * 1000);
-    if (!sim_clock_offset_ms_ || offset < *sim_clock_offset_ms_) sim_clock_offset_ms_ = offset;
-  }
-  if (!field("roll", roll) || !field("pitch", pitch) || !field("yaw", yaw) || !field("height", height)) return;
-  char text[96];
-  std::snprintf(text, sizeof text, "truth roll %+.1f pitch %+.1f yaw %+.1f height %.2f m", roll, pitch, yaw, height);
-  truth_ = text;
-  constexpr double kRadPerDeg = 0.017453292519943295;
-  if (!field("climb", climb)) climb = std::nan("");  // an older simulator's line: no climb truth
-  streams_.plot().add_truth(uptime_ms() / 1000.0,
-                            {roll * kRadPerDeg, pitch * kRadPerDeg, yaw * kRadPerDeg, height, climb});
-}
-
-std::vector<std::string> Console::take_sim_commands() {
-  std::vector<std::string> commands;
-  commands.swap(sim_commands_);
-  return commands;
 }
 
 uint32_t Console::log_divider() const {
@@ -222,6 +191,7 @@ void Console::act(Action action, uint32_t now_ms) {
   if (action == Action::exit) return request_exit(now_ms);
   if (controls_.apply(action)) return;
   if (const GainStep* step = find_gain_step(action)) return parameters_.step(*step);
+  if (simulator_.act(action)) return;
   for (const ModeKey& mode_key : kModeKeys) {
     if (mode_key.action == action) return request_mode(mode_key.mode);
   }
@@ -253,45 +223,6 @@ void Console::act(Action action, uint32_t now_ms) {
       break;
     case Action::tasks_print: print_tasks(); break;
     case Action::lift_hover: lift_to_hover(); break;
-    case Action::sim_push:
-      if (!simulator_) {
-        note(Severity::warning, "no simulator: n pushes only a QR the console started in qrsim");
-      } else {
-        sim_commands_.emplace_back("push 0.3 0 0 0.1\n");
-        note(Severity::info, "sim: push 0.3 N m about roll for 0.1 s");
-      }
-      break;
-    case Action::sim_reset:
-      if (!simulator_) {
-        note(Severity::warning, "no simulator: v sets upright only a QR the console started in qrsim");
-      } else {
-        sim_commands_.emplace_back("reset\n");
-        note(Severity::info, "sim: asking to set the QR down upright (engines must be off)");
-      }
-      break;
-    case Action::sim_turn:
-      if (!simulator_) {
-        note(Severity::warning, "no simulator: y turns only a QR the console started in qrsim");
-      } else {
-        // Two turns in 4 s: 180 deg/s at the peak, well inside the gyro's 500. The axes in the
-        // order the calibration is usually made: flat on the table, on its tail, on its side.
-        static constexpr char kAxes[] = {'z', 'x', 'y'};
-        const char axis = kAxes[next_turn_axis_];
-        next_turn_axis_ = (next_turn_axis_ + 1) % 3;
-        sim_commands_.emplace_back(std::string("turn ") + axis + " 2 4\n");
-        note(Severity::info, std::string("sim: the hand turns the QR twice about its ") + axis +
-                                 " axis in 4 s (with gyro_turns = 2 and a calibration: that axis' gyro scale)");
-      }
-      break;
-    case Action::sim_radio_off:
-      if (!simulator_) {
-        note(Severity::warning,
-             "no simulator: m moves only the arm switch of qrsim's radio (--sim-arg --rc --sim-arg crsf)");
-      } else {
-        sim_commands_.emplace_back("radio off\n");
-        note(Severity::info, "sim radio: the arm switch off (in a flight mode: panic)");
-      }
-      break;
     default: break;
   }
 }
@@ -423,7 +354,7 @@ void Console::request_mode(wire::Mode mode) {
       return;
     }
   }
-  if (simulator_ && leaving_safe && arm_radio(mode, in_safe)) return;
+  if (simulator_.take_mode_request(mode, in_safe, telemetry_)) return;
   const bool flying = telemetry_.attitude && is_flight_mode(telemetry_.attitude->mode);
   note(Severity::info,
        std::string("asking for mode ") + mode_name(mode) +
@@ -434,25 +365,6 @@ void Console::request_mode(wire::Mode mode) {
   // with the sticks as they are now goes first; frames arrive in order.
   send_control();
   link_.request(wire::ModeChange{0, mode}, now_ms_);
-}
-
-bool Console::arm_radio(wire::Mode mode, bool in_safe) {
-  // While the simulator's radio flies (docs/safety.md rule 17) a flight-mode key is the pilot's
-  // hand on the transmitter: the mode switch to the mode, the arm switch off and on.
-  const bool radio_flies = telemetry_.radio && (telemetry_.radio->flags & wire::kRadioPilot) != 0;
-  const bool on_the_mode_switch = mode == wire::Mode::manual || mode == wire::Mode::yaw_control ||
-                                  mode == wire::Mode::full_control;
-  if (!radio_flies || !on_the_mode_switch) return false;
-  if (!in_safe) {
-    // The switch's off-and-on would be the emergency stop of rule 17 in flight.
-    note(Severity::warning, std::string("not moving the radio's switches for ") + mode_name(mode) +
-                                ": the radio arms from safe only, and its arm switch off in flight is a panic (m)");
-    return true;
-  }
-  sim_commands_.emplace_back(std::string("radio arm ") + wire::mode_key(mode) + "\n");
-  note(Severity::info,
-       std::string("sim radio: mode switch to ") + mode_name(mode) + ", arm switch off and on (m: off)");
-  return true;
 }
 
 void Console::send_control() {
@@ -490,8 +402,9 @@ void Console::print_tasks() {
     return;
   }
   // The unit is the board's cycle counter: on the simulator that is the host's clock in ns.
-  note(Severity::info, simulator_ ? "QR task     ns: mean    max overruns  (the host's ns: the simulator's board)"
-                                  : "QR task   cycles: mean    max overruns  (instructions on the devboard)");
+  note(Severity::info, simulator_.present()
+                           ? "QR task     ns: mean    max overruns  (the host's ns: the simulator's board)"
+                           : "QR task   cycles: mean    max overruns  (instructions on the devboard)");
   for (const auto& [number, task] : telemetry_.tasks) {
     char line[64];
     std::snprintf(line, sizeof line, "  %-14s %6u %6u %8u", task_name(number).c_str(), task.mean, task.max,
@@ -620,10 +533,9 @@ void Console::on_height(const wire::TelemetryHeight& height) {
     if (!sinking_) {
       // What the pilot can do: the console's lift keys, unless the QR ignores them (panic) or
       // flies a real radio's sticks (the simulator's radio takes the console's).
-      const bool radio_flies = telemetry_.radio && (telemetry_.radio->flags & wire::kRadioPilot) != 0;
       const char* advice = sinking_in_panic() ? "the QR is in panic: the sticks do nothing, it comes down by itself"
-                           : radio_flies && !simulator_ ? "lift now, on the radio's throttle"
-                                                        : "lift now (PgUp)";
+                           : radio_flies(telemetry_) && !simulator_.present() ? "lift now, on the radio's throttle"
+                                                                              : "lift now (PgUp)";
       note(Severity::error, sinking_text(verdict, h, v, advice));
     }
     sinking_ = Sinking{-v, now_ms_};

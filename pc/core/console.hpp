@@ -28,6 +28,7 @@
 #include <pc/core/parameter_sync.hpp>
 #include <pc/core/pilot_controls.hpp>
 #include <pc/core/screen_keys.hpp>
+#include <pc/core/simulator_controls.hpp>
 #include <pc/core/stream_session.hpp>
 #include <pc/core/telemetry_model.hpp>
 
@@ -102,10 +103,10 @@ class Console {
   // A message from elsewhere in the program (the simulator's output, the main loop).
   void note(Severity severity, const std::string& text);
   // A line from the simulator's truth channel (docs/simulator.md): a truth line is kept for the
-  // screen, an error line goes to the log.
+  // screen and drawn under the plot's estimate, an error line goes to the log.
   void truth_line(const std::string& line);
   // Command lines for the truth channel (a push), taken once; the main loop writes them.
-  std::vector<std::string> take_sim_commands();
+  std::vector<std::string> take_sim_commands() { return simulator_.take_commands(); }
 
   // --- what goes out
   std::vector<uint8_t>& output() { return link_.output(); }
@@ -139,13 +140,12 @@ class Console {
   uint32_t log_divider() const;  // the parameter the console holds
   uint32_t control_hz() const;
   // "truth roll +1.2 pitch -0.5 yaw +10.0 height 1.50 m", or empty: no simulator or no line yet.
-  const std::string& truth() const { return truth_; }
+  const std::string& truth() const { return simulator_.truth(); }
   // The console started the simulator: the QR's CPU load, loop time and deadline misses are the
   // host's scheduling of a simulated board there, not figures of a flight computer.
-  bool flying_simulator() const { return simulator_; }
-  // The simulator's clock on the console's (ms to add to a QR time): from the truth lines, the
-  // smallest difference seen, so the one that waited least on its way. Empty without truth lines.
-  std::optional<int64_t> sim_clock_offset_ms() const { return sim_clock_offset_ms_; }
+  bool flying_simulator() const { return simulator_.present(); }
+  // The simulator's clock on the console's (ms to add to a QR time); empty without truth lines.
+  std::optional<int64_t> sim_clock_offset_ms() const { return simulator_.clock_offset_ms(); }
   bool exiting() const { return exit_ != ExitState::running; }
   std::string download_status() const { return downloader_.status(now_ms_); }
   size_t parameters_to_send() const { return parameters_.to_send(); }
@@ -163,9 +163,6 @@ class Console {
   void set_time(uint32_t now_ms);
   void abort(const std::string& why);
   void request_mode(wire::Mode mode);
-  // True when the request was the simulator's radio's: its switches moved to arm the mode (from
-  // safe), or nothing sent (in flight, where the switch's off-and-on would be a panic).
-  bool arm_radio(wire::Mode mode, bool in_safe);
   void send_control();
   // The hover key: the lift to the hover lift the QR learnt, or a message that it has none yet.
   void lift_to_hover();
@@ -209,11 +206,7 @@ class Console {
   bool joystick_known_ = false;
   bool escape_armed_ = false;  // the last key was ESC: another one exits
   bool help_ = false;
-  bool simulator_ = false;
-  std::string truth_;
-  std::optional<int64_t> sim_clock_offset_ms_;
-  std::vector<std::string> sim_commands_;
-  int next_turn_axis_ = 0;  // the y key's next axis: z, x, y
+  SimulatorControls simulator_;
   ExitState exit_ = ExitState::running;
   uint32_t exit_started_ms_ = 0;
   bool exit_confirmed_ = false;

@@ -10,6 +10,7 @@
 #include <pc/core/key_map.hpp>
 #include <pc/core/mode_names.hpp>
 #include <pc/core/param_file.hpp>
+#include <pc/core/radio_pilot.hpp>
 #include <pc/platform/clock.hpp>
 #include <pc/ui/screen_draw.hpp>
 #include <pc/ui/screens.hpp>
@@ -315,11 +316,11 @@ void Cockpit::draw_hardware(const Console& console, int width) {
   int column = 10;
   if (t.radio) {
     const wire::TelemetryRadio& r = *t.radio;
-    const bool radio_flies = (r.flags & wire::kRadioPilot) != 0;
+    const bool radio = radio_flies(t);
     const bool up = (r.flags & wire::kRadioLinkUp) != 0;
     put(14, 0, "radio", 0, A_BOLD);
-    put(14, column, radio_flies ? " RADIO FLIES " : "PC flies", radio_flies ? kWarning : kDim,
-        radio_flies ? A_BOLD | A_REVERSE : A_NORMAL);
+    put(14, column, radio ? " RADIO FLIES " : "PC flies", radio ? kWarning : kDim,
+        radio ? A_BOLD | A_REVERSE : A_NORMAL);
     column += 14;
     put(14, column, up ? "link up" : "LINK LOST", up ? kInfo : kError, up ? A_NORMAL : A_BOLD | A_REVERSE);
     column += 10;
