@@ -6,12 +6,10 @@
 
 #include <common/task_names.hpp>
 #include <pc/core/gain_steps.hpp>
-#include <pc/core/hex_log.hpp>
 #include <pc/core/key_map.hpp>
 #include <pc/core/log_room.hpp>
 #include <pc/core/mode_names.hpp>
 #include <pc/core/radio_pilot.hpp>
-#include <pc/core/telemetry_csv.hpp>
 
 namespace qrterm {
 namespace {
@@ -107,24 +105,22 @@ struct Console::Receiver {
 };
 
 Console::Console(ConsoleLog& log, ConsoleFiles files, const Setup& setup, uint32_t now_ms)
-    : log_(log), files_(std::move(files)), rx_hex_part_bytes_(setup.rx_hex_part_bytes), start_ms_(now_ms),
-      now_ms_(now_ms), link_(now_ms, setup.first_seq),
+    : log_(log), recordings_(std::move(files), setup.rx_hex_part_bytes,
+                             [this](Severity severity, const std::string& text) { note(severity, text); }),
+      start_ms_(now_ms), now_ms_(now_ms), link_(now_ms, setup.first_seq),
       parameters_(setup.params, [this](Severity severity, const std::string& text) { note(severity, text); }),
       downloader_(LogDownloader::Hooks{
           [this](const wire::LogDownload& request) { link_.request(request, now_ms_); },
           [this](const wire::LogResend& request) { link_.request(request, now_ms_); },
           [this] { return link_.pending(wire::MessageType::log_resend); },
           [this](Severity severity, const std::string& text) { note(severity, text); },
-          [this](const std::string& name) { return files_.open ? files_.open(name) : nullptr; },
-          [this](const std::string& from, const std::string& to) { return files_.rename && files_.rename(from, to); }}),
+          [this](const std::string& name) { return recordings_.open(name); },
+          [this](const std::string& from, const std::string& to) { return recordings_.rename(from, to); }}),
       joystick_(setup.joystick ? JoystickState::ok : JoystickState::none),
       simulator_(setup.simulator, [this](Severity severity, const std::string& text) { note(severity, text); }),
-      streams_(
-          StreamSession::Hooks{[this](Severity severity, const std::string& text) { note(severity, text); },
-                               [this](const std::string& name) { return files_.open ? files_.open(name) : nullptr; }}),
-      editor_(setup.params, setup.params_file) {
-  if (files_.telemetry_csv != nullptr) telemetry_csv_.emplace(*files_.telemetry_csv, telemetry_csv_header());
-}
+      streams_(StreamSession::Hooks{[this](Severity severity, const std::string& text) { note(severity, text); },
+                                    [this](const std::string& name) { return recordings_.open(name); }}),
+      editor_(setup.params, setup.params_file) {}
 
 void Console::set_time(uint32_t now_ms) { now_ms_ = now_ms; }
 
@@ -447,24 +443,8 @@ void Console::joystick_back(uint32_t now_ms) {
 
 void Console::receive(const uint8_t* data, size_t count, uint32_t now_ms) {
   set_time(now_ms);
-  record_received(data, count);
+  recordings_.received(now_ms_ - start_ms_, data, count);
   link_.receive(data, count, now_ms, [this](const wire::Frame& frame) { on_frame(frame); });
-}
-
-void Console::record_received(const uint8_t* data, size_t count) {
-  if (files_.rx_hex == nullptr || count == 0) return;
-  const std::string line = hex_line(now_ms_ - start_ms_, data, count);
-  if (rx_hex_bytes_ + line.size() > rx_hex_part_bytes_ && files_.restart_rx_hex) {
-    files_.rx_hex = files_.restart_rx_hex();
-    rx_hex_bytes_ = 0;
-    note(Severity::info, files_.rx_hex != nullptr
-                             ? "rx.hex full: the part before is rx.old.hex now"
-                             : "rx.hex full and cannot start again: received bytes no longer recorded");
-    if (files_.rx_hex == nullptr) return;
-  }
-  *files_.rx_hex << line;
-  rx_hex_bytes_ += line.size();
-  if (!files_.rx_hex->good()) file_failed(files_.rx_hex, "rx.hex", "rx.partial.hex");
 }
 
 void Console::on_frame(const wire::Frame& frame) {
@@ -493,13 +473,7 @@ void Console::on_attitude(const wire::TelemetryAttitude& attitude) {
   const auto rose = [&](uint8_t bit) { return (attitude.flags & bit) != 0 && (!before || (before->flags & bit) == 0); };
   if (rose(wire::kFlagCalibrated)) note(Severity::info, "QR calibrated");
   if (rose(wire::kFlagBatteryWarning)) note(Severity::warning, "QR battery low");
-  if (telemetry_csv_) {
-    telemetry_csv_->write(telemetry_csv_row(now_ms_ - start_ms_, telemetry_, last_control_));
-    if (!files_.telemetry_csv->good()) {
-      telemetry_csv_.reset();
-      file_failed(files_.telemetry_csv, "telemetry.csv", "telemetry.partial.csv");
-    }
-  }
+  recordings_.telemetry_row(now_ms_ - start_ms_, telemetry_, last_control_);
 }
 
 namespace {
@@ -555,13 +529,6 @@ bool Console::sinking_in_panic() const { return telemetry_.attitude && telemetry
 std::optional<double> Console::sinking_m_s() const {
   if (!sinking_ || link_state_ != LinkState::up) return std::nullopt;
   return sinking_->speed_m_s;
-}
-
-void Console::file_failed(std::ostream*& file, const char* name, const char* partial_name) {
-  file = nullptr;
-  const bool renamed = files_.rename && files_.rename(name, partial_name);
-  note(Severity::error, std::string("cannot write ") + name + " (disk full or log folder read-only): it ends here" +
-                            (renamed ? std::string(", renamed ") + partial_name : std::string(", and is partial")));
 }
 
 void Console::on_log_status(const wire::LogStatus& status) {

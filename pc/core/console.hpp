@@ -18,7 +18,6 @@
 #include <common/messages.hpp>
 #include <common/parameter_table.hpp>
 #include <pc/core/console_log.hpp>
-#include <pc/core/csv_writer.hpp>
 #include <pc/core/debug_text.hpp>
 #include <pc/core/descent_warning.hpp>
 #include <pc/core/key.hpp>
@@ -27,6 +26,7 @@
 #include <pc/core/parameter_editor.hpp>
 #include <pc/core/parameter_sync.hpp>
 #include <pc/core/pilot_controls.hpp>
+#include <pc/core/recordings.hpp>
 #include <pc/core/screen_keys.hpp>
 #include <pc/core/simulator_controls.hpp>
 #include <pc/core/stream_session.hpp>
@@ -41,25 +41,9 @@ inline constexpr uint32_t kDefaultControlHz = 1000;
 
 inline constexpr uint32_t kExitWaitMs = wire::kGiveUpAfterMs + 200;
 
-// rx.hex grows by some 70 MB an hour of telemetry: past this size it starts again, the part before
-// kept as rx.old.hex, so the disk holds at most twice this and the newest bytes are always there.
-inline constexpr size_t kRxHexPartBytes = 16u << 20;
-
 // The descent warning stays up until its rule has been clear for this long: a climb rate that
 // wavers about the threshold does not make it blink, nor write a log line at each blink.
 inline constexpr uint32_t kSinkingHoldMs = 1000;
-
-// Where the console writes; any may be absent.
-struct ConsoleFiles {
-  std::ostream* rx_hex = nullptr;
-  // Moves the full rx.hex aside and gives a fresh one (null: recording stops).
-  std::function<std::ostream*()> restart_rx_hex;
-  std::ostream* telemetry_csv = nullptr;
-  std::function<std::unique_ptr<std::ostream>(const std::string& name)> open;  // a new file in the log folder
-  // Renames a file of the log folder (false when it could not): a file cut short by a full disk
-  // or a folder gone read-only is named partial, never left to pass for whole.
-  std::function<bool(const std::string& from, const std::string& to)> rename;
-};
 
 enum class JoystickState : uint8_t {
   none,  // keyboard only (--no-joystick)
@@ -167,7 +151,6 @@ class Console {
   // The hover key: the lift to the hover lift the QR learnt, or a message that it has none yet.
   void lift_to_hover();
   void print_tasks();
-  void record_received(const uint8_t* data, size_t count);
   void finish_exit(Severity severity, const std::string& why, bool confirmed);
   void on_frame(const wire::Frame& frame);
   // An ack (reason none) or a nack, already matched against the request it answers.
@@ -185,12 +168,7 @@ class Console {
   void submit_prompt(const Prompt& prompt);
 
   ConsoleLog& log_;
-  ConsoleFiles files_;
-  size_t rx_hex_part_bytes_;
-  size_t rx_hex_bytes_ = 0;  // in the rx.hex being written
-  std::optional<CsvWriter> telemetry_csv_;
-  // A session file that failed to write: written no more, named partial, said once.
-  void file_failed(std::ostream*& file, const char* name, const char* partial_name);
+  Recordings recordings_;
   uint32_t start_ms_;
   uint32_t now_ms_;
   LinkSession link_;
