@@ -10,6 +10,7 @@
 #include <pc/core/log_room.hpp>
 #include <pc/core/mode_names.hpp>
 #include <pc/core/radio_pilot.hpp>
+#include <pc/core/request_texts.hpp>
 
 namespace qrterm {
 namespace {
@@ -27,39 +28,6 @@ constexpr ModeKey kModeKeys[] = {
     {Action::mode_yaw_control, wire::Mode::yaw_control},
     {Action::mode_full_control, wire::Mode::full_control},
 };
-
-// What the log says when the QR answers a request. Mode changes, log downloads and the exit have
-// more to say and are handled on their own.
-struct RequestText {
-  wire::MessageType type;
-  const char* accepted;  // null: nothing worth a line
-  const char* what;
-};
-
-constexpr RequestText kRequestTexts[] = {
-    {wire::MessageType::mode_change, nullptr, "mode change"},
-    {wire::MessageType::param_set, nullptr, "parameter"},
-    {wire::MessageType::param_get, nullptr, "parameter read"},  // the reports say it all
-    {wire::MessageType::log_start, "QR logging (sensor + telemetry)", "log start"},
-    {wire::MessageType::log_stop, "QR logs stopped", "log stop"},
-    {wire::MessageType::log_download, nullptr, "log download"},
-    {wire::MessageType::log_resend, nullptr, "log part resend"},
-    {wire::MessageType::exit, nullptr, "exit"},
-    {wire::MessageType::observable_get, nullptr, "observable table request"},
-    {wire::MessageType::stream_request, nullptr, "stream request"},
-};
-
-const RequestText& request_text(wire::MessageType type) {
-  for (const RequestText& text : kRequestTexts) {
-    if (text.type == type) return text;
-  }
-  return kRequestTexts[0];
-}
-
-std::string reason_text(wire::NackReason reason) {
-  const wire::NackReasonSpec* spec = wire::find_nack_reason(reason);
-  return spec != nullptr ? spec->text : "refused";
-}
 
 // The QR's scheduler tasks as the wire numbers them in telemetry_task (common/task_names.hpp).
 std::string task_name(uint8_t number) {
@@ -105,24 +73,24 @@ struct Console::Receiver {
 };
 
 Console::Console(ConsoleLog& log, ConsoleFiles files, const Setup& setup, uint32_t now_ms)
-    : log_(log), recordings_(std::move(files), setup.rx_hex_part_bytes,
-                             [this](Severity severity, const std::string& text) { note(severity, text); }),
-      start_ms_(now_ms), now_ms_(now_ms), link_(now_ms, setup.first_seq),
-      parameters_(setup.params, [this](Severity severity, const std::string& text) { note(severity, text); }),
+    : log_(log), recordings_(std::move(files), setup.rx_hex_part_bytes, note_hook()), start_ms_(now_ms),
+      now_ms_(now_ms), link_(now_ms, setup.first_seq), parameters_(setup.params, note_hook()),
       downloader_(LogDownloader::Hooks{
           [this](const wire::LogDownload& request) { link_.request(request, now_ms_); },
           [this](const wire::LogResend& request) { link_.request(request, now_ms_); },
-          [this] { return link_.pending(wire::MessageType::log_resend); },
-          [this](Severity severity, const std::string& text) { note(severity, text); },
+          [this] { return link_.pending(wire::MessageType::log_resend); }, note_hook(),
           [this](const std::string& name) { return recordings_.open(name); },
           [this](const std::string& from, const std::string& to) { return recordings_.rename(from, to); }}),
-      joystick_(setup.joystick ? JoystickState::ok : JoystickState::none),
-      simulator_(setup.simulator, [this](Severity severity, const std::string& text) { note(severity, text); }),
-      streams_(StreamSession::Hooks{[this](Severity severity, const std::string& text) { note(severity, text); },
-                                    [this](const std::string& name) { return recordings_.open(name); }}),
+      joystick_(setup.joystick ? JoystickState::ok : JoystickState::none), simulator_(setup.simulator, note_hook()),
+      exit_(note_hook()),
+      streams_(StreamSession::Hooks{note_hook(), [this](const std::string& name) { return recordings_.open(name); }}),
       editor_(setup.params, setup.params_file) {}
 
 void Console::set_time(uint32_t now_ms) { now_ms_ = now_ms; }
+
+Console::Note Console::note_hook() {
+  return [this](Severity severity, const std::string& text) { note(severity, text); };
+}
 
 void Console::note(Severity severity, const std::string& text) { log_.add(now_ms_ - start_ms_, severity, text); }
 
@@ -183,7 +151,7 @@ void Console::act(Action action, uint32_t now_ms) {
     return;
   }
   // While exiting only an abort is still obeyed: the QR is on its way to safe already.
-  if (exit_ != ExitState::running) return;
+  if (!exit_.running()) return;
   if (action == Action::exit) return request_exit(now_ms);
   if (controls_.apply(action)) return;
   if (const GainStep* step = find_gain_step(action)) return parameters_.step(*step);
@@ -549,8 +517,7 @@ void Console::on_answer(wire::MessageType type, wire::NackReason reason, const A
   if (answer.match != wire::AnswerMatch::matched) return;
   const bool refused = reason != wire::NackReason::none;
   if (type == wire::MessageType::exit) {
-    return refused ? finish_exit(Severity::warning, "the QR refused the exit: " + reason_text(reason), false)
-                   : finish_exit(Severity::info, "the QR confirmed the exit", true);
+    return exit_.on_answer(reason);
   }
   if (type == wire::MessageType::log_download) {
     if (refused) downloader_.on_nack(reason);
@@ -566,24 +533,20 @@ void Console::on_answer(wire::MessageType type, wire::NackReason reason, const A
     if (refused) note(Severity::warning, "QR refused mode " + mode + ": " + reason_text(reason));
     return;
   }
-  const RequestText& text = request_text(type);
   if (refused) {
-    note(Severity::warning, std::string("QR refused the ") + text.what + ": " + reason_text(reason));
-  } else if (text.accepted != nullptr) {
-    note(Severity::info, text.accepted);
+    note(Severity::warning, std::string("QR refused the ") + request_what(type) + ": " + reason_text(reason));
+  } else if (request_accepted(type) != nullptr) {
+    note(Severity::info, request_accepted(type));
   }
 }
 
 void Console::on_gave_up(const wire::ResendEvent& event) {
-  const RequestText& text = request_text(event.type);
-  if (event.type == wire::MessageType::exit) {
-    return finish_exit(Severity::error, "no answer from the QR to the exit", false);
-  }
+  if (event.type == wire::MessageType::exit) return exit_.unanswered();
   // A log_download that went unanswered is asked for again by the downloader once the line is
   // quiet; it gives up by itself when nothing comes.
   if (event.type == wire::MessageType::log_download || event.type == wire::MessageType::log_resend) return;
   if (event.type == wire::MessageType::observable_get) return streams_.table_unanswered();
-  note(Severity::error, std::string("no answer from the QR to the ") + text.what + " request (" +
+  note(Severity::error, std::string("no answer from the QR to the ") + request_what(event.type) + " request (" +
                             std::to_string(wire::kMaxSends) + " sends)");
 }
 
@@ -618,34 +581,18 @@ void Console::line_closed(const std::string& why, uint32_t now_ms) {
                             (flying ? std::string("; the QR was in ") + mode_name(telemetry_.attitude->mode) +
                                           ": it panics by itself after the link timeout (safety rule 7)"
                                     : std::string()));
-  if (exit_ == ExitState::waiting_for_qr) finish_exit(Severity::warning, "exit not confirmed: the line is gone", false);
+  exit_.line_closed();
 }
 
 void Console::request_exit(uint32_t now_ms) {
   set_time(now_ms);
-  if (exit_ == ExitState::done) return;
-  if (exit_ == ExitState::waiting_for_qr) {
-    return finish_exit(Severity::warning, "exit without waiting for the QR", false);
-  }
   const LinkState state = link_.state(now_ms);
-  if (state == LinkState::closed || !link_.ever_up()) {
-    return finish_exit(Severity::info, "exit: no QR to tell", false);
-  }
-  note(Severity::info, "exit: asking the QR to go to safe and stop");
-  exit_ = ExitState::waiting_for_qr;
-  exit_started_ms_ = now_ms;
-  link_.request(wire::Exit{}, now_ms);
-}
-
-void Console::finish_exit(Severity severity, const std::string& why, bool confirmed) {
-  note(severity, why);
-  exit_ = ExitState::done;
-  exit_confirmed_ = confirmed;
+  if (exit_.request(state != LinkState::closed && link_.ever_up(), now_ms)) link_.request(wire::Exit{}, now_ms);
 }
 
 void Console::tick(uint32_t now_ms) {
   set_time(now_ms);
-  if (exit_ == ExitState::done) return;
+  if (exit_.done()) return;
 
   const LinkState state = link_.state(now_ms);
   if (state != link_state_) on_link_state(state);
@@ -653,15 +600,13 @@ void Console::tick(uint32_t now_ms) {
   if (state != LinkState::closed && link_.control_due(now_ms)) send_control();
   link_.poll(now_ms, [this](const wire::ResendEvent& event) { on_gave_up(event); });
 
-  if (state == LinkState::up && exit_ == ExitState::running) {
+  if (state == LinkState::up && exit_.running()) {
     parameters_.tick(link_, now_ms);
     streams_.tick(link_, now_ms);
   }
 
   downloader_.tick(now_ms);
-  if (exit_ == ExitState::waiting_for_qr && now_ms - exit_started_ms_ >= kExitWaitMs) {
-    finish_exit(Severity::error, "no answer from the QR to the exit", false);
-  }
+  exit_.tick(now_ms);
 }
 
 

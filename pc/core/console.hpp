@@ -20,6 +20,7 @@
 #include <pc/core/console_log.hpp>
 #include <pc/core/debug_text.hpp>
 #include <pc/core/descent_warning.hpp>
+#include <pc/core/exit_handshake.hpp>
 #include <pc/core/key.hpp>
 #include <pc/core/link_session.hpp>
 #include <pc/core/log_downloader.hpp>
@@ -34,12 +35,8 @@
 
 namespace qrterm {
 
-// How long the console waits for the QR to confirm an exit: the resend queue's 1 s of tries, and
-// a little for the last answer to arrive.
 // The QR's control rate until it says its own (docs/architecture.md: 1 kHz by default).
 inline constexpr uint32_t kDefaultControlHz = 1000;
-
-inline constexpr uint32_t kExitWaitMs = wire::kGiveUpAfterMs + 200;
 
 // The descent warning stays up until its rule has been clear for this long: a climb rate that
 // wavers about the threshold does not make it blink, nor write a log line at each blink.
@@ -94,8 +91,8 @@ class Console {
 
   // --- what goes out
   std::vector<uint8_t>& output() { return link_.output(); }
-  bool finished() const { return exit_ == ExitState::done; }
-  bool exit_confirmed() const { return exit_confirmed_; }
+  bool finished() const { return exit_.done(); }
+  bool exit_confirmed() const { return exit_.confirmed(); }
 
   // --- what the screen shows
   // The descent warning (descent_warning.hpp) while it stands and the link is up: the descent
@@ -130,7 +127,7 @@ class Console {
   bool flying_simulator() const { return simulator_.present(); }
   // The simulator's clock on the console's (ms to add to a QR time); empty without truth lines.
   std::optional<int64_t> sim_clock_offset_ms() const { return simulator_.clock_offset_ms(); }
-  bool exiting() const { return exit_ != ExitState::running; }
+  bool exiting() const { return !exit_.running(); }
   std::string download_status() const { return downloader_.status(now_ms_); }
   size_t parameters_to_send() const { return parameters_.to_send(); }
   const ConsoleLog& log() const { return log_; }
@@ -140,10 +137,12 @@ class Console {
   uint32_t unhandled_frames() const { return unhandled_frames_; }
 
  private:
-  enum class ExitState : uint8_t { running, waiting_for_qr, done };
   struct Receiver;
   friend struct Receiver;
 
+  using Note = std::function<void(Severity, const std::string&)>;
+  // For the parts that tell the pilot something: into the log, at the console's time.
+  Note note_hook();
   void set_time(uint32_t now_ms);
   void abort(const std::string& why);
   void request_mode(wire::Mode mode);
@@ -151,7 +150,6 @@ class Console {
   // The hover key: the lift to the hover lift the QR learnt, or a message that it has none yet.
   void lift_to_hover();
   void print_tasks();
-  void finish_exit(Severity severity, const std::string& why, bool confirmed);
   void on_frame(const wire::Frame& frame);
   // An ack (reason none) or a nack, already matched against the request it answers.
   void on_answer(wire::MessageType type, wire::NackReason reason, const Answer& answer);
@@ -185,9 +183,7 @@ class Console {
   bool escape_armed_ = false;  // the last key was ESC: another one exits
   bool help_ = false;
   SimulatorControls simulator_;
-  ExitState exit_ = ExitState::running;
-  uint32_t exit_started_ms_ = 0;
-  bool exit_confirmed_ = false;
+  ExitHandshake exit_;
   std::optional<wire::Mode> requested_mode_;
   struct Sinking {
     double speed_m_s;       // down, the latest report's
