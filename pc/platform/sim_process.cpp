@@ -53,7 +53,11 @@ SimProcess::SimProcess(const std::string& program, const std::vector<std::string
         " (build it: cmake --build --preset host; or name it with --sim PATH, or fly a QR with --port PATH)");
   }
   if (::access(program.c_str(), X_OK) != 0) throw SimError(program + " is not executable");
+  spawn(program, arguments);
+  wait_for_serial_line(program, timeout_ms);
+}
 
+void SimProcess::spawn(const std::string& program, const std::vector<std::string>& arguments) {
   const Pipe out = make_pipe();
   const Pipe err = make_pipe();
   // The truth channel: one end for us, the other the child's descriptor kTruthFd. Made after the
@@ -100,13 +104,12 @@ SimProcess::SimProcess(const std::string& program, const std::vector<std::string
   ::fcntl(err.read, F_SETFL, O_NONBLOCK);
   if (spawned != 0) {
     pid_ = -1;
-    ::close(out.read);
-    ::close(err.read);
-    ::close(pair[0]);
+    close_channels();
     throw SimError("cannot start " + program + ": " + std::strerror(spawned));
   }
+}
 
-  // Wait for the line that names the serial port.
+void SimProcess::wait_for_serial_line(const std::string& program, uint32_t timeout_ms) {
   const uint64_t deadline = clock_ms() + timeout_ms;
   bool out_open = true;
   bool err_open = true;
@@ -125,12 +128,10 @@ SimProcess::SimProcess(const std::string& program, const std::vector<std::string
                                        : program + " closed its output without naming its serial line";
       for (const std::string& line : early_output_) message += "\n  " + line;
       if (!how) stop(0);
-      ::close(out.read);
-      ::close(err.read);
-      ::close(pair[0]);
+      close_channels();
       throw SimError(message);
     }
-    pollfd fds[2] = {{out.read, POLLIN, 0}, {err.read, POLLIN, 0}};
+    pollfd fds[2] = {{out_.fd(), POLLIN, 0}, {err_.fd(), POLLIN, 0}};
     ::poll(fds, err_open ? 2 : 1, static_cast<int>(std::min<uint64_t>(deadline - now, 100)));
     for (std::string& line : out_.read(out_open)) {
       const size_t at = line.find(kSerialMarker);
@@ -146,6 +147,13 @@ SimProcess::SimProcess(const std::string& program, const std::vector<std::string
       for (std::string& line : err_.read(err_open)) early_output_.push_back(std::move(line));
     }
   }
+}
+
+// A start that failed: the destructor will not run, so the pipes and the socket close here.
+void SimProcess::close_channels() {
+  ::close(out_.fd());
+  ::close(err_.fd());
+  ::close(truth_.fd());
 }
 
 SimProcess::~SimProcess() {

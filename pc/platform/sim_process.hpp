@@ -52,6 +52,11 @@ class SimProcess {
   void stop(uint32_t grace_ms);
 
  private:
+  // The child, with its stdout, stderr and truth channel on our ends.
+  void spawn(const std::string& program, const std::vector<std::string>& arguments);
+  // Reads its output until it names its serial line; throws when it ends or stays silent.
+  void wait_for_serial_line(const std::string& program, uint32_t timeout_ms);
+  void close_channels();
   bool wait_ms(uint32_t ms);
 
   pid_t pid_ = -1;

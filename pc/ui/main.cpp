@@ -92,99 +92,113 @@ void settle(JoystickDevice& joystick) {
   }
 }
 
-int run(int argc, char** argv) {
-  const ParsedCommandLine parsed = parse_command_line(std::vector<std::string>(argv + 1, argv + argc));
-  if (!parsed.error.empty()) throw Failure{kUsageError, parsed.error};
-  const Options& options = parsed.options;
-  if (options.help) {
-    std::fputs(usage_text().c_str(), stdout);
-    return 0;
-  }
-  if (!::isatty(STDIN_FILENO) || !::isatty(STDOUT_FILENO)) throw Failure{kUsageError, "qrterm needs a terminal"};
-
-  const StartedParams params = load_params(options.params);
+// A joystick, unless --no-joystick; it must be there when asked for.
+std::unique_ptr<JoystickDevice> open_joystick(const Options& options) {
+  if (options.no_joystick) return nullptr;
+  const JoystickMap map = load_joystick_map(options.joystick_map);
   std::unique_ptr<JoystickDevice> joystick;
-  if (!options.no_joystick) {
-    const JoystickMap map = load_joystick_map(options.joystick_map);
-    try {
-      joystick = std::make_unique<JoystickDevice>(options.joystick, map);
-    } catch (const JoystickError& e) {
-      // An error, not a warning: the fire button is the pilot's abort, and a pilot who expects it
-      // must not find out in the air that it is not there.
-      throw Failure{
-          kUsageError,
-          std::string(e.what()) +
-              "\n  plug one in, name another with --joystick PATH, or fly with the keyboard only: --no-joystick"};
-    }
-    settle(*joystick);
+  try {
+    joystick = std::make_unique<JoystickDevice>(options.joystick, map);
+  } catch (const JoystickError& e) {
+    // An error, not a warning: the fire button is the pilot's abort, and a pilot who expects it
+    // must not find out in the air that it is not there.
+    throw Failure{
+        kUsageError,
+        std::string(e.what()) +
+            "\n  plug one in, name another with --joystick PATH, or fly with the keyboard only: --no-joystick"};
   }
+  settle(*joystick);
+  return joystick;
+}
 
-  std::unique_ptr<SimProcess> sim;
+// The QR's serial line: a port (--port), or the simulator started here and its pty.
+struct QrLine {
+  std::unique_ptr<SimProcess> sim;  // null on a port
+  std::unique_ptr<SerialPort> serial;
+  std::string source;  // for the title and the log: "sim /dev/pts/3", "/dev/ttyUSB0 115200"
+};
+
+QrLine open_qr_line(const Options& options) {
+  QrLine line;
   std::string serial_path;
-  std::string source;
   if (options.port) {
     serial_path = *options.port;
-    source = serial_path + " " + std::to_string(options.baud);
+    line.source = serial_path + " " + std::to_string(options.baud);
   } else {
     const std::string program = options.sim.empty() ? folder_of_this_program() + "/../qr/qrsim" : options.sim;
     std::vector<std::string> arguments{"--serve", "--truth-fd", std::to_string(SimProcess::kTruthFd)};
     arguments.insert(arguments.end(), options.sim_arguments.begin(), options.sim_arguments.end());
     try {
-      sim = std::make_unique<SimProcess>(program, arguments, kSimStartTimeoutMs);
+      line.sim = std::make_unique<SimProcess>(program, arguments, kSimStartTimeoutMs);
     } catch (const SimError& e) {
       throw Failure{kStartError, e.what()};
     }
-    serial_path = sim->serial_path();
-    source = "sim " + serial_path;
+    serial_path = line.sim->serial_path();
+    line.source = "sim " + serial_path;
   }
-  std::unique_ptr<SerialPort> serial;
   try {
-    serial = std::make_unique<SerialPort>(serial_path, options.baud);
+    line.serial = std::make_unique<SerialPort>(serial_path, options.baud);
   } catch (const SerialError& e) {
     throw Failure{kStartError, e.what()};
   }
-  // Made once the QR is reachable: a start that failed leaves no empty folder behind.
-  const std::string log_folder = options.log_dir.empty() ? default_log_folder() : options.log_dir;
-  try {
-    make_folders(log_folder);
-  } catch (const LogFolderError& e) {
-    throw Failure{kStartError, e.what()};
+  return line;
+}
+
+// The session's files in the log folder, open for the whole session; rx.hex is started again
+// when full (ConsoleFiles::restart_rx_hex).
+class SessionFiles {
+ public:
+  explicit SessionFiles(std::string folder) : folder_(std::move(folder)) {
+    // Made once the QR is reachable: a start that failed leaves no empty folder behind.
+    try {
+      make_folders(folder_);
+    } catch (const LogFolderError& e) {
+      throw Failure{kStartError, e.what()};
+    }
+    console_ = open_in(folder_, "console.log");
+    hex_ = open_in(folder_, "rx.hex");
+    telemetry_ = open_in(folder_, "telemetry.csv");
+    if (!console_ || !hex_ || !telemetry_) throw Failure{kStartError, "cannot write files in " + folder_};
   }
 
-  std::unique_ptr<std::ofstream> console_file = open_in(log_folder, "console.log");
-  std::unique_ptr<std::ofstream> hex_file = open_in(log_folder, "rx.hex");
-  std::unique_ptr<std::ofstream> telemetry_file = open_in(log_folder, "telemetry.csv");
-  if (!console_file || !hex_file || !telemetry_file) throw Failure{kStartError, "cannot write files in " + log_folder};
+  SessionFiles(const SessionFiles&) = delete;
+  SessionFiles& operator=(const SessionFiles&) = delete;
 
-  ConsoleLog log(500, console_file.get());
-  ConsoleFiles files;
-  files.rx_hex = hex_file.get();
-  files.restart_rx_hex = [&hex_file, log_folder]() -> std::ostream* {
-    hex_file.reset();
-    const std::string path = log_folder + "/rx.hex";
-    std::rename(path.c_str(), (log_folder + "/rx.old.hex").c_str());
-    hex_file = open_in(log_folder, "rx.hex");
-    return hex_file.get();
-  };
-  files.telemetry_csv = telemetry_file.get();
-  files.open = [log_folder](const std::string& name) -> std::unique_ptr<std::ostream> {
-    return open_in(log_folder, name);
-  };
-  files.rename = [log_folder](const std::string& from, const std::string& to) {
-    return rename_in(log_folder, from, to);
-  };
-  Console::Setup setup;
-  setup.params = params.values;
-  setup.joystick = joystick != nullptr;
-  setup.first_seq = static_cast<uint8_t>(::time(nullptr));
-  setup.simulator = sim != nullptr;
-  setup.params_file = options.params;
-  Console console(log, std::move(files), setup, monotonic_ms());
+  const std::string& folder() const { return folder_; }
+  std::ostream* console_log() const { return console_.get(); }
 
-  console.note(Severity::info,
-               "qrterm on " + source + (sim ? " (simulator pid " + std::to_string(sim->pid()) + ")" : ""));
-  if (sim) {
-    for (const std::string& line : sim->early_output()) console.note(Severity::info, "sim: " + line);
+  ConsoleFiles for_console() {
+    ConsoleFiles files;
+    files.rx_hex = hex_.get();
+    files.restart_rx_hex = [this]() -> std::ostream* {
+      hex_.reset();
+      const std::string path = folder_ + "/rx.hex";
+      std::rename(path.c_str(), (folder_ + "/rx.old.hex").c_str());
+      hex_ = open_in(folder_, "rx.hex");
+      return hex_.get();
+    };
+    files.telemetry_csv = telemetry_.get();
+    const std::string folder = folder_;
+    files.open = [folder](const std::string& name) -> std::unique_ptr<std::ostream> { return open_in(folder, name); };
+    files.rename = [folder](const std::string& from, const std::string& to) { return rename_in(folder, from, to); };
+    return files;
+  }
+
+ private:
+  std::string folder_;
+  std::unique_ptr<std::ofstream> console_;
+  std::unique_ptr<std::ofstream> hex_;
+  std::unique_ptr<std::ofstream> telemetry_;
+};
+
+// The first lines of the log: where the console flies, where it writes, and whether the joystick
+// is neutral, so a refused flight mode is no surprise.
+void note_start(Console& console, const QrLine& line, const std::string& log_folder, const StartedParams& params,
+                JoystickDevice* joystick, const Options& options) {
+  console.note(Severity::info, "qrterm on " + line.source +
+                                   (line.sim ? " (simulator pid " + std::to_string(line.sim->pid()) + ")" : ""));
+  if (line.sim) {
+    for (const std::string& text : line.sim->early_output()) console.note(Severity::info, "sim: " + text);
   }
   console.note(Severity::info, "logs in " + log_folder);
   console.note(Severity::info, params.note);
@@ -202,20 +216,12 @@ int run(int argc, char** argv) {
     console.note(Severity::info, "no joystick: keyboard only");
   }
   console.note(Severity::info, "h or ? shows the keys");
+}
 
-  install_signal_handlers();
-  bool confirmed = false;
-  {
-    Terminal terminal;
-    Cockpit cockpit({source, log_folder, joystick ? options.joystick : std::string()});
-    Session session{console, *serial, sim.get(), joystick.get(), terminal, cockpit};
-    run_main_loop(session);
-    confirmed = console.exit_confirmed();
-    const std::string latency = cockpit.latency_summary();
-    if (!latency.empty()) console.note(Severity::info, latency);
-  }
-  if (sim) sim->stop(confirmed ? 1000 : 0);
-
+// After the screen is closed, on the ordinary terminal: how the session ended, the parameters
+// saved for the next start (which changed, and how back), and where the logs are.
+void say_goodbye(const ConsoleLog& log, const Console& console, const StartedParams& params, const Options& options,
+                 const std::string& log_folder) {
   // Gains changed by keys (perhaps a stray one) load at the next start: say which, and how back.
   const std::string changes = describe_changes(params.values, console.params());
   const std::string saved = write_file_atomically(options.params, format_param_file(console.params()));
@@ -235,6 +241,46 @@ int run(int argc, char** argv) {
                  options.params.c_str(), changes.c_str());
   }
   std::fprintf(stderr, "qrterm: logs in %s\n", log_folder.c_str());
+}
+
+int run(int argc, char** argv) {
+  const ParsedCommandLine parsed = parse_command_line(std::vector<std::string>(argv + 1, argv + argc));
+  if (!parsed.error.empty()) throw Failure{kUsageError, parsed.error};
+  const Options& options = parsed.options;
+  if (options.help) {
+    std::fputs(usage_text().c_str(), stdout);
+    return 0;
+  }
+  if (!::isatty(STDIN_FILENO) || !::isatty(STDOUT_FILENO)) throw Failure{kUsageError, "qrterm needs a terminal"};
+
+  const StartedParams params = load_params(options.params);
+  std::unique_ptr<JoystickDevice> joystick = open_joystick(options);
+  QrLine line = open_qr_line(options);
+  SessionFiles files(options.log_dir.empty() ? default_log_folder() : options.log_dir);
+
+  ConsoleLog log(500, files.console_log());
+  Console::Setup setup;
+  setup.params = params.values;
+  setup.joystick = joystick != nullptr;
+  setup.first_seq = static_cast<uint8_t>(::time(nullptr));
+  setup.simulator = line.sim != nullptr;
+  setup.params_file = options.params;
+  Console console(log, files.for_console(), setup, monotonic_ms());
+  note_start(console, line, files.folder(), params, joystick.get(), options);
+
+  install_signal_handlers();
+  bool confirmed = false;
+  {
+    Terminal terminal;
+    Cockpit cockpit({line.source, files.folder(), joystick ? options.joystick : std::string()});
+    Session session{console, *line.serial, line.sim.get(), joystick.get(), terminal, cockpit};
+    run_main_loop(session);
+    confirmed = console.exit_confirmed();
+    const std::string latency = cockpit.latency_summary();
+    if (!latency.empty()) console.note(Severity::info, latency);
+  }
+  if (line.sim) line.sim->stop(confirmed ? 1000 : 0);
+  say_goodbye(log, console, params, options, files.folder());
   return 0;
 }
 
