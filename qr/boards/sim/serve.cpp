@@ -184,9 +184,9 @@ class ServeReports {
 
   void finish(const ServeOutput& out) const {
     if (out.frames_dropped() == 0) return;
-    std::fprintf(stderr, "qrsim: %llu of the QR's frames (%llu bytes) dropped in all, the serial line not read\n",
-                 static_cast<unsigned long long>(out.frames_dropped()),
-                 static_cast<unsigned long long>(out.bytes_dropped()));
+    std::fprintf(
+        stderr, "qrsim: %llu of the QR's frames (%llu bytes) dropped in all while nobody read the serial line\n",
+        static_cast<unsigned long long>(out.frames_dropped()), static_cast<unsigned long long>(out.bytes_dropped()));
   }
 
  private:
