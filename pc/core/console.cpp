@@ -444,59 +444,15 @@ void Console::on_attitude(const wire::TelemetryAttitude& attitude) {
   recordings_.telemetry_row(now_ms_ - start_ms_, telemetry_, last_control_);
 }
 
-namespace {
-
-// The descent warning's log line: what, where, why, and what to do.
-std::string sinking_text(const DescentVerdict& verdict, double height_m, double climb_m_s, const char* advice) {
-  char why[160];
-  if (verdict.danger == DescentDanger::too_fast_low) {
-    std::snprintf(why, sizeof why, "within %.0f m of the ground, faster than a safe touchdown (%.1f m/s)", kNearGroundM,
-                  kSafeTouchdownMS);
-  } else if (std::isinf(verdict.needed_m)) {
-    std::snprintf(why, sizeof why, "the engines have no lift to spare above the hover: it cannot stop");
-  } else {
-    std::snprintf(why, sizeof why, "it needs %.1f m to stop (%.0f s to act, braking at %.1f m/s^2, %.0f m to spare)",
-                  verdict.needed_m, kReactionS, verdict.spare_m_s2, kMarginM);
-  }
-  char line[240];
-  std::snprintf(line, sizeof line, "SINKING %.1f m/s at %.1f m: %s; %s", -climb_m_s, height_m, why, advice);
-  return line;
-}
-
-}  // namespace
-
 void Console::on_height(const wire::TelemetryHeight& height) {
   telemetry_.on(height);
-  const bool valid = (height.flags & wire::kHeightValid) != 0;
-  const bool flying = telemetry_.flag(wire::kFlagFlying);
-  const double h = height.height_mm / 1000.0, v = height.climb_mm_s / 1000.0;
-  const DescentVerdict verdict = valid ? judge_descent(h, v, height.hover_lift, flying) : DescentVerdict{};
-  if (verdict.warn) {
-    if (!sinking_) {
-      // What the pilot can do: the console's lift keys, unless the QR ignores them (panic) or
-      // flies a real radio's sticks (the simulator's radio takes the console's).
-      const char* advice = sinking_in_panic() ? "the QR is in panic: the sticks do nothing, it comes down by itself"
-                           : radio_flies(telemetry_) && !simulator_.present() ? "lift now, on the radio's throttle"
-                                                                              : "lift now (PgUp)";
-      note(Severity::error, sinking_text(verdict, h, v, advice));
-    }
-    sinking_ = Sinking{-v, now_ms_};
-    return;
-  }
-  if (!sinking_) return;
-  // Landed ends it at once (the ground has stopped the descent); else it holds a moment.
-  if (!flying || !valid || now_ms_ - sinking_->last_warn_ms >= kSinkingHoldMs) {
-    sinking_.reset();
-  } else {
-    sinking_->speed_m_s = -v;
-  }
+  const std::string warning = descent_.on_height(height, telemetry_, simulator_.present(), now_ms_);
+  if (!warning.empty()) note(Severity::error, warning);
 }
 
-bool Console::sinking_in_panic() const { return telemetry_.attitude && telemetry_.attitude->mode == wire::Mode::panic; }
-
 std::optional<double> Console::sinking_m_s() const {
-  if (!sinking_ || link_state_ != LinkState::up) return std::nullopt;
-  return sinking_->speed_m_s;
+  if (link_state_ != LinkState::up) return std::nullopt;
+  return descent_.speed_m_s();
 }
 
 void Console::on_log_status(const wire::LogStatus& status) {

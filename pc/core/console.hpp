@@ -38,10 +38,6 @@ namespace qrterm {
 // The QR's control rate until it says its own (docs/architecture.md: 1 kHz by default).
 inline constexpr uint32_t kDefaultControlHz = 1000;
 
-// The descent warning stays up until its rule has been clear for this long: a climb rate that
-// wavers about the threshold does not make it blink, nor write a log line at each blink.
-inline constexpr uint32_t kSinkingHoldMs = 1000;
-
 enum class JoystickState : uint8_t {
   none,  // keyboard only (--no-joystick)
   ok,
@@ -99,7 +95,7 @@ class Console {
   // speed now, m/s, down.
   std::optional<double> sinking_m_s() const;
   // The QR is in panic: the sticks do nothing, so the warning asks for no lift.
-  bool sinking_in_panic() const;
+  bool sinking_in_panic() const { return qrterm::sinking_in_panic(telemetry_); }
   uint32_t now_ms() const { return now_ms_; }
   uint32_t uptime_ms() const { return now_ms_ - start_ms_; }
   LinkState link_state() const { return link_.state(now_ms_); }
@@ -185,11 +181,7 @@ class Console {
   SimulatorControls simulator_;
   ExitHandshake exit_;
   std::optional<wire::Mode> requested_mode_;
-  struct Sinking {
-    double speed_m_s;       // down, the latest report's
-    uint32_t last_warn_ms;  // the last report whose verdict warned
-  };
-  std::optional<Sinking> sinking_;
+  DescentWatch descent_;
   uint32_t invalid_frames_ = 0;
   uint32_t unhandled_frames_ = 0;
   std::set<uint8_t> unhandled_types_;

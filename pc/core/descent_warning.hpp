@@ -15,9 +15,18 @@
 // and spares g ((1000 / hover)^2 - 1) upwards; the rule counts on kSpareShare of that. Before the
 // QR has learnt its hover the conservative kUnknownSpareMS2 stands in. docs/console.md ("The
 // descent warning") gives the reasons for each figure.
+//
+// DescentWatch keeps the warning standing over the reports: it rises with one log line that says
+// what the pilot can do, and holds a moment after the rule is clear.
 #pragma once
 
 #include <stdint.h>
+
+#include <optional>
+#include <string>
+
+#include <common/telemetry.hpp>
+#include <pc/core/telemetry_model.hpp>
 
 namespace qrterm {
 
@@ -63,5 +72,30 @@ double spare_acceleration_m_s2(uint16_t hover_lift);
 // The rule above. height_m and climb_m_s are the QR's estimates; flying is its flying/landed
 // verdict (telemetry flag kFlagFlying).
 DescentVerdict judge_descent(double height_m, double climb_m_s, uint16_t hover_lift, bool flying);
+
+// The descent warning stays up until its rule has been clear for this long: a climb rate that
+// wavers about the threshold does not make it blink, nor write a log line at each blink.
+inline constexpr uint32_t kSinkingHoldMs = 1000;
+
+class DescentWatch {
+ public:
+  // A height report, judged with the telemetry that holds it (the flying flag, the mode, who
+  // flies) and whether the console flies the simulator. Returns the log line when the warning
+  // rises; empty otherwise.
+  std::string on_height(const wire::TelemetryHeight& height, const TelemetryModel& telemetry, bool simulator,
+                        uint32_t now_ms);
+  // While the warning stands: the descent speed now, m/s, down.
+  std::optional<double> speed_m_s() const;
+
+ private:
+  struct Sinking {
+    double speed_m_s;       // down, the latest report's
+    uint32_t last_warn_ms;  // the last report whose verdict warned
+  };
+  std::optional<Sinking> sinking_;
+};
+
+// The QR is in panic: the sticks do nothing, so the warning asks for no lift.
+bool sinking_in_panic(const TelemetryModel& telemetry);
 
 }  // namespace qrterm
