@@ -81,10 +81,9 @@ Console::Console(ConsoleLog& log, ConsoleFiles files, const Setup& setup, uint32
           [this] { return link_.pending(wire::MessageType::log_resend); }, note_hook(),
           [this](const std::string& name) { return recordings_.open(name); },
           [this](const std::string& from, const std::string& to) { return recordings_.rename(from, to); }}),
-      joystick_(setup.joystick ? JoystickState::ok : JoystickState::none), simulator_(setup.simulator, note_hook()),
-      exit_(note_hook()),
+      input_(setup.joystick), simulator_(setup.simulator, note_hook()), exit_(note_hook()),
       streams_(StreamSession::Hooks{note_hook(), [this](const std::string& name) { return recordings_.open(name); }}),
-      editor_(setup.params, setup.params_file) {}
+      editor_(setup.params, setup.params_file), screens_(streams_, editor_, parameters_, note_hook()) {}
 
 void Console::set_time(uint32_t now_ms) { now_ms_ = now_ms; }
 
@@ -116,40 +115,24 @@ uint32_t Console::telemetry_hz() const {
 
 void Console::key(Key key, uint32_t now_ms) {
   set_time(now_ms);
-  // A prompt takes the typing; the abort keys and ^C still act (and close it).
-  if (prompt_ && key != kKeyEscape && key != kKeyInterrupt) return prompt_key(key);
-  if (prompt_) prompt_.reset();
-  if (key == kKeyTab) {
-    help_ = false;
-    escape_armed_ = false;
-    screen_ = static_cast<Screen>((static_cast<size_t>(screen_) + 1) % kScreenCount);
-    return;
-  }
-  if (screen_key(key)) {
-    help_ = false;
-    escape_armed_ = false;
-    return;
-  }
-  const Action action = action_for(key);
-  const bool second_escape = escape_armed_ && action == Action::abort;
-  escape_armed_ = action == Action::abort && !second_escape;
-  if (action != Action::help) help_ = false;  // any other key closes the help, and still acts
-  if (second_escape) {
+  const ScreenState::Taken taken = screens_.key(key, uptime_ms() / 1000.0);
+  if (taken == ScreenState::Taken::by_screen) input_.screen_key();
+  if (taken != ScreenState::Taken::no) return;
+  const CockpitKey pressed = input_.cockpit_key(key);
+  if (pressed.action != Action::help) screens_.close_help();
+  if (pressed.second_escape) {
     request_exit(now_ms);
-  } else if (action == Action::none) {
+  } else if (pressed.action == Action::none) {
     note(Severity::warning, "key " + key_name(key) + " does nothing (h: help)");
   } else {
-    act(action, now_ms);
+    act(pressed.action, now_ms);
   }
 }
 
 void Console::act(Action action, uint32_t now_ms) {
   set_time(now_ms);
   if (action == Action::abort) return abort("ESC");
-  if (action == Action::help) {
-    help_ = !help_;
-    return;
-  }
+  if (action == Action::help) return screens_.toggle_help();
   // While exiting only an abort is still obeyed: the QR is on its way to safe already.
   if (!exit_.running()) return;
   if (action == Action::exit) return request_exit(now_ms);
@@ -191,83 +174,6 @@ void Console::act(Action action, uint32_t now_ms) {
   }
 }
 
-bool Console::screen_key(Key key) {
-  const ScreenAction action = screen_action(screen_, key);
-  const double now_s = uptime_ms() / 1000.0;
-  PlotModel& plot = streams_.plot();
-  switch (action) {
-    case ScreenAction::none: return false;
-    case ScreenAction::plot_pick: prompt_ = Prompt{PromptKind::observables, ""}; break;
-    case ScreenAction::plot_remove_last: streams_.remove_last(); break;
-    case ScreenAction::plot_window: plot.next_window(); break;
-    case ScreenAction::plot_scale: plot.toggle_scale(now_s); break;
-    case ScreenAction::plot_zoom_in: plot.zoom(0.5, now_s); break;
-    case ScreenAction::plot_zoom_out: plot.zoom(2.0, now_s); break;
-    case ScreenAction::plot_freeze: plot.toggle_freeze(now_s); break;
-    case ScreenAction::plot_faster: streams_.faster(); break;
-    case ScreenAction::plot_slower: streams_.slower(); break;
-    case ScreenAction::param_previous: editor_.move(-1); break;
-    case ScreenAction::param_next: editor_.move(1); break;
-    case ScreenAction::param_step_down: editor_.step(parameters_, -1); break;
-    case ScreenAction::param_step_up: editor_.step(parameters_, 1); break;
-    case ScreenAction::param_type: prompt_ = Prompt{PromptKind::value, ""}; break;
-    case ScreenAction::param_default: editor_.reset_default(parameters_); break;
-    case ScreenAction::param_all_defaults: {
-      const size_t changed = editor_.reset_all_defaults(parameters_);
-      note(Severity::info, changed == 0 ? std::string("every parameter is at its default already")
-                                        : "every parameter to its default: " + std::to_string(changed) + " changed");
-      break;
-    }
-    case ScreenAction::param_save: prompt_ = Prompt{PromptKind::save, editor_.file_name()}; break;
-    case ScreenAction::param_load: prompt_ = Prompt{PromptKind::load, ""}; break;
-  }
-  return true;
-}
-
-void Console::prompt_key(Key key) {
-  Prompt& prompt = *prompt_;
-  if (key == kKeyEnter) {
-    const Prompt done = prompt;
-    prompt_.reset();
-    return submit_prompt(done);
-  }
-  if (key == kKeyBackspace) {
-    if (!prompt.text.empty()) prompt.text.pop_back();
-    return;
-  }
-  if (key == kKeyTab && prompt.kind == PromptKind::observables) {
-    // Completes the last word from the QR's table when one name fits.
-    const size_t start = prompt.text.find_last_of(' ') + 1;
-    const std::vector<std::string> names = streams_.catalog().names_starting(prompt.text.substr(start));
-    if (names.size() == 1) prompt.text = prompt.text.substr(0, start) + names[0] + " ";
-    return;
-  }
-  if (key >= ' ' && key < 0x7F && prompt.text.size() < 64) prompt.text += static_cast<char>(key);
-}
-
-void Console::submit_prompt(const Prompt& prompt) {
-  switch (prompt.kind) {
-    case PromptKind::observables: streams_.pick(prompt.text); break;
-    case PromptKind::value: {
-      const std::string error = editor_.set_typed(parameters_, prompt.text);
-      if (!error.empty()) note(Severity::warning, error);
-      break;
-    }
-    case PromptKind::save: {
-      const std::string error = editor_.save(parameters_, prompt.text);
-      note(error.empty() ? Severity::info : Severity::error,
-           error.empty() ? "parameters saved to " + prompt.text : error);
-      break;
-    }
-    case PromptKind::load: {
-      const std::string error = editor_.load(parameters_, prompt.text);
-      note(error.empty() ? Severity::info : Severity::error,
-           error.empty() ? "parameters loaded from " + prompt.text : error);
-      break;
-    }
-  }
-}
-
 void Console::on_read_back(const wire::ParamReport& report) {
   if (read_back_left_ == 0) return;
   const wire::ParameterSpec* spec = wire::find_parameter(report.id);
@@ -305,14 +211,8 @@ void Console::request_mode(wire::Mode mode) {
   if (leaving_safe && in_safe) {
     // The QR refuses these too; refusing here as well says exactly what to fix, and keeps a
     // joystick whose position is unknown from ever taking off.
-    std::string reason;
-    if (joystick_ == JoystickState::lost) {
-      reason = "the joystick is gone (plug it back in, or restart with --no-joystick)";
-    } else if (joystick_ == JoystickState::ok && !joystick_known_) {
-      reason = "the joystick has not reported its position yet";
-    } else {
-      reason = controls_.not_neutral_reason();
-    }
+    std::string reason = input_.refuses_flight();
+    if (reason.empty()) reason = controls_.not_neutral_reason();
     if (!reason.empty()) {
       note(Severity::warning, std::string("not asking for ") + mode_name(mode) + ": " + reason);
       return;
@@ -380,7 +280,7 @@ void Console::print_tasks() {
 void Console::joystick_moved(const Sticks& sticks, bool position_known, uint32_t now_ms) {
   set_time(now_ms);
   controls_.set_joystick(sticks);
-  joystick_known_ = position_known;
+  input_.joystick_moved(position_known);
 }
 
 void Console::joystick_fire(uint32_t now_ms) {
@@ -390,9 +290,7 @@ void Console::joystick_fire(uint32_t now_ms) {
 
 void Console::joystick_lost(uint32_t now_ms) {
   set_time(now_ms);
-  if (joystick_ != JoystickState::ok) return;
-  joystick_ = JoystickState::lost;
-  joystick_known_ = false;
+  if (!input_.joystick_lost()) return;
   controls_.set_joystick(Sticks{});
   const bool may_fly = !telemetry_.attitude || (telemetry_.attitude->mode != wire::Mode::safe);
   if (may_fly) {
@@ -404,8 +302,7 @@ void Console::joystick_lost(uint32_t now_ms) {
 
 void Console::joystick_back(uint32_t now_ms) {
   set_time(now_ms);
-  if (joystick_ != JoystickState::lost) return;
-  joystick_ = JoystickState::ok;
+  if (!input_.joystick_back()) return;
   note(Severity::info, "joystick back: centre it and close the throttle before flying");
 }
 

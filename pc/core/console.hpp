@@ -27,8 +27,9 @@
 #include <pc/core/parameter_editor.hpp>
 #include <pc/core/parameter_sync.hpp>
 #include <pc/core/pilot_controls.hpp>
+#include <pc/core/pilot_input.hpp>
 #include <pc/core/recordings.hpp>
-#include <pc/core/screen_keys.hpp>
+#include <pc/core/screen_state.hpp>
 #include <pc/core/simulator_controls.hpp>
 #include <pc/core/stream_session.hpp>
 #include <pc/core/telemetry_model.hpp>
@@ -37,12 +38,6 @@ namespace qrterm {
 
 // The QR's control rate until it says its own (docs/architecture.md: 1 kHz by default).
 inline constexpr uint32_t kDefaultControlHz = 1000;
-
-enum class JoystickState : uint8_t {
-  none,  // keyboard only (--no-joystick)
-  ok,
-  lost,  // it was there and went away
-};
 
 class Console {
  public:
@@ -53,13 +48,6 @@ class Console {
     bool simulator = false;        // the console started qrsim and has its truth channel
     std::string params_file;       // where `params` came from: the parameter screen's "file" column
     size_t rx_hex_part_bytes = kRxHexPartBytes;
-  };
-
-  // A line the pilot is typing on the plot or parameter screen.
-  enum class PromptKind : uint8_t { observables, value, save, load };
-  struct Prompt {
-    PromptKind kind;
-    std::string text;
   };
 
   Console(ConsoleLog& log, ConsoleFiles files, const Setup& setup, uint32_t now_ms);
@@ -105,11 +93,11 @@ class Console {
   const wire::Control& last_control() const { return last_control_; }
   const wire::ParameterValues& params() const { return parameters_.wanted(); }
   std::optional<int32_t> reported(wire::ParamId id) const { return parameters_.reported(id); }
-  JoystickState joystick_state() const { return joystick_; }
-  bool joystick_position_known() const { return joystick_known_; }
-  bool help_visible() const { return help_; }
-  Screen screen() const { return screen_; }
-  const std::optional<Prompt>& prompt() const { return prompt_; }
+  JoystickState joystick_state() const { return input_.joystick(); }
+  bool joystick_position_known() const { return input_.position_known(); }
+  bool help_visible() const { return screens_.help_visible(); }
+  Screen screen() const { return screens_.screen(); }
+  const std::optional<Prompt>& prompt() const { return screens_.prompt(); }
   const StreamSession& streams() const { return streams_; }
   const ParameterEditor& parameter_editor() const { return editor_; }
   const ParameterSync& parameter_sync() const { return parameters_; }
@@ -156,10 +144,6 @@ class Console {
   void on_link_state(LinkState state);
   // A report of the read-back `p` asked for: once all are in, the log says what came back.
   void on_read_back(const wire::ParamReport& report);
-  // The plot and parameter screens' keys; false when the key is not theirs.
-  bool screen_key(Key key);
-  void prompt_key(Key key);
-  void submit_prompt(const Prompt& prompt);
 
   ConsoleLog& log_;
   Recordings recordings_;
@@ -174,10 +158,7 @@ class Console {
   wire::Control last_control_;
   ParameterSync parameters_;
   LogDownloader downloader_;
-  JoystickState joystick_;
-  bool joystick_known_ = false;
-  bool escape_armed_ = false;  // the last key was ESC: another one exits
-  bool help_ = false;
+  PilotInput input_;
   SimulatorControls simulator_;
   ExitHandshake exit_;
   std::optional<wire::Mode> requested_mode_;
@@ -189,8 +170,7 @@ class Console {
   std::vector<std::string> read_back_differ_;
   StreamSession streams_;
   ParameterEditor editor_;
-  Screen screen_ = Screen::cockpit;
-  std::optional<Prompt> prompt_;
+  ScreenState screens_;
 };
 
 }  // namespace qrterm

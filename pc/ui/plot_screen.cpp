@@ -27,7 +27,7 @@ void draw_prompt_or_log(const Console& console, int row, int width) {
     constexpr const char* kAsk[] = {"observables (names, Tab completes, Enter): ", "value (Enter sends): ",
                                     "save parameters to file: ", "load parameters from file: "};
     put(row, 0, std::string(kAsk[static_cast<size_t>(prompt->kind)]) + prompt->text + "_", kTitle, A_BOLD);
-    if (prompt->kind == Console::PromptKind::observables) {
+    if (prompt->kind == PromptKind::observables) {
       const std::string typed = prompt->text.substr(prompt->text.find_last_of(' ') + 1);
       std::string names;
       for (const std::string& n : console.streams().catalog().names_starting(typed)) names += n + " ";

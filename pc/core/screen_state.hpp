@@ -1,0 +1,67 @@
+// What the pilot looks at (docs/console.md "The screen"): which screen, the help over it, and the
+// line being typed on the plot or parameter screen. The keys those screens own (screen_keys.hpp)
+// act here, on the plot's streams and on the parameter editor; every other key is the cockpit's,
+// so the pilot flies from any screen.
+#pragma once
+
+#include <stdint.h>
+
+#include <functional>
+#include <optional>
+#include <string>
+
+#include <pc/core/console_log.hpp>
+#include <pc/core/key.hpp>
+#include <pc/core/parameter_editor.hpp>
+#include <pc/core/parameter_sync.hpp>
+#include <pc/core/screen_keys.hpp>
+#include <pc/core/stream_session.hpp>
+
+namespace qrterm {
+
+// A line the pilot is typing on the plot or parameter screen.
+enum class PromptKind : uint8_t { observables, value, save, load };
+struct Prompt {
+  PromptKind kind;
+  std::string text;
+};
+
+class ScreenState {
+ public:
+  using Note = std::function<void(Severity, const std::string&)>;
+
+  ScreenState(StreamSession& streams, ParameterEditor& editor, ParameterSync& parameters, Note note)
+      : streams_(streams), editor_(editor), parameters_(parameters), note_(std::move(note)) {}
+
+  enum class Taken : uint8_t {
+    no,         // the cockpit's key
+    by_prompt,  // typed into the prompt
+    by_screen,  // Tab, or a key of the screen shown
+  };
+  // A key, before the cockpit's key map. The prompt takes the typing; the abort keys and ^C still
+  // act, and close it. `now_s`: the console's clock, for the plot.
+  Taken key(Key key, double now_s);
+
+  void toggle_help() { help_ = !help_; }
+  // Any key but the help key closes the help, and still acts.
+  void close_help() { help_ = false; }
+
+  Screen screen() const { return screen_; }
+  bool help_visible() const { return help_; }
+  const std::optional<Prompt>& prompt() const { return prompt_; }
+
+ private:
+  bool screen_key(Key key, double now_s);
+  void prompt_key(Key key);
+  void submit(const Prompt& prompt);
+
+  StreamSession& streams_;
+  ParameterEditor& editor_;
+  ParameterSync& parameters_;
+  Note note_;
+  Screen screen_ = Screen::cockpit;
+  bool help_ = false;
+  std::optional<Prompt> prompt_;
+};
+
+}  // namespace qrterm
