@@ -3,7 +3,8 @@
 // drops every attitude frame in height hold). The host build of the firmware flies in the
 // simulator through every mode, with its logs on and filling up, streams running, its parameters
 // and observables asked for, requests refused and the logs downloaded; a second flight has the
-// radio as the pilot (telemetry_radio); DShot ESCs answer in both (telemetry_rpm). Every frame
+// radio as the pilot (telemetry_radio); a third flies an overloaded vehicle in height hold (the
+// learnt hover at full lift); DShot ESCs answer in all (telemetry_rpm). Every frame
 // the console's parser takes is read at the page's offsets and each field checked against the
 // page's range (protocol_page::FrameJudge): the next mode or field the QR gains cannot leave the
 // page behind unnoticed. The report lists each field's range beside what the flights sent.
@@ -39,8 +40,8 @@ constexpr double kPeriodS = 1.0 / qr::kControlHz;
 // One simulated QR and the console's end of its line, flown a control period at a time.
 class Sortie {
  public:
-  Sortie(FrameJudge& judge, uint64_t seed)
-      : qr_(qrsim::make_qr(sim::default_vehicle(), sim::WorldConfig{.seed = seed})), pilot_(qr_->board) {
+  Sortie(FrameJudge& judge, uint64_t seed, const sim::VehicleParams& vehicle = sim::default_vehicle())
+      : qr_(qrsim::make_qr(vehicle, sim::WorldConfig{.seed = seed})), pilot_(qr_->board) {
     // Bidirectional DShot ESCs, so the QR has engine speeds to report (telemetry_rpm).
     qr_->board.use_dshot(static_cast<uint8_t>(qr_->firmware.parameters().get(wire::ParamId::motor_poles) / 2));
     judge.new_flight();
@@ -146,17 +147,17 @@ void fly_from_the_pc(FrameJudge& judge) {
   pilot.request_mode(Mode::yaw_control);  // nack not_calibrated
   ASSERT_TRUE(s.answered(wire::MessageType::mode_change));
 
-  pilot.request_mode(Mode::manual);
-  ASSERT_TRUE(s.in_mode(Mode::manual));
-  s.pass(0.3);
-  pilot.request_mode(Mode::safe);  // through panic, as from every flying mode
-  ASSERT_TRUE(s.in_mode(Mode::safe, 10));
   ASSERT_TRUE(s.calibrate());
-  pilot.request_mode(Mode::yaw_control);
-  ASSERT_TRUE(s.in_mode(Mode::yaw_control));
-  s.pass(0.3);
-  pilot.request_mode(Mode::safe);  // through panic, as from every flying mode
-  ASSERT_TRUE(s.in_mode(Mode::safe, 10));
+  // Every flying mode a request enters from safe, a moment each on the ground (full control flies
+  // below): the mode table's rows, so a mode added there is flown here.
+  for (const wire::ModeSpec& row : wire::kModeTable) {
+    if (!row.flies || row.entered_from != Mode::safe || row.mode == Mode::full_control) continue;
+    pilot.request_mode(row.mode);
+    ASSERT_TRUE(s.in_mode(row.mode)) << row.key;
+    s.pass(0.3);
+    pilot.request_mode(Mode::safe);  // through panic, as from every flying mode
+    ASSERT_TRUE(s.in_mode(Mode::safe, 10));
+  }
 
   // A log line every this many periods fills the logs in about 12 s: during the flight, so the
   // lines hold full control and height hold, and the log-full bits are set while telemetry runs.
@@ -182,16 +183,20 @@ void fly_from_the_pc(FrameJudge& judge) {
   pilot.request_mode(Mode::full_control);
   ASSERT_TRUE(s.in_mode(Mode::full_control));
   ASSERT_TRUE(s.take_off());
-  // Height hold: the lift stick held still, as the pilot toggles it; a roll stick while it holds.
-  const uint16_t still = pilot.sticks().lift;
-  pilot.set_sticks({still, 0, 0, 0});
-  pilot.request_mode(Mode::height_hold);
-  ASSERT_TRUE(s.in_mode(Mode::height_hold));
-  s.pass(1.5);
-  s.pass(1.5, [&] { pilot.set_sticks({still, 150, 0, 0}); });
-  s.pass(1.0, [&] { pilot.set_sticks({still, 0, 0, 0}); });
-  pilot.set_sticks({static_cast<uint16_t>(still + 30), 0, 0, 0});  // a lift change ends it
-  ASSERT_TRUE(s.in_mode(Mode::full_control));
+  // Every mode entered from full control (height hold), in the air: the lift stick held still as
+  // the pilot toggles it, a roll stick while it holds, then back to full control.
+  for (const wire::ModeSpec& row : wire::kModeTable) {
+    if (row.entered_from != Mode::full_control) continue;
+    const uint16_t still = pilot.sticks().lift;
+    pilot.set_sticks({still, 0, 0, 0});
+    pilot.request_mode(row.mode);
+    ASSERT_TRUE(s.in_mode(row.mode)) << row.key;
+    s.pass(1.5);
+    s.pass(1.5, [&] { pilot.set_sticks({still, 150, 0, 0}); });
+    s.pass(1.0, [&] { pilot.set_sticks({still, 0, 0, 0}); });
+    pilot.request_mode(Mode::full_control);
+    ASSERT_TRUE(s.in_mode(Mode::full_control));
+  }
   s.pass(0.8, [&] { s.hold_height(400, 0, 0); });
   s.pass(0.8, [&] { s.hold_height(-400, 400, 0); });
   s.pass(1.0, [&] { s.hold_height(0, 0, 600); });
@@ -240,6 +245,35 @@ void fly_with_the_radio(FrameJudge& judge) {
   ASSERT_TRUE(s.land_in_panic());
 }
 
+// An overloaded vehicle, hovering near full lift, in height hold: the vertical loop asks for more
+// thrust than the engines give, and the landed detector learns the hover from the thrust asked
+// for. telemetry_height's hover_lift must still read 0..1000: it read up to 1090, and past 1048
+// the firmware's square root ran off its seed table and divided by zero (SIGFPE in this test).
+void fly_overloaded(FrameJudge& judge) {
+  sim::VehicleParams vehicle = sim::default_vehicle();
+  vehicle.mass_kg *= 2.85;  // a hover command of about 980
+  Sortie s(judge, 4, vehicle);
+  s.pass(0.3);
+  ASSERT_TRUE(s.calibrate());
+  s.pilot().request_mode(Mode::full_control);
+  ASSERT_TRUE(s.in_mode(Mode::full_control));
+  ASSERT_TRUE(s.take_off());
+  const uint16_t still = s.pilot().sticks().lift;
+  s.pilot().set_sticks({still, 0, 0, 0});
+  s.pilot().request_mode(Mode::height_hold);
+  ASSERT_TRUE(s.in_mode(Mode::height_hold));
+  // Until the learnt hover reaches full lift (15 s on this vehicle as the firmware learns today);
+  // not asserted, as a detector that learnt only the thrust given would never get there.
+  const auto full = [&] {
+    const auto it = judge.seen().find("telemetry_height.hover_lift");
+    return it != judge.seen().end() && it->second.max >= wire::kLiftMax;
+  };
+  const double start = s.now();
+  while (!full() && !s.stopped() && s.now() - start < 30) s.pass(0.1);
+  std::printf("overloaded: hover_lift %s after %.1f s of height hold\n", full() ? "at full lift" : "below full lift",
+              s.now() - start);
+}
+
 std::string values_text(const protocol_page::Seen& seen) {
   std::string text;
   for (const auto& [value, count] : seen.values) text += (text.empty() ? "" : " ") + std::to_string(value);
@@ -286,6 +320,7 @@ TEST(ProtocolFlight, EveryFrameTheQrSendsIsWithinThePagesRanges) {
   FrameJudge judge(page, parameter_in_range);
   fly_from_the_pc(judge);
   fly_with_the_radio(judge);
+  fly_overloaded(judge);
   print_report(page, judge);
 
   for (const std::string& v : judge.violations()) ADD_FAILURE() << v;
@@ -308,7 +343,8 @@ TEST(ProtocolFlight, EveryFrameTheQrSendsIsWithinThePagesRanges) {
   };
   std::set<long long> every_mode;
   for (uint8_t m = 0; m < wire::kModeCount; ++m) every_mode.insert(m);
-  EXPECT_EQ(values("telemetry_attitude.mode"), every_mode) << "every mode on the attitude frames";
+  EXPECT_EQ(values("telemetry_attitude.mode"), every_mode)
+      << "every mode on the attitude frames: a new mode is flown in fly_from_the_pc";
   EXPECT_TRUE(values("telemetry log record.mode").count(static_cast<long long>(Mode::height_hold)))
       << "height hold in the telemetry log";
   // Every flag bit the page lists came at least once: the page lists none the QR never sets.

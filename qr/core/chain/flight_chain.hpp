@@ -319,8 +319,16 @@ class FlightChain {
   uint16_t lift() const { return pilot_.lift(); }
   // On the ground (landed_detector.hpp): the controllers' integrals are held empty.
   bool landed() const { return landed_.landed(); }
-  // The hover lift the landed detector learnt in flight, engine units (0: not learnt yet).
-  uint16_t hover_lift() const { return static_cast<uint16_t>(mixer_.engine_of_thrust(landed_.hover())); }
+  // The hover lift the landed detector learnt in flight, engine units (0: not learnt yet), at most
+  // full lift. The detector learns the thrust asked for, which near full lift passes what the
+  // engines give (1100 asked at 1 g teaches 1049), and engine_of_thrust holds only up to full
+  // thrust as the mixer calls it (past 1048.6 its root's seed table ends: on the host a division
+  // by zero); telemetry_height's 0..1000 refuses more (docs/protocol.md).
+  uint16_t hover_lift() const {
+    const Thrust hover = landed_.hover();
+    const Thrust full = chain::EngineMixer<Num>::kFullThrust;
+    return static_cast<uint16_t>(mixer_.engine_of_thrust(hover < full ? hover : full));
+  }
   // The larger magnitude, then one conversion: scaling and rounding keep the order, so this is the
   // larger of the two converted (the safety machine reads it every tick).
   int32_t tilt_mrad() const {
