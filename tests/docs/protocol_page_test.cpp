@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <regex>
 #include <set>
 #include <sstream>
 #include <string>
@@ -142,24 +143,27 @@ TEST(ProtocolPage, EachRangeIsTheReferenceDecodersRule) {
 }
 
 // Issue 30 as it was: the page said telemetry_attitude's mode was 0..5 while the QR sent 6 in height
-// hold. The page of then fails here on a height hold frame (and on the decoder's rule).
-TEST(ProtocolPage, ThePageOfIssue30RefusesHeightHold) {
+// hold. A page one mode short, as that one was, refuses the last mode's attitude frames.
+TEST(ProtocolPage, APageOneModeShortRefusesTheLastMode) {
   std::string text = page_text();
-  const std::string row = "| 1 | u8 | mode | 0..6 as in mode_change |";
-  const size_t at = text.find(row);
-  ASSERT_NE(at, std::string::npos) << "the attitude's mode row";
-  text.replace(at, row.size(), "| 1 | u8 | mode | 0..5 as in mode_change |");
+  const std::regex row(R"(\| 1 \| u8 \| mode \| 0\.\.(\d+) as in mode_change \|)");
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(text, m, row)) << "the attitude's mode row";
+  const int last = std::stoi(m[1].str());
+  ASSERT_EQ(last, wire::kModeCount - 1) << "EachRangeIsTheReferenceDecodersRule says more";
+  text.replace(static_cast<size_t>(m.position(0)), static_cast<size_t>(m.length(0)),
+               "| 1 | u8 | mode | 0.." + std::to_string(last - 1) + " as in mode_change |");
   const Page page = protocol_page::read_page(text);
   EXPECT_TRUE(page.errors.empty());
   const Table* table = page.table_of("telemetry_attitude");
   ASSERT_NE(table, nullptr);
-  wire::TelemetryAttitude m;
-  m.mode = wire::Mode::height_hold;
-  const wire::FrameBytes frame = wire::encode(m);
+  wire::TelemetryAttitude attitude;
+  attitude.mode = static_cast<wire::Mode>(last);
+  const wire::FrameBytes frame = wire::encode(attitude);
   const auto violations = protocol_page::check(page, *table, "telemetry_attitude", frame.bytes + 2, frame.size - 3u);
   ASSERT_EQ(violations.size(), 1u);
   EXPECT_EQ(violations[0].field, "telemetry_attitude.mode");
-  EXPECT_EQ(violations[0].value, 6);
+  EXPECT_EQ(violations[0].value, last);
 }
 
 // A range the reader does not understand is an error, not a row without a range: a limit in
