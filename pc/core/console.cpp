@@ -1,16 +1,12 @@
 #include <pc/core/console.hpp>
 
-#include <cmath>
-#include <cstdio>
-#include <cstdlib>
-
-#include <common/task_names.hpp>
 #include <pc/core/gain_steps.hpp>
 #include <pc/core/key_map.hpp>
 #include <pc/core/log_room.hpp>
 #include <pc/core/mode_names.hpp>
-#include <pc/core/radio_pilot.hpp>
+#include <pc/core/qr_reports.hpp>
 #include <pc/core/request_texts.hpp>
+#include <pc/core/task_figures.hpp>
 
 namespace qrterm {
 namespace {
@@ -29,12 +25,6 @@ constexpr ModeKey kModeKeys[] = {
     {Action::mode_full_control, wire::Mode::full_control},
 };
 
-// The QR's scheduler tasks as the wire numbers them in telemetry_task (common/task_names.hpp).
-std::string task_name(uint8_t number) {
-  const char* name = wire::task_name(number);
-  return name != nullptr ? name : "task " + std::to_string(number);
-}
-
 }  // namespace
 
 // Every message from the QR, decoded, lands in one of these.
@@ -47,10 +37,7 @@ struct Console::Receiver {
   void operator()(const wire::Nack& nack) {
     console.on_answer(nack.type, nack.reason, console.link_.answer(nack, console.now_ms_));
   }
-  void operator()(const wire::ParamReport& report) {
-    console.parameters_.on_report(report);
-    console.on_read_back(report);
-  }
+  void operator()(const wire::ParamReport& report) { console.parameters_.on_report(report); }
   void operator()(const wire::DebugText& text) {
     for (std::string& line : console.debug_text_.add(text)) console.note(Severity::qr, line);
   }
@@ -83,7 +70,8 @@ Console::Console(ConsoleLog& log, ConsoleFiles files, const Setup& setup, uint32
           [this](const std::string& from, const std::string& to) { return recordings_.rename(from, to); }}),
       input_(setup.joystick), simulator_(setup.simulator, note_hook()), exit_(note_hook()),
       streams_(StreamSession::Hooks{note_hook(), [this](const std::string& name) { return recordings_.open(name); }}),
-      editor_(setup.params, setup.params_file), screens_(streams_, editor_, parameters_, note_hook()) {}
+      editor_(setup.params, setup.params_file), screens_(streams_, editor_, parameters_, note_hook()),
+      requests_(link_, telemetry_, controls_, input_, simulator_, note_hook()) {}
 
 void Console::set_time(uint32_t now_ms) { now_ms_ = now_ms; }
 
@@ -140,141 +128,33 @@ void Console::act(Action action, uint32_t now_ms) {
   if (const GainStep* step = find_gain_step(action)) return parameters_.step(*step);
   if (simulator_.act(action)) return;
   for (const ModeKey& mode_key : kModeKeys) {
-    if (mode_key.action == action) return request_mode(mode_key.mode);
+    if (mode_key.action == action) return requests_.mode(mode_key.mode, now_ms_);
   }
   switch (action) {
-    case Action::height_hold: {
-      // A toggle: the QR's mode as last heard says which way (height hold is entered from full control).
-      const bool holding = telemetry_.attitude && telemetry_.attitude->mode == wire::Mode::height_hold;
-      return request_mode(holding ? wire::Mode::full_control : wire::Mode::height_hold);
-    }
+    case Action::height_hold: return requests_.toggle_height_hold(now_ms_);
     case Action::log_start:
       link_.request(wire::LogStart{0, wire::kLogSensor | wire::kLogTelemetry}, now_ms_);
       if (telemetry_.log_status)
         note(Severity::info, "QR log: " + log_room_text(*telemetry_.log_status, log_divider(), control_hz()));
       break;
     case Action::log_stop: link_.request(wire::LogStop{}, now_ms_); break;
-    case Action::log_download:
-      if (downloader_.active()) {
-        note(Severity::warning, "a log download is running already (" + downloader_.status(now_ms_) + ")");
-      } else if (!telemetry_.log_status) {
-        note(Severity::warning, "the QR has not said yet what its logs hold (no log_status): try again");
-      } else {
-        downloader_.start(*telemetry_.log_status, now_ms_);
-      }
-      break;
-    case Action::params_read:
-      link_.request(wire::ParamGet{0, wire::kAllParameters}, now_ms_);
-      read_back_left_ = wire::kParameterCount;  // the log says what came back once all have
-      read_back_differ_.clear();
-      break;
+    case Action::log_download: downloader_.start(telemetry_.log_status, now_ms_); break;
+    case Action::params_read: parameters_.read_back(link_, now_ms_); break;
     case Action::tasks_print: print_tasks(); break;
-    case Action::lift_hover: lift_to_hover(); break;
+    case Action::lift_hover: {
+      const Notice said = lift_to_hover(controls_, telemetry_.height ? telemetry_.height->hover_lift : 0);
+      note(said.severity, said.text);
+      break;
+    }
     default: break;
   }
 }
 
-void Console::on_read_back(const wire::ParamReport& report) {
-  if (read_back_left_ == 0) return;
-  const wire::ParameterSpec* spec = wire::find_parameter(report.id);
-  if (spec != nullptr && report.value != parameters_.wanted().get(spec->id)) read_back_differ_.push_back(spec->name);
-  if (--read_back_left_ > 0) return;
-  if (read_back_differ_.empty()) {
-    note(Severity::info,
-         std::to_string(wire::kParameterCount) + " parameters read back: the QR has the console's values");
-    return;
-  }
-  std::string names;
-  for (const std::string& n : read_back_differ_) names += (names.empty() ? "" : ", ") + n;
-  note(Severity::warning, "parameters read back: the QR differs in " + names + " (the parameter screen shows them)");
-}
-
-void Console::abort(const std::string& why) {
-  // The pilot's inputs are centred too: the QR lands in safe, and leaving safe again needs them
-  // neutral anyway; a lift trim left standing would be the first surprise of the next flight.
-  const bool trimmed = controls_.trims() != Sticks{};
-  controls_.apply(Action::trims_center);
-  if (link_state_ == LinkState::closed) {
-    // Nothing can reach the QR: say what it does on its own instead of promising a request.
-    note(Severity::error, "ABORT (" + why + "): the line is gone, nothing can be sent; the QR panics by itself " +
-                              "after the link timeout without a frame (safety rule 7)");
-    return;
-  }
-  note(Severity::error, "ABORT (" + why + "): panic requested" + (trimmed ? ", trims centred" : ""));
-  requested_mode_ = wire::Mode::panic;
-  link_.request(wire::ModeChange{0, wire::Mode::panic}, now_ms_);
-}
-
-void Console::request_mode(wire::Mode mode) {
-  const bool leaving_safe = mode != wire::Mode::safe && mode != wire::Mode::panic;
-  const bool in_safe = !telemetry_.attitude || telemetry_.attitude->mode == wire::Mode::safe;
-  if (leaving_safe && in_safe) {
-    // The QR refuses these too; refusing here as well says exactly what to fix, and keeps a
-    // joystick whose position is unknown from ever taking off.
-    std::string reason = input_.refuses_flight();
-    if (reason.empty()) reason = controls_.not_neutral_reason();
-    if (!reason.empty()) {
-      note(Severity::warning, std::string("not asking for ") + mode_name(mode) + ": " + reason);
-      return;
-    }
-  }
-  if (simulator_.take_mode_request(mode, in_safe, telemetry_)) return;
-  const bool flying = telemetry_.attitude && is_flight_mode(telemetry_.attitude->mode);
-  note(Severity::info,
-       std::string("asking for mode ") + mode_name(mode) +
-           (mode == wire::Mode::safe && flying ? " (from flight through panic: the engines ramp down first)" : ""));
-  requested_mode_ = mode;
-  // The QR judges "neutral" by the last control it received, which may be up to 20 ms old: a
-  // pilot who centres the trims and at once asks for a mode would be refused. A control message
-  // with the sticks as they are now goes first; frames arrive in order.
-  send_control();
-  link_.request(wire::ModeChange{0, mode}, now_ms_);
-}
-
-void Console::send_control() {
-  last_control_ = controls_.control();
-  link_.send_control(last_control_, now_ms_);
-}
-
-void Console::lift_to_hover() {
-  // The QR reports its hover in engine units (FlightChain::hover_lift(): the engine command that
-  // gives the learnt per-engine hover thrust). The lift stick is on the same scale: lift l asks
-  // each engine for the thrust l^2 / 1000, which is engine command l (engine_mixer.hpp), so the
-  // hover lift is the lift stick value that carries the vehicle, with no conversion
-  // (HoverKey.TheHoverLiftIsTheLiftStickThatGivesTheHoverThrust holds the firmware to it).
-  const uint16_t hover = telemetry_.height ? telemetry_.height->hover_lift : 0;
-  const int32_t before = controls_.control().lift;
-  if (hover == 0) {
-    note(Severity::warning,
-         "no hover lift known yet: the QR learns it in flight, a few seconds flying slowly; lift stays " +
-             std::to_string(before));
-    return;
-  }
-  const int32_t lift = controls_.set_lift(hover);
-  if (lift == hover) {
-    note(Severity::info, "lift " + std::to_string(before) + " -> " + std::to_string(lift) +
-                             ", the hover lift the QR learnt (more lift to stop a descent: PgUp)");
-  } else {
-    note(Severity::warning, "the throttle alone gives lift " + std::to_string(lift) + ", above the hover lift " +
-                                std::to_string(hover) + ": lift trim 0; close the throttle to reach the hover");
-  }
-}
+void Console::abort(const std::string& why) { requests_.abort(why, link_state_ == LinkState::closed, now_ms_); }
 
 void Console::print_tasks() {
-  if (telemetry_.tasks.empty()) {
-    note(Severity::warning, "no task figures from the QR yet");
-    return;
-  }
-  // The unit is the board's cycle counter: on the simulator that is the host's clock in ns.
-  note(Severity::info, simulator_.present()
-                           ? "QR task     ns: mean    max overruns  (the host's ns: the simulator's board)"
-                           : "QR task   cycles: mean    max overruns  (instructions on the devboard)");
-  for (const auto& [number, task] : telemetry_.tasks) {
-    char line[64];
-    std::snprintf(line, sizeof line, "  %-14s %6u %6u %8u", task_name(number).c_str(), task.mean, task.max,
-                  task.overruns);
-    note(Severity::info, line);
-  }
+  if (telemetry_.tasks.empty()) return note(Severity::warning, "no task figures from the QR yet");
+  for (const std::string& line : task_figure_lines(telemetry_.tasks, simulator_.present())) note(Severity::info, line);
 }
 
 void Console::joystick_moved(const Sticks& sticks, bool position_known, uint32_t now_ms) {
@@ -331,14 +211,8 @@ void Console::on_frame(const wire::Frame& frame) {
 void Console::on_attitude(const wire::TelemetryAttitude& attitude) {
   const std::optional<wire::TelemetryAttitude> before = telemetry_.attitude;
   telemetry_.on(attitude);
-  if (!before || before->mode != attitude.mode) {
-    note(attitude.mode == wire::Mode::panic ? Severity::warning : Severity::info,
-         std::string("QR mode: ") + mode_name(attitude.mode));
-  }
-  const auto rose = [&](uint8_t bit) { return (attitude.flags & bit) != 0 && (!before || (before->flags & bit) == 0); };
-  if (rose(wire::kFlagCalibrated)) note(Severity::info, "QR calibrated");
-  if (rose(wire::kFlagBatteryWarning)) note(Severity::warning, "QR battery low");
-  recordings_.telemetry_row(now_ms_ - start_ms_, telemetry_, last_control_);
+  for (const Notice& notice : attitude_notices(before, attitude)) note(notice.severity, notice.text);
+  recordings_.telemetry_row(now_ms_ - start_ms_, telemetry_, requests_.last_control());
 }
 
 void Console::on_height(const wire::TelemetryHeight& height) {
@@ -353,14 +227,10 @@ std::optional<double> Console::sinking_m_s() const {
 }
 
 void Console::on_log_status(const wire::LogStatus& status) {
-  const bool was_full = telemetry_.log_status && (telemetry_.log_status->flags & wire::kLogStatusFull) != 0;
-  const std::string filling = log_filling_warning(telemetry_.log_status.value_or(wire::LogStatus{}), status,
-                                                  log_divider(), control_hz());
-  if (!filling.empty()) note(Severity::warning, filling);
+  const std::optional<wire::LogStatus> before = telemetry_.log_status;
   telemetry_.on(status);
-  if ((status.flags & wire::kLogStatusFull) != 0 && !was_full) {
-    note(Severity::warning,
-         "QR log full (" + std::to_string(status.capacity_lines) + " lines): it keeps its first lines");
+  for (const Notice& notice : log_status_notices(before, status, log_divider(), control_hz())) {
+    note(notice.severity, notice.text);
   }
 }
 
@@ -369,9 +239,7 @@ void Console::on_answer(wire::MessageType type, wire::NackReason reason, const A
   // nothing about what is in force now.
   if (answer.match != wire::AnswerMatch::matched) return;
   const bool refused = reason != wire::NackReason::none;
-  if (type == wire::MessageType::exit) {
-    return exit_.on_answer(reason);
-  }
+  if (type == wire::MessageType::exit) return exit_.on_answer(reason);
   if (type == wire::MessageType::log_download) {
     if (refused) downloader_.on_nack(reason);
     return;  // accepted: the parts say the rest
@@ -381,11 +249,7 @@ void Console::on_answer(wire::MessageType type, wire::NackReason reason, const A
   if (type == wire::MessageType::stream_request || type == wire::MessageType::observable_get) {
     return streams_.on_answer(type, reason, telemetry_hz());
   }
-  if (type == wire::MessageType::mode_change) {
-    const std::string mode = requested_mode_ ? mode_name(*requested_mode_) : "?";
-    if (refused) note(Severity::warning, "QR refused mode " + mode + ": " + reason_text(reason));
-    return;
-  }
+  if (type == wire::MessageType::mode_change) return requests_.on_mode_answer(reason);
   if (refused) {
     note(Severity::warning, std::string("QR refused the ") + request_what(type) + ": " + reason_text(reason));
   } else if (request_accepted(type) != nullptr) {
@@ -450,7 +314,7 @@ void Console::tick(uint32_t now_ms) {
   const LinkState state = link_.state(now_ms);
   if (state != link_state_) on_link_state(state);
 
-  if (state != LinkState::closed && link_.control_due(now_ms)) send_control();
+  if (state != LinkState::closed && link_.control_due(now_ms)) requests_.send_control(now_ms);
   link_.poll(now_ms, [this](const wire::ResendEvent& event) { on_gave_up(event); });
 
   if (state == LinkState::up && exit_.running()) {
@@ -461,6 +325,5 @@ void Console::tick(uint32_t now_ms) {
   downloader_.tick(now_ms);
   exit_.tick(now_ms);
 }
-
 
 }  // namespace qrterm

@@ -1,7 +1,16 @@
 // The console's logic, without a screen: keys and joystick in, requests and control out through
-// the LinkSession, what comes back into the TelemetryModel and the ConsoleLog, parameters up at
-// connect, logs down on request, and the exit handshake. The ncurses Cockpit draws from it and the
-// main loop feeds it; tests drive it with a scripted clock against a fake QR.
+// the LinkSession, what comes back into the TelemetryModel and the ConsoleLog. The ncurses Cockpit
+// draws from it and the main loop feeds it; tests drive it with a scripted clock against a fake QR.
+//
+// The Console itself only routes: each job is a part of its own (docs/architecture.md, "The
+// console's parts"), and the Console hands it what comes in and the time:
+//   keys and joystick      PilotInput (ESC's pairing, the joystick's presence), ScreenState
+//                          (screens, help, prompt, the plot and parameter screens' keys)
+//   asking the QR          PilotRequests (modes, abort, control), ParameterSync, StreamSession,
+//                          LogDownloader, ExitHandshake
+//   what the QR reports    TelemetryModel, qr_reports (notices), DescentWatch, the Receiver below
+//   the log folder         Recordings (rx.hex, telemetry.csv; files for the others)
+//   the simulator          SimulatorControls (truth channel), radio_pilot (the radio as the pilot)
 #pragma once
 
 #include <stddef.h>
@@ -28,6 +37,7 @@
 #include <pc/core/parameter_sync.hpp>
 #include <pc/core/pilot_controls.hpp>
 #include <pc/core/pilot_input.hpp>
+#include <pc/core/pilot_requests.hpp>
 #include <pc/core/recordings.hpp>
 #include <pc/core/screen_state.hpp>
 #include <pc/core/simulator_controls.hpp>
@@ -90,7 +100,7 @@ class Console {
   const LinkSession& link() const { return link_; }
   const TelemetryModel& telemetry() const { return telemetry_; }
   const PilotControls& controls() const { return controls_; }
-  const wire::Control& last_control() const { return last_control_; }
+  const wire::Control& last_control() const { return requests_.last_control(); }
   const wire::ParameterValues& params() const { return parameters_.wanted(); }
   std::optional<int32_t> reported(wire::ParamId id) const { return parameters_.reported(id); }
   JoystickState joystick_state() const { return input_.joystick(); }
@@ -129,10 +139,6 @@ class Console {
   Note note_hook();
   void set_time(uint32_t now_ms);
   void abort(const std::string& why);
-  void request_mode(wire::Mode mode);
-  void send_control();
-  // The hover key: the lift to the hover lift the QR learnt, or a message that it has none yet.
-  void lift_to_hover();
   void print_tasks();
   void on_frame(const wire::Frame& frame);
   // An ack (reason none) or a nack, already matched against the request it answers.
@@ -142,8 +148,6 @@ class Console {
   void on_height(const wire::TelemetryHeight& height);
   void on_log_status(const wire::LogStatus& status);
   void on_link_state(LinkState state);
-  // A report of the read-back `p` asked for: once all are in, the log says what came back.
-  void on_read_back(const wire::ParamReport& report);
 
   ConsoleLog& log_;
   Recordings recordings_;
@@ -155,22 +159,19 @@ class Console {
   TelemetryModel telemetry_;
   DebugTextAssembler debug_text_;
   PilotControls controls_;
-  wire::Control last_control_;
   ParameterSync parameters_;
   LogDownloader downloader_;
   PilotInput input_;
   SimulatorControls simulator_;
   ExitHandshake exit_;
-  std::optional<wire::Mode> requested_mode_;
   DescentWatch descent_;
   uint32_t invalid_frames_ = 0;
   uint32_t unhandled_frames_ = 0;
   std::set<uint8_t> unhandled_types_;
-  size_t read_back_left_ = 0;  // reports still to come after p
-  std::vector<std::string> read_back_differ_;
   StreamSession streams_;
   ParameterEditor editor_;
   ScreenState screens_;
+  PilotRequests requests_;
 };
 
 }  // namespace qrterm

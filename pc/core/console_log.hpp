@@ -20,6 +20,12 @@ struct LogLine {
   uint32_t repeats = 0;  // the same line again right after: counted, not added (a held key)
 };
 
+// A line for the log, from a part that does not write it itself.
+struct Notice {
+  Severity severity = Severity::info;
+  std::string text;
+};
+
 class ConsoleLog {
  public:
   // Keeps the newest `keep` lines for the screen; `file` (may be null) gets every line.

@@ -9,7 +9,16 @@ LogDownloader::LogDownloader(Hooks hooks) : hooks_(std::move(hooks)) {}
 
 LogDownloader::~LogDownloader() = default;
 
-void LogDownloader::start(const wire::LogStatus& status, uint32_t now_ms) {
+void LogDownloader::start(const std::optional<wire::LogStatus>& said, uint32_t now_ms) {
+  if (active()) {
+    hooks_.note(Severity::warning, "a log download is running already (" + status(now_ms) + ")");
+    return;
+  }
+  if (!said) {
+    hooks_.note(Severity::warning, "the QR has not said yet what its logs hold (no log_status): try again");
+    return;
+  }
+  const wire::LogStatus& status = *said;
   if ((status.flags & (wire::kLogStatusSensorOn | wire::kLogStatusTelemetryOn)) != 0) {
     hooks_.note(Severity::warning, "the QR is logging: stop the logs first (t), then download (g)");
     return;

@@ -11,6 +11,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <string>
 
@@ -42,9 +43,10 @@ class LogDownloader {
 
   bool active() const { return kind_ != Kind::idle; }
 
-  // Starts with what the QR last said about its logs. Refuses (with a note) while it logs, and
-  // skips a log without lines.
-  void start(const wire::LogStatus& status, uint32_t now_ms);
+  // The pilot's download key: starts with what the QR last said about its logs (empty: it has not
+  // said yet). Refuses, with a note, while a download runs, before the QR has said, while it logs
+  // and when its logs are empty; skips a log without lines.
+  void start(const std::optional<wire::LogStatus>& status, uint32_t now_ms);
 
   // The QR refused our log_download (matched by the caller on type and seq).
   void on_nack(wire::NackReason reason);

@@ -59,6 +59,11 @@ wire::NackReason ParameterSync::set(wire::ParamId id, int32_t raw) {
 }
 
 void ParameterSync::on_report(const wire::ParamReport& report) {
+  take_report(report);
+  count_read_back(report);
+}
+
+void ParameterSync::take_report(const wire::ParamReport& report) {
   const wire::ParameterSpec* spec = wire::find_parameter(report.id);
   if (spec == nullptr) return;
   std::optional<int32_t>& reported = reported_[row_of(spec->id)];
@@ -76,6 +81,28 @@ void ParameterSync::on_report(const wire::ParamReport& report) {
     note_(Severity::warning,
           "the QR has " + param_text(spec->id, report.value) + ", the console " + format_real(*spec, wanted));
   }
+}
+
+void ParameterSync::read_back(LinkSession& link, uint32_t now_ms) {
+  link.request(wire::ParamGet{0, wire::kAllParameters}, now_ms);
+  read_back_left_ = wire::kParameterCount;
+  read_back_differ_.clear();
+}
+
+// After take_report: a value the QR changed itself (and the console took) is no difference.
+void ParameterSync::count_read_back(const wire::ParamReport& report) {
+  if (read_back_left_ == 0) return;
+  const wire::ParameterSpec* spec = wire::find_parameter(report.id);
+  if (spec != nullptr && report.value != wanted_.get(spec->id)) read_back_differ_.push_back(spec->name);
+  if (--read_back_left_ > 0) return;
+  if (read_back_differ_.empty()) {
+    note_(Severity::info,
+          std::to_string(wire::kParameterCount) + " parameters read back: the QR has the console's values");
+    return;
+  }
+  std::string names;
+  for (const std::string& n : read_back_differ_) names += (names.empty() ? "" : ", ") + n;
+  note_(Severity::warning, "parameters read back: the QR differs in " + names + " (the parameter screen shows them)");
 }
 
 void ParameterSync::tick(LinkSession& link, uint32_t now_ms) {

@@ -12,6 +12,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <common/parameter_table.hpp>
 #include <common/replies.hpp>
@@ -41,6 +42,9 @@ class ParameterSync {
   bool pending(wire::ParamId id) const { return on_its_way(id); }
   // A value the QR says is in force.
   void on_report(const wire::ParamReport& report);
+  // The pilot's read-back (p): asks the QR for every value; once all have come, the log says
+  // whether they are the console's, and names those that are not.
+  void read_back(LinkSession& link, uint32_t now_ms);
 
   // Sends the next param_set when the last one is answered, and the read-back after the last.
   void tick(LinkSession& link, uint32_t now_ms);
@@ -48,6 +52,8 @@ class ParameterSync {
  private:
   void queue(wire::ParamId id);
   bool on_its_way(wire::ParamId id) const;
+  void take_report(const wire::ParamReport& report);
+  void count_read_back(const wire::ParamReport& report);
 
   wire::ParameterValues wanted_;
   Note note_;
@@ -56,6 +62,8 @@ class ParameterSync {
   std::optional<wire::ParamId> in_flight_;  // the param_set waiting for its answer
   bool announced_ = false;                  // "sending N parameters" said for this upload
   bool read_back_owed_ = false;
+  size_t read_back_left_ = 0;  // reports still to come after the pilot's p
+  std::vector<std::string> read_back_differ_;
 };
 
 // "roll_pitch_p1 = 4.25": a parameter and a raw value in its real unit.

@@ -75,4 +75,25 @@ std::string PilotControls::not_neutral_reason() const {
   return reason;
 }
 
+Notice lift_to_hover(PilotControls& controls, uint16_t hover_lift) {
+  // The QR reports its hover in engine units (FlightChain::hover_lift(): the engine command that
+  // gives the learnt per-engine hover thrust). The lift stick is on the same scale: lift l asks
+  // each engine for the thrust l^2 / 1000, which is engine command l (engine_mixer.hpp), so the
+  // hover lift is the lift stick value that carries the vehicle, with no conversion
+  // (HoverKey.TheHoverLiftIsTheLiftStickThatGivesTheHoverThrust holds the firmware to it).
+  const int32_t before = controls.control().lift;
+  if (hover_lift == 0) {
+    return {Severity::warning,
+            "no hover lift known yet: the QR learns it in flight, a few seconds flying slowly; lift stays " +
+                std::to_string(before)};
+  }
+  const int32_t lift = controls.set_lift(hover_lift);
+  if (lift == hover_lift) {
+    return {Severity::info, "lift " + std::to_string(before) + " -> " + std::to_string(lift) +
+                                ", the hover lift the QR learnt (more lift to stop a descent: PgUp)"};
+  }
+  return {Severity::warning, "the throttle alone gives lift " + std::to_string(lift) + ", above the hover lift " +
+                                 std::to_string(hover_lift) + ": lift trim 0; close the throttle to reach the hover"};
+}
+
 }  // namespace qrterm

@@ -7,6 +7,7 @@
 
 #include <common/requests.hpp>
 #include <pc/core/action.hpp>
+#include <pc/core/console_log.hpp>
 #include <pc/core/sticks.hpp>
 
 namespace qrterm {
@@ -43,5 +44,9 @@ class PilotControls {
   Sticks joystick_;
   Sticks trims_;
 };
+
+// The hover key (Home): the lift to the hover lift the QR learnt (`hover_lift`, 0: none yet), and
+// what the log says about it.
+Notice lift_to_hover(PilotControls& controls, uint16_t hover_lift);
 
 }  // namespace qrterm
