@@ -189,6 +189,24 @@ TEST_F(RadioFlightTest, NoRadioNoRadioTelemetry) {
   EXPECT_TRUE(got<wire::TelemetryRadio>().empty());
 }
 
+// Rule 18 with the radio as the pilot: the beacon is timed from the radio's link, whatever the PC
+// link does. The radio silent while the PC's frames keep coming beacons; the radio alive while
+// the PC is silent does not.
+TEST_F(RadioFlightTest, TheBeaconListensToThePilotsLink) {
+  make_radio_the_pilot();
+  const uint32_t timeout_ms = static_cast<uint32_t>(wire::ParameterValues{}.get(wire::ParamId::link_timeout_ms));
+  radio_on = false;
+  run_ms(timeout_ms + 4500);  // past the timeout, then two beacon periods and more
+  EXPECT_EQ(flight.mode(), Mode::safe);
+  EXPECT_GE(board.esc_commands.size(), 2u) << "the radio is silent: the pilot is lost, the PC link does not count";
+  radio_on = true;
+  pc_on = false;
+  run_ms(100);
+  const size_t sounded = board.esc_commands.size();
+  run_ms(timeout_ms + 4500);
+  EXPECT_EQ(board.esc_commands.size(), sounded) << "the radio lives: no beacon, though the PC link is silent";
+}
+
 // 14-pole motors (the default): RPM = eRPM / 7. A period of 428 us is 140 186 eRPM, 20 026 RPM.
 TEST_F(RadioFlightTest, EscAnswersBecomeRpmInTelemetry) {
   run_ms(50);

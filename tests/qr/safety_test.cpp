@@ -1,6 +1,8 @@
 // One test per safety rule of the QR (the numbered list in docs/safety.md).
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
 #include <qr/core/rate.hpp>
 #include <qr/core/safety.hpp>
 
@@ -480,6 +482,39 @@ TEST_F(Safety, BatteryLowPanicsAndWarnsBefore) {
   EXPECT_EQ(machine.panic_cause(), PanicCause::battery_low);
 }
 
+// Rule 8: the measure must stay below the panic level for the trip time (100 ms) before a panic. A
+// sharp dip that takes the one-second mean below the level for about 70 % of that time, and out
+// again, flies on (the dip is measured here, so the test cannot pass on a dip too short to
+// matter: a trip time of half its value would have panicked).
+TEST_F(Safety, ADipShorterThanTheTripTimeIsNoPanic) {
+  at(1000);
+  enter(Mode::full_control);
+  fly(500);
+  battery_rested_at(limits.battery_panic_mv + 3);
+  run_for(8000000);
+  ASSERT_GE(machine.battery_measure_mv(), limits.battery_panic_mv);
+  const uint32_t want_below_us = limits.battery_trip_us * 7 / 10;
+  uint32_t below_us = 0;
+  battery_rested_at(limits.battery_panic_mv - 3000);
+  // Down until the measure has been below the level long enough that the way back (a quick one:
+  // the pack rested far above the level) ends near 70 % of the trip time.
+  while (below_us < want_below_us * 4 / 10) {
+    run_for(kPeriodUs);
+    if (machine.battery_measure_mv() < limits.battery_panic_mv) below_us += kPeriodUs;
+  }
+  battery_rested_at(12600);
+  while (machine.battery_measure_mv() < limits.battery_panic_mv) {
+    run_for(kPeriodUs);
+    below_us += kPeriodUs;
+    ASSERT_LT(below_us, 10 * limits.battery_trip_us) << "the measure never came back";
+  }
+  EXPECT_GE(below_us, limits.battery_trip_us / 2 + kPeriodUs) << "the dip is too short to prove the trip time";
+  EXPECT_LT(below_us, limits.battery_trip_us) << "the dip is as long as the trip time";
+  std::printf("the dip: below the panic level for %u us of a %u us trip time\n", static_cast<unsigned>(below_us),
+              static_cast<unsigned>(limits.battery_trip_us));
+  EXPECT_EQ(machine.mode(), Mode::full_control);
+}
+
 // Rule 8: a climb's sag is no empty battery. 250 ms at 600 mV below a rested voltage 200 mV above
 // the panic level (a 3-cell pack's internal resistance under a climb's current) flies on; judged on
 // the raw voltage it would have panicked after 100 ms.
@@ -587,7 +622,7 @@ TEST_F(Safety, TiltDoesNotPanicManual) {
   enter(Mode::manual);
   fly(500);
   s.tilt_mrad = 2 * limits.tilt_limit_mrad;
-  run_for(1000);
+  run_for(2 * limits.tilt_time_us);  // twice the rule's own time: a tilt panic would have come
   EXPECT_EQ(machine.mode(), Mode::manual);
 }
 
