@@ -2,8 +2,8 @@
 // the LinkSession, what comes back into the TelemetryModel and the ConsoleLog. The ncurses Cockpit
 // draws from it and the main loop feeds it; tests drive it with a scripted clock against a fake QR.
 //
-// The Console itself only routes: each job is a part of its own (docs/architecture.md, "The
-// console's parts"), and the Console hands it what comes in and the time:
+// The Console itself only routes: each job is a part of its own (docs/console.md, "How it is
+// built and tested"), and the Console hands it what comes in and the time:
 //   keys and joystick      PilotInput (ESC's pairing, the joystick's presence), ScreenState
 //                          (screens, help, prompt, the plot and parameter screens' keys)
 //   asking the QR          PilotRequests (modes, abort, control), ParameterSync, StreamSession,
