@@ -13,8 +13,9 @@
 // FlightChain<DoubleNumbers> (qr/host/real_numbers.hpp) as the accuracy reference. SampleHz is
 // the control rate the designs and time steps are made for.
 //
-// Units at the readouts are the wire's (common/units.hpp): angles 1e-4 rad, rates 1e-3 rad/s,
-// engines 0..1000; moments are in 1e-3 thrust units (engine_mixer.hpp).
+// The read-outs are the chain's own numbers (Num's Angle in rad, Rate in rad/s, Thrust in thrust
+// units: engine_mixer.hpp). The same values as decimal integers in the wire's units (roll_e4(),
+// ...), which telemetry, the logs and the observables read, come from the base, DecimalReadouts.
 #pragma once
 
 #include <stdint.h>
@@ -24,6 +25,7 @@
 #include <qr/core/board.hpp>
 #include <qr/core/chain/attitude_estimator.hpp>
 #include <qr/core/chain/controllers.hpp>
+#include <qr/core/chain/decimal_readouts.hpp>
 #include <qr/core/chain/engine_mixer.hpp>
 #include <qr/core/chain/fixed_numbers.hpp>
 #include <qr/core/chain/gyro_clip.hpp>
@@ -40,8 +42,9 @@
 namespace qr {
 
 template <class Num, uint32_t SampleHz = kControlHz>
-class FlightChain {
+class FlightChain : public chain::DecimalReadouts<FlightChain<Num, SampleHz>> {
  public:
+  using Numbers = Num;
   using Rate = typename Num::Rate;
   using Accel = typename Num::Accel;
   using Angle = typename Num::Angle;
@@ -306,16 +309,18 @@ class FlightChain {
     return mix();
   }
 
-  // ---- readouts, in the wire's integer units ----
-  int16_t roll_e4() const { return angle_e4(estimator_.roll()); }
-  int16_t pitch_e4() const { return angle_e4(estimator_.pitch()); }
-  int16_t yaw_e4() const { return angle_e4(estimator_.yaw()); }
-  int16_t p_e3() const { return rate_e3(estimator_.p()); }
-  int16_t q_e3() const { return rate_e3(estimator_.q()); }
-  int16_t r_e3() const { return rate_e3(estimator_.r()); }
-  int16_t roll_setpoint_e4() const { return angle_e4(roll_target()); }
-  int16_t pitch_setpoint_e4() const { return angle_e4(pitch_target()); }
-  int16_t yaw_rate_setpoint_e3() const { return rate_e3(yaw_rate_target()); }
+  // ---- read-outs, in the chain's own numbers ----
+  // The attitude estimate and the bias-corrected rates.
+  Angle roll() const { return estimator_.roll(); }
+  Angle pitch() const { return estimator_.pitch(); }
+  Angle yaw() const { return estimator_.yaw(); }
+  Rate p() const { return estimator_.p(); }
+  Rate q() const { return estimator_.q(); }
+  Rate r() const { return estimator_.r(); }
+  // What the loops fly to: the pilot's sticks, or level and not turning in a landing.
+  Angle roll_setpoint() const { return roll_target(); }
+  Angle pitch_setpoint() const { return pitch_target(); }
+  Rate yaw_rate_setpoint() const { return yaw_rate_target(); }
   uint16_t lift() const { return pilot_.lift(); }
   // On the ground (landed_detector.hpp): the controllers' integrals are held empty.
   bool landed() const { return landed_.landed(); }
@@ -329,64 +334,49 @@ class FlightChain {
     const Thrust full = chain::EngineMixer<Num>::kFullThrust;
     return static_cast<uint16_t>(mixer_.engine_of_thrust(hover < full ? hover : full));
   }
-  // The larger magnitude, then one conversion: scaling and rounding keep the order, so this is the
-  // larger of the two converted (the safety machine reads it every tick).
-  int32_t tilt_mrad() const {
+  // The larger of |roll| and |pitch|: the tilt from level.
+  Angle tilt() const {
     const Angle roll = chain::magnitude(estimator_.roll());
     const Angle pitch = chain::magnitude(estimator_.pitch());
-    return Num::round_to_int(fx::mul_wide(pitch < roll ? roll : pitch, kThousand));
+    return pitch < roll ? roll : pitch;
   }
+  // The safety machine's, in its parameters' unit (it reads it every tick): one conversion of the
+  // larger magnitude, which scaling and rounding keep the larger of the two converted.
+  int32_t tilt_mrad() const { return Num::round_to_int(fx::mul_wide(tilt(), kThousand)); }
 
-  // For the sensor log and the replay: filtered (not calibrated) sensors in counts, the
-  // accelerometer's own angles, the gyro bias estimates, the rate set-points of the angle loops,
-  // the moments asked for and the moments the mixer realised, the last engine values.
+  // For the sensor log: filtered (not calibrated) sensors in counts. The last engine values.
   int16_t gyro_filtered(int axis) const { return Units::gyro_counts(filters_.rate(axis)); }
   int16_t accel_filtered(int axis) const { return Units::accel_counts(filters_.accel(axis)); }
-  int16_t roll_from_accel_e4() const { return angle_e4(estimator_.roll_from_accel()); }
-  int16_t pitch_from_accel_e4() const { return angle_e4(estimator_.pitch_from_accel()); }
-  int32_t p_bias_e6() const { return Num::round_to_int(fx::mul_wide(estimator_.p_bias(), kMillion)); }
-  int32_t q_bias_e6() const { return Num::round_to_int(fx::mul_wide(estimator_.q_bias(), kMillion)); }
-  int16_t p_setpoint_e3() const { return rate_e3(tilt_[0].rate_setpoint()); }
-  int16_t q_setpoint_e3() const { return rate_e3(tilt_[1].rate_setpoint()); }
-  // The roll and pitch rate loops' integrals (trim moments), in 1e-3 thrust units.
-  int32_t roll_integral_e3() const { return Num::round_to_int(fx::mul_wide(tilt_[0].integral(), kThousand)); }
-  int32_t pitch_integral_e3() const { return Num::round_to_int(fx::mul_wide(tilt_[1].integral(), kThousand)); }
-  chain::Moments<int32_t> moments_e3() const { return moments_e3(moments_); }
-  chain::Moments<int32_t> applied_moments_e3() const { return moments_e3(mixer_.applied()); }
   const EngineCommand& engines() const { return engines_; }
   int32_t cutoff_hz() const { return filters_.cutoff_hz(); }
 
-  // The height estimate, up, relative to the height at the last calibration: height in mm,
-  // vertical speed in mm/s, the accelerometer's vertical bias it tracks in mm/s², and the
-  // barometer's own height in mm. All 0 while there is no barometer reference
-  // (height_valid() false: no calibration yet, or no barometer in it).
+  // The height estimate, up, relative to the height at the last calibration: height in m (in mm
+  // for the safety machine) and vertical speed in m/s; the estimator itself has the rest
+  // (height_estimator()). All 0 while there is no barometer reference (height_valid() false: no
+  // calibration yet, or no barometer in it).
   bool height_valid() const { return height_.has_reference(); }
+  typename Num::Height height() const { return height_.height(); }
   int32_t height_mm() const { return Num::round_to_int(fx::mul_wide(height_.height(), kThousand)); }
-  int32_t climb_mm_s() const { return Num::round_to_int(fx::mul_wide(height_.climb(), kThousand)); }
-  int32_t accel_bias_mm_s2() const { return Num::round_to_int(fx::mul_wide(height_.accel_bias(), kThousand)); }
-  int32_t baro_height_mm() const { return Num::round_to_int(fx::mul_wide(height_.baro_height(), kThousand)); }
-
-  // The vertical loops' per-engine thrust, 1e-3 thrust units, and the height held, mm.
-  int32_t vertical_thrust_e3() const { return Num::round_to_int(fx::mul_wide(vertical_.thrust(), kThousand)); }
-  int32_t held_height_mm() const { return Num::round_to_int(fx::mul_wide(vertical_.held(), kThousand)); }
+  typename Num::Climb climb() const { return height_.climb(); }
 
   // ---- the controllers' terms as they were last formed, for live plots (observables) ----
-  // Read by the stream task, never per tick: the loops only store them. Moments in 0.1 thrust
-  // units; axis 0 roll, 1 pitch, 2 yaw (which has no derivative).
-  int16_t rate_setpoint_e3(int axis) const { return rate_e3(tilt_[axis].rate_setpoint()); }
-  int32_t p_term_e1(int axis) const { return thrust_e1(axis < 2 ? tilt_[axis].p_term() : yaw_.p_term()); }
-  int32_t d_term_e1(int axis) const { return thrust_e1(tilt_[axis].d_term()); }
-  int32_t integral_e1(int axis) const { return thrust_e1(axis < 2 ? tilt_[axis].integral() : yaw_.integral()); }
-  // What the last mix was asked for (the controllers' outputs, or the sticks' where none ran).
-  int32_t moment_e1(int axis) const {
-    return thrust_e1(axis == 0 ? moments_.roll : axis == 1 ? moments_.pitch : moments_.yaw);
-  }
-  // The vertical loops' last run (height hold, a landing): climb set-point in mm/s, the speed
-  // loop's P term and integral in mm/s², the per-engine thrust in 0.1 thrust units.
-  int32_t climb_setpoint_mm_s() const { return Num::round_to_int(fx::mul_wide(vertical_.climb_setpoint(), kThousand)); }
-  int32_t vertical_p_term_mm_s2() const { return Num::round_to_int(fx::mul_wide(vertical_.p_term(), kThousand)); }
-  int32_t vertical_integral_mm_s2() const { return Num::round_to_int(fx::mul_wide(vertical_.integral(), kThousand)); }
-  int32_t vertical_thrust_e1() const { return thrust_e1(vertical_.thrust()); }
+  // Read by the stream task, never per tick: the loops only store them. In thrust units; axis 0
+  // roll, 1 pitch, 2 yaw (which has no derivative and no rate set-point).
+  Rate rate_setpoint(int axis) const { return tilt_[axis].rate_setpoint(); }
+  Thrust p_term(int axis) const { return axis < 2 ? tilt_[axis].p_term() : yaw_.p_term(); }
+  Thrust d_term(int axis) const { return tilt_[axis].d_term(); }
+  Thrust integral(int axis) const { return axis < 2 ? tilt_[axis].integral() : yaw_.integral(); }
+  // What the last mix was asked for (the controllers' outputs, or the sticks' where none ran),
+  // all three, and what the mixer realised of them.
+  Thrust moment(int axis) const { return axis == 0 ? moments_.roll : axis == 1 ? moments_.pitch : moments_.yaw; }
+  const chain::Moments<Thrust>& moments() const { return moments_; }
+  const chain::Moments<Thrust>& applied_moments() const { return mixer_.applied(); }
+  // The vertical loops' last run (height hold, a landing): climb set-point in m/s, the speed
+  // loop's P term and integral in m/s², the per-engine thrust.
+  typename Num::Climb climb_setpoint() const { return vertical_.climb_setpoint(); }
+  typename Num::VerticalAccel vertical_p_term() const { return vertical_.p_term(); }
+  typename Num::VerticalAccel vertical_integral() const { return vertical_.integral(); }
+  Thrust vertical_thrust() const { return vertical_.thrust(); }
 
   // The blocks themselves, for tests and tools that look inside.
   const chain::AttitudeEstimator<Num, SampleHz>& estimator() const { return estimator_; }
@@ -405,19 +395,9 @@ class FlightChain {
   Angle pitch_target() const { return lift_ == LiftSource::descend ? Angle{} : pilot_.pitch_angle(); }
   Rate yaw_rate_target() const { return lift_ == LiftSource::descend ? Rate{} : pilot_.yaw_rate(); }
 
-  static constexpr Count kTen = Count(10.0);
   static constexpr Count kThousand = Count(1000.0);
-  static constexpr Count kTenThousand = Count(10000.0);
-  static constexpr Count kMillion = Count(1000000.0);
 
   static constexpr typename Num::Scale kDt = typename Num::Scale(1.0 / SampleHz);
-  static int16_t angle_e4(Angle a) { return wire::saturate_i16(Num::round_to_int(fx::mul_wide(a, kTenThousand))); }
-  static int16_t rate_e3(Rate r) { return wire::saturate_i16(Num::round_to_int(fx::mul_wide(r, kThousand))); }
-  static int32_t thrust_e1(Thrust t) { return Num::round_to_int(fx::mul_wide(t, kTen)); }
-  static chain::Moments<int32_t> moments_e3(const chain::Moments<Thrust>& m) {
-    return {Num::round_to_int(fx::mul_wide(m.roll, kThousand)), Num::round_to_int(fx::mul_wide(m.pitch, kThousand)),
-            Num::round_to_int(fx::mul_wide(m.yaw, kThousand))};
-  }
 
   chain::SensorFilters<Num, SampleHz> filters_{chain::parameter_spec(wire::ParamId::filter_cutoff_hz).default_value};
   chain::SensorCalibration<Num> calibration_;
