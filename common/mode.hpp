@@ -10,7 +10,8 @@ namespace wire {
 
 // IN4073 numbers its height mode 7, after a raw mode (6) this project does not have. The numbers
 // here stay dense, because every table of modes (this one, the QR's task sets, the console's) is
-// indexed by them: height hold is 6, and a raw mode, should it come, takes 7.
+// indexed by them: height hold is 6, acro (issue 31's worked example of adding a mode,
+// docs/architecture.md) 7.
 enum class Mode : uint8_t {
   safe = 0,
   panic = 1,
@@ -19,9 +20,10 @@ enum class Mode : uint8_t {
   yaw_control = 4,
   full_control = 5,
   height_hold = 6,
+  acro = 7,
 };
 
-inline constexpr uint8_t kModeCount = 7;
+inline constexpr uint8_t kModeCount = 8;
 
 struct ModeSpec {
   Mode mode;
@@ -45,6 +47,10 @@ inline constexpr ModeSpec kModeTable[] = {
     // Holds the height at entry with the lift (IN4073's height mode): entered while flying in
     // full control, so the height it holds is one the pilot chose.
     {Mode::height_hold, "height hold", "height", true, true, true, Mode::full_control, true},
+    // The rate loops alone: the sticks ask for roll, pitch and yaw rates (full stick:
+    // max_yaw_rate_rad_s on every axis) and the vehicle stays where they leave it. A rate mode for
+    // learning, not for flips: the tilt watchdog still applies, and a panic lands.
+    {Mode::acro, "acro", "acro", true, true, true, Mode::safe, false},
 };
 static_assert(sizeof(kModeTable) / sizeof(kModeTable[0]) == kModeCount, "one row per mode");
 

@@ -18,6 +18,7 @@ enum class Action : uint8_t {
   mode_calibration,
   mode_yaw_control,
   mode_full_control,
+  mode_acro,
   height_hold,  // toggles: height hold from full control, full control from height hold
   lift_up,
   lift_down,
@@ -69,6 +70,7 @@ inline constexpr ActionSpec kActions[] = {
     {Action::mode_calibration, "mode calibration"},
     {Action::mode_yaw_control, "mode yaw control"},
     {Action::mode_full_control, "mode full control"},
+    {Action::mode_acro, "mode acro"},
     {Action::height_hold, "height hold on/off"},
     {Action::lift_up, "lift up"},
     {Action::lift_down, "lift down"},

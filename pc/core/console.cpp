@@ -23,6 +23,7 @@ constexpr ModeKey kModeKeys[] = {
     {Action::mode_calibration, wire::Mode::calibration},
     {Action::mode_yaw_control, wire::Mode::yaw_control},
     {Action::mode_full_control, wire::Mode::full_control},
+    {Action::mode_acro, wire::Mode::acro},
 };
 
 }  // namespace

@@ -29,6 +29,7 @@ inline constexpr KeyBinding kKeyMap[] = {
     {'4', Action::mode_yaw_control},
     {'5', Action::mode_full_control},
     {'7', Action::height_hold},  // IN4073's height mode key
+    {'8', Action::mode_acro},    // after IN4073's keys: the rate loops alone
     {'a', Action::lift_up},
     {'z', Action::lift_down},
     {kKeyPageUp, Action::lift_up_coarse},

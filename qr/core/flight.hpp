@@ -118,19 +118,20 @@ class Flight {
     if (chain_.calibrate()) {
       if (const chain::GyroTurnsResult* turns = chain_.take_gyro_turns()) take_gyro_turns(*turns);
       safety_.calibration_finished();
-      enter_modes();
     }
   }
   void run_mixer() { wanted_ = chain_.mix(); }
-  void run_manual_mixer() { wanted_ = chain_.mix_manual(); }
+  // The manual set's mixer: the sticks, open loop, whatever the sources (a transition out of
+  // manual takes its sources before this tick's set, which has no loops, is done).
+  void run_manual_mixer() { wanted_ = chain_.mix(chain::kOpenLoop); }
   void run_safety();
-  // The panic's entry action: a landing starts the chain's descent; the cut leaves the engines to
-  // the safety machine.
+  // The panic's entry action: a landing starts the chain's descent (the row's sources, a
+  // landing's); the cut flies the loops as they were and leaves the engines to the safety machine.
   void enter_panic() {
     if (safety_.landing()) {
       chain_.start_descent(safety_.flying_lift());
     } else {
-      chain_.release_lift();
+      chain_.fly(sources::kCut);
     }
   }
   void run_telemetry() {
@@ -203,21 +204,29 @@ class Flight {
     }
     pilot_changed_ = true;
   }
-  // Runs the entry action of every mode the safety machine has just entered.
-  void enter_modes() {
+  // The one door of mode changes (issue 31). Whatever made the safety machine change the mode
+  // since the last tick's door (a request, the sticks or the radio's switches read by the link,
+  // a finished calibration, a watchdog) takes effect here, once: the mode's sources go to the
+  // chain, and its entry action runs, told the mode the vehicle flew in before. It opens at the
+  // end of the link task, after every request the tick reads and before the chain runs, so a
+  // tick that reads a lift change already flies the stick (rule 15); what the calibration or the
+  // safety task changes takes effect at the next tick's door, a control period later (the safety
+  // machine's own engine limits apply at once).
+  void change_modes() {
     static_assert(modes_in_order<Flight>(), "kFlightModes: row i is mode i");
     static_assert(rows_in_task_order<Flight>(), "kFlightTaskTable: row i is task i");
     static_assert(every_mode_has_a_compiled_set<Flight>(), "kCompiledSets: every mode's set is compiled");
-    const uint8_t entered = safety_.take_entered();
-    if (entered != 0) run_entry_actions(entered);
+    static_assert(sources_have_their_tasks<Flight>(), "kFlightModes: a mode's sources need their loops' tasks");
+    if (safety_.take_entered() != 0) open_door();
   }
   // Out of line, as the mode's announcement is: a tick that enters a mode is rare, and the
-  // safety row, which asks every tick, need not save the registers they take.
-  [[gnu::noinline]] void run_entry_actions(uint8_t entered) {
-    for (uint8_t m = 0; m < kModeCount; ++m) {
-      if ((entered & (1u << m)) != 0 && flight_modes<Flight>()[m].enter != nullptr)
-        flight_modes<Flight>()[m].enter(*this);
-    }
+  // link row, which asks every tick, need not save the registers it takes.
+  [[gnu::noinline]] void open_door() {
+    const Mode to = safety_.mode();
+    const FlightMode<Flight>& row = flight_modes<Flight>()[index(to)];
+    chain_.fly(row.sources);
+    if (row.enter != nullptr) row.enter(*this, door_mode_);
+    door_mode_ = to;
   }
   void announce_mode();
   void send(const wire::FrameBytes& frame) {
@@ -272,6 +281,7 @@ class Flight {
   uint32_t last_frame_us_ = 0;
   uint32_t last_byte_us_ = 0;
   Mode announced_mode_ = Mode::safe;
+  Mode door_mode_ = Mode::safe;  // the mode the last door opened into (change_modes)
   uint32_t last_busy_us_ = 0;
   uint32_t tx_dropped_ = 0;
   const SchedulerStats<kTaskCount>* task_stats_ = nullptr;  // the scheduler's, once it ran

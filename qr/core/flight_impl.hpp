@@ -18,6 +18,7 @@ void Flight<Chain>::run_link() {
   if (!radio_rx_.empty()) receive_radio_bytes();
 
   if (pilot_changed_) take_sticks();
+  change_modes();
 
   if (log_status_owed_ || report_next_ < report_end_) send_owed_reports();
   if (log_.downloading()) send_download_parts();  // the check here: the parts' work is out of line
@@ -96,14 +97,12 @@ void Flight<Chain>::on_radio_sticks(const drivers::RcSticks& sticks) {
   Situation s = situation();
   s.requester = Pilot::radio;
   safety_.radio_switches(sticks.arm, kRadioArmingModes[sticks.mode_position], s);
-  enter_modes();
 }
 
 template <SignalChain Chain>
 void Flight<Chain>::run_safety() {
   const Situation s = situation();
   safety_.supervise(s);
-  enter_modes();
   engines_ = safety_.limit_engines(wanted_, s);
   if (safety_.mode() != announced_mode_) announce_mode();
 }

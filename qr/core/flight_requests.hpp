@@ -27,11 +27,9 @@ struct FlightRequests {
     f.pilot_changed_ = true;
     // A lift change ends height hold before the chain runs this tick.
     f.safety_.sticks_moved(f.controls_);
-    f.enter_modes();
   }
   void operator()(const wire::ModeChange& m) {
     answer = f.safety_.request(static_cast<uint8_t>(m.mode), f.situation());
-    f.enter_modes();
   }
   void operator()(const wire::ParamSet& p) {
     // Who flies changes in safe only (docs/safety.md rule 17); the value in force is no change (a
@@ -66,10 +64,7 @@ struct FlightRequests {
     }
     answer = NackReason::unknown_parameter;
   }
-  void operator()(const wire::Exit&) {
-    f.safety_.request_exit(f.situation());
-    f.enter_modes();
-  }
+  void operator()(const wire::Exit&) { f.safety_.request_exit(f.situation()); }
   void operator()(const wire::ObservableGet& g) {
     answer = kObservableStreams ? f.streams_.request_table(g.id) : NackReason::not_supported;
   }

@@ -12,6 +12,7 @@
 
 #include <common/mode.hpp>
 #include <common/task_names.hpp>
+#include <qr/core/chain/engine_sources.hpp>
 #include <qr/core/flight_types.hpp>
 #include <qr/core/task.hpp>
 
@@ -109,14 +110,14 @@ inline constexpr uint8_t kManual[] = {kLinkTask,        kFilterTask, kAccelAngle
                                       kManualMixerTask, kSafetyTask, kStreamTask,      kTelemetryTask, kLoggerTask};
 inline constexpr uint8_t kCalibration[] = {kLinkTask,   kFilterTask,    kCalibrationTask, kSafetyTask,
                                            kStreamTask, kTelemetryTask, kLoggerTask};
-inline constexpr uint8_t kYawControl[] = {kLinkTask,   kFilterTask,     kAccelAnglesTask, kEstimatorTask,
-                                          kHeightTask, kYawControlTask, kMixerTask,       kSafetyTask,
-                                          kStreamTask, kTelemetryTask,  kLoggerTask};
-// Full control, height hold and panic fly the same rows, so they share one set (the scheduler
-// compiles each set into code of its own, and the image has to stay within the board's budget, docs/devboard.md):
-// in full control the vertical task returns at once (the lift is the pilot's); in height hold it
-// flies the lift; a panic that lands flies its descent on all of them, and the cut (hold, ramp)
-// overrides their engines.
+// Yaw control, full control, height hold, acro and panic fly the same rows, so they share one set
+// (the scheduler compiles each set into code of its own, and the image has to stay within the
+// board's budget, docs/devboard.md); the mode's sources (kFlightModes) say which rows' outputs fly:
+// in yaw control the attitude task runs but the sticks fly roll and pitch (its moments are fresh
+// for a panic's landing entered from there, in the tick the panic comes), in full control the
+// vertical task returns at once (the lift is the pilot's); in height hold it flies the lift; a
+// panic that lands flies its descent on all of them, and the cut (hold, ramp) overrides their
+// engines.
 inline constexpr uint8_t kFlying[] = {
     kLinkTask,       kFilterTask, kAccelAnglesTask, kEstimatorTask, kHeightTask,    kVerticalTask, kAttitudeControlTask,
     kYawControlTask, kMixerTask,  kSafetyTask,      kStreamTask,    kTelemetryTask, kLoggerTask};
@@ -127,50 +128,71 @@ constexpr TaskSet set(const uint8_t (&ids)[N]) {
 }
 }  // namespace task_sets
 
-// A mode as the QR runs it: its tasks, and its entry action, run once by the transition into it
-// (nullptr: nothing to do). The mode's other facts are the shared table's (common/mode.hpp).
+// A mode as the QR runs it: its tasks, where each part of the engines' command comes from
+// (engine_sources.hpp: the mixer reads it, nothing else decides), and its entry action, run once
+// by the transition into it and told the mode it came from (nullptr: nothing to do). The mode's
+// other facts are the shared table's (common/mode.hpp). Adding a mode is a row here and one there
+// (docs/architecture.md, "Adding a mode": acro was added so).
 template <class Flight>
 struct FlightMode {
   Mode mode;
   TaskSet tasks;
-  void (*enter)(Flight&);
+  chain::EngineSources sources;
+  void (*enter)(Flight&, Mode from);
 };
+
+namespace sources {
+using chain::Lift;
+using chain::Tilt;
+using chain::Yaw;
+inline constexpr chain::EngineSources kYawControl{Tilt::stick, Yaw::rate, Lift::stick};
+inline constexpr chain::EngineSources kFullControl{Tilt::angle, Yaw::rate, Lift::stick};
+inline constexpr chain::EngineSources kHeightHold{Tilt::angle, Yaw::rate, Lift::hold};
+inline constexpr chain::EngineSources kAcro{Tilt::rate, Yaw::rate, Lift::stick};
+// A panic's cut: the loops fly the pilot's angles on the pilot's lift, as they did, while the
+// safety machine's hold and ramp override the engines; a panic that lands flies chain::kLanding.
+inline constexpr chain::EngineSources kCut = kFullControl;
+}  // namespace sources
 
 template <class Flight>
 inline constexpr FlightMode<Flight> kFlightModes[kModeCount] = {
-    // The lift is the pilot's stick again.
-    {Mode::safe, task_sets::set(task_sets::kSafe), [](Flight& f) { f.chain().release_lift(); }},
-    // A panic that lands starts its descent from the lift that was flying (the safety machine
-    // says which panic it is).
-    {Mode::panic, task_sets::set(task_sets::kFlying), [](Flight& f) { f.enter_panic(); }},
-    {Mode::manual, task_sets::set(task_sets::kManual), [](Flight& f) { f.chain().release_lift(); }},
+    {Mode::safe, task_sets::set(task_sets::kSafe), chain::kOpenLoop, nullptr},
+    // A panic lands (the safety machine says which panic it is) from the lift that was flying, or
+    // cuts (Flight::enter_panic).
+    {Mode::panic, task_sets::set(task_sets::kFlying), chain::kLanding, [](Flight& f, Mode) { f.enter_panic(); }},
+    {Mode::manual, task_sets::set(task_sets::kManual), chain::kOpenLoop, nullptr},
     // A calibration run starts over whenever the mode is entered.
-    {Mode::calibration, task_sets::set(task_sets::kCalibration), [](Flight& f) { f.chain().enter_calibration(); }},
+    {Mode::calibration, task_sets::set(task_sets::kCalibration), chain::kOpenLoop,
+     [](Flight& f, Mode) { f.chain().enter_calibration(); }},
     // The yaw loop's integral starts empty.
-    {Mode::yaw_control, task_sets::set(task_sets::kYawControl),
-     [](Flight& f) {
-       f.chain().release_lift();
-       f.chain().enter_yaw_control();
-     }},
+    {Mode::yaw_control, task_sets::set(task_sets::kFlying), sources::kYawControl,
+     [](Flight& f, Mode) { f.chain().enter_yaw_control(); }},
     // The attitude and yaw loops' integrals start empty, unless the vehicle comes back from height
     // hold: it flew on, and the integrals hold its trim.
-    {Mode::full_control, task_sets::set(task_sets::kFlying),
-     [](Flight& f) {
-       const bool from_height_hold = f.chain().holding_height();
-       f.chain().release_lift();
-       if (from_height_hold) return;
+    {Mode::full_control, task_sets::set(task_sets::kFlying), sources::kFullControl,
+     [](Flight& f, Mode from) {
+       if (from == Mode::height_hold) return;
        f.chain().enter_attitude_control();
        f.chain().enter_yaw_control();
      }},
     // The height at entry is held from the thrust the pilot's lift gave.
-    {Mode::height_hold, task_sets::set(task_sets::kFlying), [](Flight& f) { f.chain().enter_height_hold(); }},
+    {Mode::height_hold, task_sets::set(task_sets::kFlying), sources::kHeightHold,
+     [](Flight& f, Mode) { f.chain().enter_height_hold(); }},
+    // The rate loops alone, their integrals empty.
+    {Mode::acro, task_sets::set(task_sets::kFlying), sources::kAcro,
+     [](Flight& f, Mode) {
+       f.chain().enter_attitude_control();
+       f.chain().enter_yaw_control();
+     }},
 };
 
 // The distinct sets, each compiled once, and which of them each mode runs (modes_in_order and the
 // flight's static checks keep the two tables in step).
 inline constexpr TaskSet kCompiledSets[] = {
-    task_sets::set(task_sets::kSafe),       task_sets::set(task_sets::kManual), task_sets::set(task_sets::kCalibration),
-    task_sets::set(task_sets::kYawControl), task_sets::set(task_sets::kFlying),
+    task_sets::set(task_sets::kSafe),
+    task_sets::set(task_sets::kManual),
+    task_sets::set(task_sets::kCalibration),
+    task_sets::set(task_sets::kFlying),
 };
 inline constexpr uint8_t kCompiledSetCount = sizeof(kCompiledSets) / sizeof(kCompiledSets[0]);
 
@@ -196,6 +218,30 @@ template <class Flight>
 constexpr bool every_mode_has_a_compiled_set() {
   for (uint8_t m = 0; m < kModeCount; ++m) {
     if (compiled_set_of<Flight>(m) >= kCompiledSetCount) return false;
+  }
+  return true;
+}
+
+// Every loop a mode's sources name runs in the mode's set, so the mixer reads this tick's moments
+// and the vertical loops' thrust; and the manual set's mixer, which mixes the sticks whatever the
+// sources, serves only modes flown open loop.
+constexpr bool set_has(TaskSet set, uint8_t task) {
+  for (uint8_t i = 0; i < set.count; ++i) {
+    if (set.ids[i] == task) return true;
+  }
+  return false;
+}
+template <class Flight>
+constexpr bool sources_have_their_tasks() {
+  for (uint8_t m = 0; m < kModeCount; ++m) {
+    const FlightMode<Flight>& row = flight_modes<Flight>()[m];
+    const chain::EngineSources& s = row.sources;
+    if (!set_has(row.tasks, kMixerTask) && !set_has(row.tasks, kManualMixerTask)) continue;  // engines zero
+    if (s.tilt != chain::Tilt::stick && !set_has(row.tasks, kAttitudeControlTask)) return false;
+    if (s.yaw != chain::Yaw::stick && !set_has(row.tasks, kYawControlTask)) return false;
+    if (s.lift != chain::Lift::stick && !set_has(row.tasks, kVerticalTask)) return false;
+    const bool open_loop = s.tilt == chain::Tilt::stick && s.yaw == chain::Yaw::stick && s.lift == chain::Lift::stick;
+    if (set_has(row.tasks, kManualMixerTask) && !open_loop) return false;
   }
   return true;
 }

@@ -87,8 +87,8 @@ class SafetyMachine {
   void calibration_finished();
 
   // The modes entered since the last call, one bit per mode (1 << index(mode)), then cleared.
-  // Every transition goes through one place that sets its bit; the owner runs each entered
-  // mode's entry action (flight_modes.hpp) right after the call that made the transition.
+  // Every transition goes through one place that sets its bit; the owner's one door
+  // (Flight::change_modes) gives the chain the mode's sources and runs its entry action.
   uint8_t take_entered() {
     const uint8_t entered = entered_;
     entered_ = 0;

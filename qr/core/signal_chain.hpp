@@ -8,6 +8,7 @@
 
 #include <common/parameter_table.hpp>
 #include <qr/core/board.hpp>
+#include <qr/core/chain/engine_sources.hpp>
 #include <qr/core/chain/gyro_turns.hpp>
 #include <qr/core/flight_types.hpp>
 
@@ -37,7 +38,7 @@ concept SignalChain = requires(C& c, const C& cc, const wire::ParameterValues& p
   c.control_attitude();
   c.control_yaw();
   { c.mix() } -> ConvertibleToEngines;
-  { c.mix_manual() } -> ConvertibleToEngines;
+  { c.mix(chain::kOpenLoop) } -> ConvertibleToEngines;  // the manual set's mixer: the sticks, open loop
   c.restart_estimator();  // at rest on the ground: start over from the accelerometer
   // entry actions
   c.enter_calibration();
@@ -45,7 +46,7 @@ concept SignalChain = requires(C& c, const C& cc, const wire::ParameterValues& p
   c.enter_yaw_control();
   c.enter_height_hold();
   c.start_descent(uint16_t{});  // a panic that lands, from the lift that was flying
-  c.release_lift();             // every other mode: the pilot's lift stick
+  c.fly(chain::kOpenLoop);      // the door: where each axis and the lift come from (engine_sources.hpp)
   // read-outs, in the wire's units
   {cc.calibrated()};
   {cc.landed()};

@@ -11,61 +11,18 @@
 #include <qr/host/real_numbers.hpp>
 
 #include "chain_checksum.hpp"
+#include "chain_pilot.hpp"
 #include "chain_test_support.hpp"
 
 namespace qr {
 namespace {
 
+using chain::test::climbing;
+using chain::test::Mode;
+using chain::test::Pilot;
 using chain::test::sample_at;
+using chain::test::sticks;
 using DoubleChain = FlightChain<chain::DoubleNumbers>;
-
-enum class Mode { manual, yaw, full };
-
-// Drives a chain tick by tick as the flight task sets do (qr/core/flight_tasks.hpp): the
-// accelerometer angles every kAccelDivider-th tick, the modes' entry actions on a change of mode.
-template <class Chain>
-struct Pilot {
-  Chain chain;
-  uint32_t ticks_run = 0;
-  bool in_full = false;
-
-  void calibrate_level(const double (&gyro_offset)[3] = {0, 0, 0}, const double (&accel_offset)[3] = {0, 0, 0}) {
-    chain.enter_calibration();
-    in_full = false;
-    for (int32_t n = 0;; ++n) {
-      chain.set_pilot({});
-      chain.filter(sample_at(0, 0, 0, 0, 0, gyro_offset, accel_offset));
-      if (chain.calibrate()) break;
-      ASSERT_LT(n, 10000);
-    }
-  }
-  EngineCommand tick(Mode mode, const SensorSample& s, const ControlInput& sticks) {
-    if (mode == Mode::full && !in_full) chain.enter_attitude_control();
-    in_full = mode == Mode::full;
-    chain.set_pilot(sticks);
-    chain.filter(s);
-    if (ticks_run++ % Chain::kAccelDivider == 0) chain.estimate_accel_angles();
-    chain.estimate();
-    if (mode == Mode::manual) return chain.mix_manual();
-    if (mode == Mode::full) chain.control_attitude();
-    chain.control_yaw();
-    return chain.mix();
-  }
-  EngineCommand run(Mode mode, const SensorSample& s, const ControlInput& sticks, int ticks) {
-    EngineCommand e;
-    for (int n = 0; n < ticks; ++n) e = tick(mode, s, sticks);
-    return e;
-  }
-};
-
-ControlInput sticks(uint16_t lift, int16_t roll = 0, int16_t pitch = 0, int16_t yaw = 0) {
-  ControlInput c;
-  c.lift = lift;
-  c.roll = roll;
-  c.pitch = pitch;
-  c.yaw = yaw;
-  return c;
-}
 
 // For the sign tests below: the estimate must first reach the tilt the accelerometer shows. With
 // the default C1 (8 s, chosen for free flight) that takes many seconds, so those vehicles use an
@@ -139,6 +96,31 @@ TEST(FlightChain, YawModeLeavesRollAndPitchToTheSticks) {
   EXPECT_EQ(e.value[1], e.value[3]);
 }
 
+// Acro (engine_sources.hpp, Tilt::rate): the rate loops alone. A tilt with the sticks centred asks
+// for nothing (no angle loop: the vehicle stays where it is left); half roll stick asks for half
+// max_yaw_rate_rad_s (1 rad/s by default): a positive roll moment while the vehicle does not turn,
+// and none once the gyro reads that rate.
+TEST(FlightChain, AcroFliesTheRateLoopsToTheSticksRates) {
+  Pilot<FixedChain> p;
+  p.calibrate_level();
+  p.chain.fly({chain::Tilt::rate, chain::Yaw::rate, chain::Lift::stick});
+  const auto acro_tick = [&p](const SensorSample& s, const ControlInput& c) {
+    p.chain.set_pilot(c);
+    p.chain.filter(s);
+    p.chain.estimate();
+    p.chain.control_attitude();
+    p.chain.control_yaw();
+    return p.chain.mix();
+  };
+  for (int n = 0; n < 500; ++n) acro_tick(sample_at(0.2, 0), sticks(500));
+  EXPECT_EQ(p.chain.moments_e3().roll, 0) << "tilted, sticks centred: no angle loop";
+  for (int n = 0; n < 20; ++n) acro_tick(sample_at(0.2, 0), sticks(500, 500));
+  EXPECT_NEAR(p.chain.rate_setpoint_e3(0), 1000, 2) << "half stick: half of max_yaw_rate_rad_s";
+  EXPECT_GT(p.chain.moments_e3().roll, 100000) << "a roll rate asked, none read: a roll moment";
+  for (int n = 0; n < 200; ++n) acro_tick(sample_at(0.2, 0, 1.0), sticks(500, 500));
+  EXPECT_LT(std::abs(p.chain.moments_e3().roll), 5000) << "the rate read is the rate asked";
+}
+
 TEST(FlightChain, CalibrationRemovesTheOffsets) {
   const double gyro_offset[3] = {40, -25, 15}, accel_offset[3] = {60, -35, 90};
   Pilot<FixedChain> p;
@@ -206,11 +188,6 @@ TEST(FlightChain, ParametersReachTheBlocks) {
 // full control, start empty whenever full control is entered, stay empty while the lift is 0,
 // and hold while the mixer has to scale the moments down.
 // A level vehicle whose thrust exceeds its weight: the accelerometer reads `g` along -z.
-SensorSample climbing(double g) {
-  SensorSample s = sample_at(0, 0);
-  s.accel[2] = chain::test::counts(-g * sensor::kAccelCountsPerG);
-  return s;
-}
 
 TEST(FlightChain, IntegralsStartEmptyAndHoldWhenTheyMust) {
   Pilot<FixedChain> p;
@@ -344,6 +321,7 @@ TEST(FlightChain, TheObservedTermsAddUpToTheMoments) {
   // Height hold's loops: the height at entry is held (no climb asked for at once), and the thrust
   // reads as the log's vertical_thrust_e3.
   p.chain.enter_height_hold();
+  p.chain.fly({chain::Tilt::angle, chain::Yaw::rate, chain::Lift::hold});
   for (int n = 0; n < 8; ++n) {
     p.chain.estimate_height();
     p.chain.control_vertical();

@@ -115,7 +115,7 @@ TEST(ProtocolDocument, ModeNumbersBeyondTheModesAreUnknownModeNotBadValue) {
   std::vector<std::string> lines;
   const auto field = rows_matching(
       std::regex(
-          R"(^\| 1 \| u8 \| mode \| 0 safe, .*, (\d) height hold; any other number \((\d+)\.\.255\) is answered nack `unknown_mode` \|$)"),
+          R"(^\| 1 \| u8 \| mode \| 0 safe, .*, (\d) [a-z ]+; any other number \((\d+)\.\.255\) is answered nack `unknown_mode` \|$)"),
       lines);
   ASSERT_EQ(field.size(), 1u) << "the mode_change mode row";
   EXPECT_EQ(std::stoi(field[0][1].str()), wire::kModeCount - 1);

@@ -67,20 +67,34 @@ TEST(ArchitectureDocument, TheTaskTableIsTheCodes) {
   EXPECT_EQ(rows, size_t{kFlightTaskCount}) << "one row per task";
 }
 
+// The sources' names as the page writes them (engine_sources.hpp's enumerators).
+constexpr const char* kTiltNames[] = {"stick", "angle", "level", "rate"};
+constexpr const char* kYawNames[] = {"stick", "rate", "still"};
+constexpr const char* kLiftNames[] = {"stick", "hold", "descend"};
+
 TEST(ArchitectureDocument, TheModeTableIsTheCodes) {
+  // "{flying}" stands for the set the flying modes share (task_sets::kFlying).
+  std::vector<std::string> flying;
+  for (const uint8_t id : task_sets::kFlying) flying.push_back(Firmware::kTasks[id].name);
   size_t rows = 0;
   for (const std::string& line : section("The mode table")) {
     if (line.rfind("| ", 0) != 0) continue;
     const std::vector<std::string> cells = split(line.substr(1, line.size() - 2), '|');
-    if (cells.size() != 3 || cells[0] == "mode" || cells[0].rfind("---", 0) == 0) continue;
+    if (cells.size() != 4 || cells[0] == "mode" || cells[0].rfind("---", 0) == 0) continue;
     ASSERT_LT(rows, size_t{kModeCount});
     const Mode mode = static_cast<Mode>(rows);
     EXPECT_EQ(cells[0], wire::mode_name(mode)) << "rows in mode order";
     const FlightMode<Firmware>& code = flight_modes<Firmware>()[rows];
     std::vector<std::string> names;
     for (uint8_t k = 0; k < code.tasks.count; ++k) names.push_back(Firmware::kTasks[code.tasks.ids[k]].name);
-    EXPECT_EQ(split(cells[1], ','), names) << cells[0];
-    EXPECT_EQ(cells[2].empty(), code.enter == nullptr) << cells[0] << ": an entry action iff the page names one";
+    const std::vector<std::string> cell_names = split(cells[1], ',');
+    EXPECT_EQ(cell_names.size() == 1 && cell_names[0] == "{flying}" ? flying : cell_names, names) << cells[0];
+    const chain::EngineSources& s = code.sources;
+    EXPECT_EQ(split(cells[2], ','),
+              (std::vector<std::string>{kTiltNames[static_cast<int>(s.tilt)], kYawNames[static_cast<int>(s.yaw)],
+                                        kLiftNames[static_cast<int>(s.lift)]}))
+        << cells[0] << ": its sources";
+    EXPECT_EQ(cells[3].empty(), code.enter == nullptr) << cells[0] << ": an entry action iff the page names one";
     ++rows;
   }
   EXPECT_EQ(rows, size_t{kModeCount}) << "one row per mode";

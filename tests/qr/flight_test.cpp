@@ -308,6 +308,7 @@ TEST_F(FlightTest, APanicThatLandsFliesTheChainsDescentUntilTouchdown) {
   scheduler.tick();
   EXPECT_EQ(flight.mode(), Mode::safe);
   EXPECT_TRUE(board.engines.all_zero());
+  scheduler.tick();  // the safety task's transition reaches the chain at the next tick's door
   EXPECT_FALSE(flight.chain().descending) << "safe gives the lift back to the stick";
 }
 
@@ -349,13 +350,39 @@ TEST_F(FlightTest, TaskSetsFollowTheMode) {
   request_mode(Mode::yaw_control);
   run_ms(10);
   EXPECT_GT(flight.chain().yaw_controlled, 0u);
-  EXPECT_EQ(flight.chain().attitude_controlled, 0u);
+  // Yaw control runs the flying set, attitude task included (its moments are fresh for a panic's
+  // landing entered from there), but its sources leave roll and pitch to the sticks.
+  EXPECT_GT(flight.chain().attitude_controlled, 0u);
+  EXPECT_EQ(flight.chain().sources.tilt, chain::Tilt::stick);
+  EXPECT_EQ(flight.chain().sources.yaw, chain::Yaw::rate);
   request_mode(Mode::safe);
   run_ms(3100);
   request_mode(Mode::full_control);
   run_ms(10);
   EXPECT_EQ(flight.mode(), Mode::full_control);
   EXPECT_GT(flight.chain().attitude_controlled, 0u);
+}
+
+// Acro is a row of the mode table (issue 31's worked example): entered from safe once calibrated,
+// its sources the rate loops' on the pilot's lift, its integrals emptied on entry, and out
+// through panic as every flight mode.
+TEST_F(FlightTest, AcroIsARowOfTheModeTable) {
+  request_mode(Mode::acro);
+  run_ms(10);
+  EXPECT_EQ(flight.mode(), Mode::safe) << "refused before a calibration";
+  calibrate();
+  const uint32_t attitude_entered = flight.chain().attitude_entered;
+  request_mode(Mode::acro);
+  run_ms(10);
+  ASSERT_EQ(flight.mode(), Mode::acro);
+  EXPECT_EQ(flight.chain().sources.tilt, chain::Tilt::rate);
+  EXPECT_EQ(flight.chain().sources.yaw, chain::Yaw::rate);
+  EXPECT_EQ(flight.chain().sources.lift, chain::Lift::stick);
+  EXPECT_EQ(flight.chain().attitude_entered, attitude_entered + 1) << "the integrals start empty";
+  EXPECT_GT(flight.chain().attitude_controlled, 0u);
+  request_mode(Mode::safe);
+  run_ms(10);
+  EXPECT_EQ(flight.mode(), Mode::panic) << "a flight mode leaves through panic";
 }
 
 TEST_F(FlightTest, EnteringAModeRunsItsEntryActionOnceByTheTransition) {

@@ -6,6 +6,7 @@
 
 #include <common/parameter_table.hpp>
 #include <qr/core/board.hpp>
+#include <qr/core/chain/engine_sources.hpp>
 #include <qr/core/flight_types.hpp>
 
 namespace qr::test {
@@ -40,6 +41,7 @@ struct ScriptedChain {
   uint16_t descent_engines = 0;  // what mix() gives while descending (the chain flies the lift)
   uint16_t hold_engines = 0;     // what mix() gives while holding the height
   bool holding = false, descending = false;
+  chain::EngineSources sources = chain::kOpenLoop;
   int32_t yaw_p = 0;
   ControlInput pilot;
 
@@ -71,19 +73,17 @@ struct ScriptedChain {
   void estimate() { ++estimated; }
   void estimate_height() { ++height_estimated; }
   void control_vertical() { ++vertical_controlled; }
-  void enter_height_hold() {
-    ++height_holds_entered;
-    holding = true;
-    descending = false;
-  }
+  void enter_height_hold() { ++height_holds_entered; }
   void start_descent(uint16_t flying_lift) {
     ++descents_started;
     descent_from_lift = flying_lift;
-    descending = true;
-    holding = false;
   }
-  void release_lift() { holding = descending = false; }
-  bool holding_height() const { return holding; }
+  // The door's sources (engine_sources.hpp): who flies the lift.
+  void fly(chain::EngineSources s) {
+    sources = s;
+    holding = s.lift == chain::Lift::hold;
+    descending = s.lift == chain::Lift::descend;
+  }
   bool landed() const { return landed_now; }
   uint16_t hover_lift() const { return hover_lift_now; }
   bool height_valid() const { return height_known; }
@@ -96,8 +96,12 @@ struct ScriptedChain {
   void control_attitude() { ++attitude_controlled; }
   // Every engine at the lift stick: enough to see that the mixer ran and what the safety
   // machine then did with it.
-  EngineCommand mix() const { return all(descending ? descent_engines : holding ? hold_engines : pilot.lift); }
-  EngineCommand mix_manual() const { return all(pilot.lift); }
+  EngineCommand mix(chain::EngineSources from) const {
+    return all(from.lift == chain::Lift::descend ? descent_engines
+               : from.lift == chain::Lift::hold  ? hold_engines
+                                                 : pilot.lift);
+  }
+  EngineCommand mix() const { return mix(sources); }
 
   int16_t roll_e4() const { return 123; }
   int16_t pitch_e4() const { return -45; }

@@ -47,7 +47,7 @@ struct UnknownModeTest : ::testing::Test {
 
 TEST_F(UnknownModeTest, EveryNumberBeyondTheModesIsAnsweredUnknownMode) {
   uint8_t seq = 0;
-  for (unsigned mode : {unsigned{wire::kModeCount}, 7u, 128u, 255u}) {
+  for (unsigned mode : {unsigned{wire::kModeCount}, unsigned{wire::kModeCount} + 1, 128u, 255u}) {
     nacks.clear();
     send_mode(++seq, static_cast<uint8_t>(mode));
     ASSERT_EQ(nacks.size(), 1u) << "mode " << mode;
@@ -60,10 +60,10 @@ TEST_F(UnknownModeTest, EveryNumberBeyondTheModesIsAnsweredUnknownMode) {
 }
 
 TEST_F(UnknownModeTest, TheLastModeIsStillAMode) {
-  // Height hold (the last mode number) is known: refused for another reason (only from full control).
+  // The last mode number (acro) is known: refused for another reason (no calibration yet).
   send_mode(1, wire::kModeCount - 1);
   ASSERT_EQ(nacks.size(), 1u);
-  EXPECT_EQ(nacks[0].reason, wire::NackReason::not_from_this_mode);
+  EXPECT_EQ(nacks[0].reason, wire::NackReason::not_calibrated);
 }
 
 }  // namespace

@@ -177,6 +177,27 @@ class AttitudeController {
     const Rate p_part = clamp(product_sat<Rate>(p1_, setpoint - angle), -kTwice, kTwice);
     const Rate ff_part = clamp(feed_forward, -kMaxTiltRateSetpoint<N>, kMaxTiltRateSetpoint<N>);
     rate_setpoint_ = clamp(p_part + ff_part, -kMaxTiltRateSetpoint<N>, kMaxTiltRateSetpoint<N>);
+    // Far from the set-point the integral learns at an eighth of its rate (kIntegralZone).
+    return rate_loop(rate, integrate, moment_feed_forward, magnitude(setpoint - angle) < kIntegralZone);
+  }
+
+  // The rate loop alone (acro, engine_sources.hpp): a rate set-point from the sticks, clamped as
+  // the angle loop's is; no angle error, so the integral learns at its full rate.
+  Thrust rate_moment(Rate setpoint, Rate rate, bool integrate = false) {
+    rate_setpoint_ = clamp(setpoint, -kMaxTiltRateSetpoint<N>, kMaxTiltRateSetpoint<N>);
+    return rate_loop(rate, integrate, Thrust{}, true);
+  }
+  Rate rate_setpoint() const { return rate_setpoint_; }
+  Thrust integral() const { return integral_; }
+  // The last moment's proportional and derivative terms, P2 (rate_setpoint - rate) and
+  // -D d(rate)/dt, each saturated to the moment format: with the integral and the moment
+  // feed-forward they make the moment (before its clamp). Read for a live plot, never per tick.
+  Thrust p_term() const { return N::template convert_sat<Thrust>(p_wide_); }
+  Thrust d_term() const { return N::template convert_sat<Thrust>(-d_wide_); }
+
+ private:
+  // PID on rate_setpoint_ - rate, the integral learning fully when `near` (else an eighth).
+  Thrust rate_loop(Rate rate, bool integrate, Thrust moment_feed_forward, bool near) {
     // Both differences fit the Rate format (+-16 rad/s): the set-point is within +-4 rad/s and a
     // filtered, calibrated gyro within about +-9.5 (full scale 8.7 rad/s, filter overshoot,
     // bias clamp), so the error is below 14 rad/s; one tick's change of that filtered rate is
@@ -194,8 +215,7 @@ class AttitudeController {
     const Thrust pd = clamp(N::template convert_sat<Thrust>(p_wide_ - d_wide_), -kMaxMoment<N>, kMaxMoment<N>) +
                       clamp(moment_feed_forward, -kMaxMoment<N>, kMaxMoment<N>);  // within +-2000: fits
     if (integrate && magnitude(pd + integral_) < kMaxMoment<N>) {
-      // Far from the set-point the integral learns at an eighth of its rate (kIntegralZone).
-      const Rate learn = magnitude(setpoint - angle) < kIntegralZone ? error : product<Rate>(error, kOutsideShare);
+      const Rate learn = near ? error : product<Rate>(error, kOutsideShare);
       integral_sum_ += fx::mul_wide(i_dt_, learn);  // at most 2 x 14 per tick onto at most 200
       integral_ = N::template convert<Thrust>(integral_sum_);
       if (kMaxIntegralMoment<N> < integral_) {
@@ -208,15 +228,7 @@ class AttitudeController {
     }
     return clamp(pd + integral_, -kMaxMoment<N>, kMaxMoment<N>);
   }
-  Rate rate_setpoint() const { return rate_setpoint_; }
-  Thrust integral() const { return integral_; }
-  // The last moment's proportional and derivative terms, P2 (rate_setpoint - rate) and
-  // -D d(rate)/dt, each saturated to the moment format: with the integral and the moment
-  // feed-forward they make the moment (before its clamp). Read for a live plot, never per tick.
-  Thrust p_term() const { return N::template convert_sat<Thrust>(p_wide_); }
-  Thrust d_term() const { return N::template convert_sat<Thrust>(-d_wide_); }
 
- private:
   using PWide = decltype(fx::mul_wide(P2{}, Rate{}));
   using DWide = decltype(fx::mul_wide(DerivativeGain{}, Rate{}));
   static_assert(kRollPitchDFrac >= kP2Frac, "P2 moves into D's format without rounding");

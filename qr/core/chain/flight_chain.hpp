@@ -2,20 +2,22 @@
 // flowing one way through a tick:
 //
 //   set_pilot -> filter -> (calibrate) -> (estimate_accel_angles) -> estimate -> (estimate_height)
-//             -> (control_vertical) -> (control_attitude) (control_yaw) -> mix   (manual: mix_manual)
+//             -> (control_vertical) -> (control_attitude) (control_yaw) -> mix
 //
 // Each method reads what the ones before it left and writes its own outputs; none reaches back.
 // Which of them run in a tick, and how often, is the flight's task table (qr/core/flight_tasks.hpp);
-// what happens on entering a mode is its mode table (enter_calibration, enter_attitude_control),
-// called by the transition. Nothing here counts ticks.
+// where each axis' moment and the lift come from is the mode's row (engine_sources.hpp), given by
+// fly(); what happens on entering a mode is its mode table (enter_calibration,
+// enter_attitude_control), called by the transition. Nothing here counts ticks.
 //
 // Num is the number policy: FixedNumbers in flight (FixedChain below); the host tests also run
 // FlightChain<DoubleNumbers> (qr/host/real_numbers.hpp) as the accuracy reference. SampleHz is
 // the control rate the designs and time steps are made for.
 //
 // The read-outs are the chain's own numbers (Num's Angle in rad, Rate in rad/s, Thrust in thrust
-// units: engine_mixer.hpp). The same values as decimal integers in the wire's units (roll_e4(),
-// ...), which telemetry, the logs and the observables read, come from the base, DecimalReadouts.
+// units: engine_mixer.hpp); what the console sees of them is their observables' readers' to
+// convert (qr/core/observable_readers.hpp). The same values as decimal integers (roll_e4(), ...),
+// for the replay, the chain checksum and tests, come from the base, DecimalReadouts.
 #pragma once
 
 #include <stdint.h>
@@ -27,6 +29,7 @@
 #include <qr/core/chain/controllers.hpp>
 #include <qr/core/chain/decimal_readouts.hpp>
 #include <qr/core/chain/engine_mixer.hpp>
+#include <qr/core/chain/engine_sources.hpp>
 #include <qr/core/chain/fixed_numbers.hpp>
 #include <qr/core/chain/gyro_clip.hpp>
 #include <qr/core/chain/gyro_turns.hpp>
@@ -180,9 +183,9 @@ class FlightChain : public chain::DecimalReadouts<FlightChain<Num, SampleHz>> {
     // The thrust the mixer is asked for: the pilot's lift, or the vertical loops' (height hold, a
     // landing) from their last run.
     const Accel accel_z = filters_.accel(2) - calibration_.accel_offset(2);
-    const Thrust thrust = lift_ == LiftSource::pilot ? pilot_thrust_ : vertical_.thrust();
+    const Thrust thrust = sources_.lift == chain::Lift::stick ? pilot_thrust_ : vertical_.thrust();
     landed_.update({thrust, accel_z, height_.height(), height_.climb()});
-    if (lift_ == LiftSource::descend && touchdown_.impact(accel_z)) landed_.touch_down(height_.height());
+    if (sources_.lift == chain::Lift::descend && touchdown_.impact(accel_z)) landed_.touch_down(height_.height());
   }
 
   // What the gyro missed at full scale (gyro_clip.hpp), counts x samples -> angles, into the
@@ -204,13 +207,14 @@ class FlightChain : public chain::DecimalReadouts<FlightChain<Num, SampleHz>> {
     height_.update(accel, estimator_.roll(), estimator_.pitch(), sample_.pressure_pa);
   }
 
-  // ---- who flies the lift: the pilot's stick, or the vertical loops (vertical_controller.hpp) ----
+  // ---- where the engines' command comes from (engine_sources.hpp): the mode's row ----
+  // Set by the flight's one door for mode changes (flight.hpp), for the tasks and the mixer that
+  // follow; the vertical loops' starts below are entry actions of their own.
+  void fly(chain::EngineSources sources) { sources_ = sources; }
+  chain::EngineSources sources() const { return sources_; }
   // Entry action of height hold: the height now is held, starting from the thrust the pilot's
   // lift gave.
-  void enter_height_hold() {
-    vertical_.start(mixer_.thrust_of_lift(pilot_.lift()), height_.height());
-    lift_ = LiftSource::hold;
-  }
+  void enter_height_hold() { vertical_.start(mixer_.thrust_of_lift(pilot_.lift()), height_.height()); }
   // Entry action of a panic that lands: level, descending at panic_descent_mm_s from the hover
   // thrust the landed detector learnt, or before any was learnt from the thrust of `flying_lift`
   // (engine units: the mean of the last quarter second, which an upset that held one engine full
@@ -221,20 +225,17 @@ class FlightChain : public chain::DecimalReadouts<FlightChain<Num, SampleHz>> {
     vertical_.start(landed_.hover_known() ? landed_.hover() : mixer_.thrust_of_lift(flying_lift), height_.height());
     touchdown_.start();
     landed_.take_off();
-    lift_ = LiftSource::descend;
   }
-  // Every other mode's entry: the lift is the pilot's stick again.
-  void release_lift() { lift_ = LiftSource::pilot; }
-  bool holding_height() const { return lift_ == LiftSource::hold; }
-  bool descending() const { return lift_ == LiftSource::descend; }
 
   // Task "vertical": after the height estimate, at its rate: the thrust the vertical loops ask
   // for, and in a landing the touchdown.
   void control_vertical() {
-    if (lift_ == LiftSource::pilot) return;
-    const Climb want = lift_ == LiftSource::hold ? vertical_.climb_to_hold(height_.height()) : -touchdown_.descent();
+    if (sources_.lift == chain::Lift::stick) return;
+    const Climb want = sources_.lift == chain::Lift::hold ? vertical_.climb_to_hold(height_.height())
+                                                          : -touchdown_.descent();
     vertical_.update(want, height_.climb(), !landed_.landed());
-    if (lift_ == LiftSource::descend && touchdown_.update(height_.climb())) landed_.touch_down(height_.height());
+    if (sources_.lift == chain::Lift::descend && touchdown_.update(height_.climb()))
+      landed_.touch_down(height_.height());
   }
 
   // Entry action of yaw and full control: the yaw loop's integral starts empty.
@@ -249,10 +250,11 @@ class FlightChain : public chain::DecimalReadouts<FlightChain<Num, SampleHz>> {
   // attitude loops' do.
   void control_yaw() {
     if (landed_.landed()) yaw_.reset();
-    const bool integrate = !landed_.landed() && (yaw_entered_ || !mixer_.limited());
+    // The integral learns only while the loop flies the yaw (not in manual's open loop).
+    const bool integrate = !landed_.landed() && sources_.yaw != chain::Yaw::stick &&
+                           (yaw_entered_ || !mixer_.limited());
     yaw_entered_ = false;
     yaw_moment_ = yaw_.moment(yaw_rate_target(), estimator_.r(), integrate);
-    yaw_ran_ = true;
   }
 
   // Entry action of full control: the rate loops' integrals start empty, and the first tick
@@ -272,13 +274,21 @@ class FlightChain : public chain::DecimalReadouts<FlightChain<Num, SampleHz>> {
   // the estimator's drag model expects (smooth, where the reading itself carries vibration).
   // The rate loops' integrals stay
   // empty while the vehicle is on the ground (the landed detector: from lift 0 until it climbs
-  // off), and hold while the mixer had to scale the last moments down.
+  // off), hold while the mixer had to scale the last moments down, and learn only while the loops
+  // fly roll and pitch (in yaw control the task runs, for a panic's landing to find fresh moments,
+  // but the sticks fly). Acro (Tilt::rate) runs the rate loops alone, to the sticks' rates.
   void control_attitude() {
     if (landed_.landed()) {
       for (auto& axis : tilt_) axis.reset();
     }
-    const bool integrate = !landed_.landed() && (attitude_entered_ || !mixer_.limited());
+    const bool integrate = !landed_.landed() && sources_.tilt != chain::Tilt::stick &&
+                           (attitude_entered_ || !mixer_.limited());
     attitude_entered_ = false;
+    if (sources_.tilt == chain::Tilt::rate) {
+      roll_moment_ = tilt_[0].rate_moment(pilot_.roll_rate(), estimator_.p(), integrate);
+      pitch_moment_ = tilt_[1].rate_moment(pilot_.pitch_rate(), estimator_.q(), integrate);
+      return;
+    }
     // On the ground nothing moves, so there is no drag (and the expected angle is the tilt).
     const auto drag = landed_.landed() ? typename Num::template Fixed<0>{} : drag_moment_;
     roll_moment_ = tilt_[0].moment(roll_target(), estimator_.roll(), estimator_.p(), integrate, estimator_.p_to_hold(),
@@ -286,28 +296,22 @@ class FlightChain : public chain::DecimalReadouts<FlightChain<Num, SampleHz>> {
     pitch_moment_ = tilt_[1].moment(pitch_target(), estimator_.pitch(), estimator_.q(), integrate,
                                     estimator_.q_to_hold(),
                                     chain::product_sat<Thrust>(drag, estimator_.pitch_expected()));
-    attitude_ran_ = true;
   }
 
-  // Task "mixer": lift and moments -> engines. Each moment comes from its controller if that
-  // ran this tick, otherwise from the stick: full control runs both controllers, yaw control
-  // only the yaw loop (roll and pitch manual), manual neither. The order of the controller tasks
-  // within a tick does not matter. Always inlined, as the mixer's own steps are (engine_mixer.hpp
-  // says why).
-  [[gnu::always_inline]] inline EngineCommand mix() {
-    moments_.roll = attitude_ran_ ? roll_moment_ : pilot_.roll_moment();
-    moments_.pitch = attitude_ran_ ? pitch_moment_ : pilot_.pitch_moment();
-    moments_.yaw = yaw_ran_ ? yaw_moment_ : pilot_.yaw_moment();
-    attitude_ran_ = yaw_ran_ = false;
-    if (lift_ != LiftSource::pilot) return engines_ = mixer_.mix_thrust(vertical_.thrust(), moments_);
+  // Task "mixer": lift and moments -> engines, each from where the sources say (the mode's row):
+  // the sticks' moments or the loops', the pilot's lift or the vertical loops'. Every mode whose
+  // sources name a loop runs that loop's task in its set, and so does every set a transition into
+  // it can start from (flight_tasks.hpp), so a moment read here is this tick's. Always inlined, as
+  // the mixer's own steps are (engine_mixer.hpp says why).
+  [[gnu::always_inline]] inline EngineCommand mix(chain::EngineSources from) {
+    const bool sticks = from.tilt == chain::Tilt::stick;
+    moments_.roll = sticks ? pilot_.roll_moment() : roll_moment_;
+    moments_.pitch = sticks ? pilot_.pitch_moment() : pitch_moment_;
+    moments_.yaw = from.yaw == chain::Yaw::stick ? pilot_.yaw_moment() : yaw_moment_;
+    if (from.lift != chain::Lift::stick) return engines_ = mixer_.mix_thrust(vertical_.thrust(), moments_);
     return engines_ = mixer_.mix(pilot_.lift(), moments_);
   }
-
-  // Manual mode: sticks -> moments open loop -> the same mapping.
-  EngineCommand mix_manual() {
-    attitude_ran_ = yaw_ran_ = false;
-    return mix();
-  }
+  [[gnu::always_inline]] inline EngineCommand mix() { return mix(sources_); }
 
   // ---- read-outs, in the chain's own numbers ----
   // The attitude estimate and the bias-corrected rates.
@@ -388,12 +392,10 @@ class FlightChain : public chain::DecimalReadouts<FlightChain<Num, SampleHz>> {
   using Count = typename Num::template Fixed<0>;
   using Climb = typename Num::Climb;
 
-  enum class LiftSource : uint8_t { pilot, hold, descend };
-
   // What the loops fly to: the pilot's sticks, or level and not turning in a landing.
-  Angle roll_target() const { return lift_ == LiftSource::descend ? Angle{} : pilot_.roll_angle(); }
-  Angle pitch_target() const { return lift_ == LiftSource::descend ? Angle{} : pilot_.pitch_angle(); }
-  Rate yaw_rate_target() const { return lift_ == LiftSource::descend ? Rate{} : pilot_.yaw_rate(); }
+  Angle roll_target() const { return sources_.tilt == chain::Tilt::level ? Angle{} : pilot_.roll_angle(); }
+  Angle pitch_target() const { return sources_.tilt == chain::Tilt::level ? Angle{} : pilot_.pitch_angle(); }
+  Rate yaw_rate_target() const { return sources_.yaw == chain::Yaw::still ? Rate{} : pilot_.yaw_rate(); }
 
   static constexpr Count kThousand = Count(1000.0);
 
@@ -416,11 +418,10 @@ class FlightChain : public chain::DecimalReadouts<FlightChain<Num, SampleHz>> {
   chain::LandedDetector<Num, SampleHz> landed_;
   chain::VerticalController<Num, kHeightRunHz> vertical_;
   chain::TouchdownDetector<Num, kHeightRunHz, SampleHz> touchdown_;
-  LiftSource lift_ = LiftSource::pilot;
+  chain::EngineSources sources_ = chain::kOpenLoop;       // the mode's row (fly())
   Thrust pilot_thrust_{};                                 // thrust_of_lift(pilot_.lift()), made when the sticks change
   typename Num::template Fixed<0> drag_moment_{};         // thrust units per rad of expected accelerometer angle
   Thrust roll_moment_{}, pitch_moment_{}, yaw_moment_{};  // the controllers' latest outputs
-  bool attitude_ran_ = false, yaw_ran_ = false;           // ... computed in this tick
   chain::Moments<Thrust> moments_{};                      // what the last mix asked for
   EngineCommand engines_{};
   SensorSample sample_{};

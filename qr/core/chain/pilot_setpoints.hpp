@@ -40,6 +40,8 @@ class PilotSetpoints {
   void update(const ControlInput& c) {
     lift_ = c.lift > wire::kLiftMax ? wire::kLiftMax : c.lift;
     const auto roll = stick(c.roll), pitch = stick(c.pitch), yaw = stick(c.yaw);
+    roll_stick_ = roll;
+    pitch_stick_ = pitch;
     roll_angle_ = product<Angle>(roll, angle_per_stick_);
     pitch_angle_ = product<Angle>(pitch, angle_per_stick_);
     yaw_rate_ = product<Rate>(yaw, yaw_rate_per_stick_);
@@ -52,6 +54,10 @@ class PilotSetpoints {
   Angle roll_angle() const { return roll_angle_; }
   Angle pitch_angle() const { return pitch_angle_; }
   Rate yaw_rate() const { return yaw_rate_; }
+  // Acro (engine_sources.hpp, Tilt::rate): roll and pitch rates at the yaw's scale, full stick
+  // max_yaw_rate_rad_s; formed only when that mode asks.
+  Rate roll_rate() const { return product<Rate>(roll_stick_, yaw_rate_per_stick_); }
+  Rate pitch_rate() const { return product<Rate>(pitch_stick_, yaw_rate_per_stick_); }
   Thrust roll_moment() const { return roll_moment_; }
   Thrust pitch_moment() const { return pitch_moment_; }
   Thrust yaw_moment() const { return yaw_moment_; }
@@ -67,6 +73,7 @@ class PilotSetpoints {
   }
 
   uint16_t lift_ = 0;
+  typename N::template Fixed<0> roll_stick_{}, pitch_stick_{};
   Angle roll_angle_{}, pitch_angle_{};
   Rate yaw_rate_{};
   Thrust roll_moment_{}, pitch_moment_{}, yaw_moment_{};

@@ -62,7 +62,7 @@ class ChainReplay {
     if (chain_.calibrate()) enter(wire::Mode::full_control);
   }
   void run_mixer() { chain_.mix(); }
-  void run_manual_mixer() { chain_.mix_manual(); }
+  void run_manual_mixer() { chain_.mix(chain::kOpenLoop); }
   void run_safety() {}
   void enter_panic() {}  // test mode never panics
   void run_telemetry() {}
@@ -105,9 +105,13 @@ class ChainReplay {
 
   static uint32_t first_tick(uint32_t time_us) { return time_us < kPeriodUs ? 0 : time_us / kPeriodUs - 1; }
 
+  // Test mode's door: the recording's modes follow each other (calibration, then full control).
   void enter(wire::Mode m) {
+    const FlightMode<ChainReplay>& row = flight_modes<ChainReplay>()[index(m)];
+    const wire::Mode from = mode_;
     mode_ = m;
-    if (flight_modes<ChainReplay>()[index(m)].enter != nullptr) flight_modes<ChainReplay>()[index(m)].enter(*this);
+    chain_.fly(row.sources);
+    if (row.enter != nullptr) row.enter(*this, from);
   }
 
   Chain& chain_;
