@@ -316,7 +316,7 @@ bool parameter_in_range(long long id, long long value) {
 
 TEST(ProtocolFlight, EveryFrameTheQrSendsIsWithinThePagesRanges) {
   const Page page = protocol_page::read_page_file(QR_PROTOCOL_DOC);
-  ASSERT_TRUE(page.errors.empty()) << page.errors.front() << " (ProtocolPage.EveryRowOfWhatTheQrSendsIsRead)";
+  ASSERT_EQ(page.errors.size(), 0u) << "the page does not read: ProtocolPage.EveryRowOfWhatTheQrSendsIsRead says where";
   FrameJudge judge(page, parameter_in_range);
   fly_from_the_pc(judge);
   fly_with_the_radio(judge);
