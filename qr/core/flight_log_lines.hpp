@@ -1,10 +1,12 @@
 // One line of each log, assembled from the flight's read-outs at the tick the logger runs:
 // the sensor line (raw and filtered sensors) and the telemetry line (mode, set-points, attitude,
-// rates, engines, timing). Formats: common/log_records.hpp.
+// rates, engines, timing). Formats: common/log_records.hpp. The set-points, attitude and rates are
+// those observables' values (observable_readers.hpp), as telemetry sends them.
 #pragma once
 
 #include <common/log_records.hpp>
 #include <common/units.hpp>
+#include <qr/core/observable_readers.hpp>
 
 namespace qr {
 
@@ -24,21 +26,21 @@ wire::SensorLogRecord sensor_log_line(const Flight& f) {
 
 template <class Flight>
 wire::TelemetryLogRecord telemetry_log_line(const Flight& f) {
-  const auto& chain = f.chain();
+  using Id = wire::ObservableId;
   wire::TelemetryLogRecord t;
   t.time_us = f.tick_us();
   t.mode = f.mode();
   t.flags = f.telemetry_flags();
   t.lift = f.controls().lift;
-  t.roll = chain.roll_setpoint_e4();
-  t.pitch = chain.pitch_setpoint_e4();
-  t.yaw_rate = chain.yaw_rate_setpoint_e3();
-  t.phi = chain.roll_e4();
-  t.theta = chain.pitch_e4();
-  t.psi = chain.yaw_e4();
-  t.p = chain.p_e3();
-  t.q = chain.q_e3();
-  t.r = chain.r_e3();
+  t.roll = observe<Id::phi_sp>(f);
+  t.pitch = observe<Id::theta_sp>(f);
+  t.yaw_rate = observe<Id::r_sp>(f);
+  t.phi = observe<Id::phi>(f);
+  t.theta = observe<Id::theta>(f);
+  t.psi = observe<Id::psi>(f);
+  t.p = observe<Id::p>(f);
+  t.q = observe<Id::q>(f);
+  t.r = observe<Id::r>(f);
   for (int i = 0; i < 4; ++i) t.engine[i] = f.engines().value[i];
   t.loop_time_us = wire::saturate_u16(f.last_busy_us());
   t.battery_mv = f.sample().battery_mv;

@@ -7,6 +7,7 @@
 #include <common/messages.hpp>
 #include <common/units.hpp>
 #include <qr/core/flight_types.hpp>
+#include <qr/core/observable_readers.hpp>
 #include <qr/core/scheduler.hpp>
 
 namespace qr {
@@ -22,13 +23,13 @@ class FlightTelemetry {
   uint16_t cpu_load_permille() const { return cpu_load_permille_; }
   uint32_t deadline_misses() const { return deadline_misses_; }
 
-  // One telemetry period's frames from the flight's read-outs, each handed to `send`.
+  // One telemetry period's frames from the flight's read-outs, each handed to `send`. The attitude,
+  // rates, set-points and climb are those observables' values (observable_readers.hpp).
   template <class Flight, class Send>
   void period(const Flight& f, Send&& send) {
-    const auto& chain = f.chain();
-    send(wire::encode(wire::TelemetryAttitude{seq_++, f.mode(), f.telemetry_flags(), chain.roll_e4(), chain.pitch_e4(),
-                                              chain.yaw_e4()}));
-    send(wire::encode(wire::TelemetryRates{chain.p_e3(), chain.q_e3(), chain.r_e3()}));
+    send(wire::encode(wire::TelemetryAttitude{seq_++, f.mode(), f.telemetry_flags(), observe<Id::phi>(f),
+                                              observe<Id::theta>(f), observe<Id::psi>(f)}));
+    send(wire::encode(wire::TelemetryRates{observe<Id::p>(f), observe<Id::q>(f), observe<Id::r>(f)}));
     slow_group(f, send);
     if (f.task_stats() != nullptr) {
       const TaskStats& c = f.task_stats()->task[stats_task_];
@@ -56,9 +57,8 @@ class FlightTelemetry {
       for (int i = 0; i < 4; ++i) m.engine[i] = f.engines().value[i];
       send(wire::encode(m));
     } else if (group == 1) {
-      const auto& chain = f.chain();
-      send(wire::encode(wire::TelemetrySetpoints{f.controls().lift, chain.roll_setpoint_e4(), chain.pitch_setpoint_e4(),
-                                                 chain.yaw_rate_setpoint_e3()}));
+      send(wire::encode(wire::TelemetrySetpoints{f.controls().lift, observe<Id::phi_sp>(f), observe<Id::theta_sp>(f),
+                                                 observe<Id::r_sp>(f)}));
     } else if (group == 2) {
       const uint16_t loop = wire::saturate_u16(loop_time_us_);
       loop_time_us_ = 0;
@@ -68,7 +68,7 @@ class FlightTelemetry {
       send(wire::encode(f.log().status()));
     } else if (group == 5) {
       const auto& chain = f.chain();
-      send(wire::encode(wire::TelemetryHeight{chain.height_mm(), wire::saturate_i16(chain.climb_mm_s()),
+      send(wire::encode(wire::TelemetryHeight{chain.height_mm(), observe<Id::climb>(f),
                                               chain.height_valid() ? wire::kHeightValid : uint8_t{0},
                                               chain.hover_lift()}));
     } else if (group == kRadioGroup) {
@@ -84,6 +84,7 @@ class FlightTelemetry {
     }
   }
 
+  using Id = wire::ObservableId;
   static constexpr uint8_t kRadioGroup = 6;
   static constexpr uint8_t kRpmGroup = 7;
 

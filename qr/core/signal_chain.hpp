@@ -1,6 +1,7 @@
 // What the flight asks of a signal chain, as the Board concept says what it asks of a board: the
 // chain's tasks and entry actions (called from the task and mode tables, flight_tasks.hpp) and the
-// read-outs telemetry, the logs and the safety machine use. FlightChain (chain/flight_chain.hpp)
+// read-outs the safety machine uses; what telemetry, the logs and streams read is named by the
+// observables' readers (observable_readers.hpp). FlightChain (chain/flight_chain.hpp)
 // is the one that flies; tests use scripted ones.
 #pragma once
 
@@ -39,7 +40,7 @@ concept SignalChain = requires(C& c, const C& cc, const wire::ParameterValues& p
   c.control_yaw();
   { c.mix() } -> ConvertibleToEngines;
   { c.mix(chain::kOpenLoop) } -> ConvertibleToEngines;  // the manual set's mixer: the sticks, open loop
-  c.restart_estimator();  // at rest on the ground: start over from the accelerometer
+  c.restart_estimator();                                // at rest on the ground: start over from the accelerometer
   // entry actions
   c.enter_calibration();
   c.enter_attitude_control();
@@ -47,35 +48,19 @@ concept SignalChain = requires(C& c, const C& cc, const wire::ParameterValues& p
   c.enter_height_hold();
   c.start_descent(uint16_t{});  // a panic that lands, from the lift that was flying
   c.fly(chain::kOpenLoop);      // the door: where each axis and the lift come from (engine_sources.hpp)
-  // read-outs, in the wire's units
+  // read-outs: the safety machine's, in its parameters' units
   {cc.calibrated()};
   {cc.landed()};
   {cc.hover_lift()};  // engine units, 0: not learnt
   {cc.height_valid()};
   {cc.tilt_mrad()};
   {cc.height_mm()};
-  {cc.climb_mm_s()};
-  {cc.roll_e4()};
-  {cc.pitch_e4()};
-  {cc.yaw_e4()};
-  {cc.p_e3()};
-  {cc.q_e3()};
-  {cc.r_e3()};
-  {cc.roll_setpoint_e4()};
-  {cc.pitch_setpoint_e4()};
-  {cc.yaw_rate_setpoint_e3()};
-  {cc.gyro_filtered(0)};
-  {cc.accel_filtered(0)};
-  // the controllers' terms as last formed (observables: a live plot's, read by the stream task)
-  {cc.rate_setpoint_e3(0)};
-  {cc.p_term_e1(0)};
-  {cc.d_term_e1(0)};
-  {cc.integral_e1(0)};
-  {cc.moment_e1(0)};
-  {cc.climb_setpoint_mm_s()};
-  {cc.vertical_p_term_mm_s2()};
-  {cc.vertical_integral_mm_s2()};
-  {cc.vertical_thrust_e1()};
+  {cc.gyro_filtered(0)};   // the sensor log's, in counts
+  {cc.accel_filtered(0)};  // ...
+  // The rest is read by the observables' readers (observable_readers.hpp: the attitude, rates,
+  // set-points, the controllers' terms), each named there once, by its observable, in the
+  // chain's own numbers: telemetry, the logs and streams read them through the readers.
+  typename C::Numbers;  // the number policy those values are in (the readers convert with it)
 };
 
 }  // namespace qr

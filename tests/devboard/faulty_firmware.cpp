@@ -8,6 +8,7 @@
 //   FAULT_UNEXPECTED_INTERRUPT  the machine software interrupt, which nothing handles
 #include <qr/boards/rv32virt/fail_safe.hpp>
 #include <qr/boards/rv32virt/virt_board.hpp>
+#include <qr/core/chain/fixed_numbers.hpp>
 #include <qr/core/rate.hpp>
 #include <qr/core/scheduler.hpp>
 
@@ -52,12 +53,14 @@ struct FaultyFlight {
 
   // What the board's lock-step answer reads (qrsim --devboard): a flight with nothing to score.
   struct Chain {
-    int16_t roll_e4() const { return 0; }
-    int16_t pitch_e4() const { return 0; }
-    int16_t roll_setpoint_e4() const { return 0; }
-    int16_t pitch_setpoint_e4() const { return 0; }
-    int16_t yaw_rate_setpoint_e3() const { return 0; }
+    using Numbers = qr::chain::FixedNumbers;
+    Numbers::Angle roll() const { return {}; }
+    Numbers::Angle pitch() const { return {}; }
+    Numbers::Angle roll_setpoint() const { return {}; }
+    Numbers::Angle pitch_setpoint() const { return {}; }
+    Numbers::Rate yaw_rate_setpoint() const { return {}; }
   };
+  using ChainType = Chain;
   uint8_t mode() const { return 2; }  // manual: the engines are the flight's
   uint8_t telemetry_flags() const { return 0; }
   Chain chain() const { return {}; }

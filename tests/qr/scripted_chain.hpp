@@ -7,6 +7,7 @@
 #include <common/parameter_table.hpp>
 #include <qr/core/board.hpp>
 #include <qr/core/chain/engine_sources.hpp>
+#include <qr/core/chain/fixed_numbers.hpp>
 #include <qr/core/flight_types.hpp>
 
 namespace qr::test {
@@ -103,32 +104,46 @@ struct ScriptedChain {
   }
   EngineCommand mix() const { return mix(sources); }
 
-  int16_t roll_e4() const { return 123; }
-  int16_t pitch_e4() const { return -45; }
-  int16_t yaw_e4() const { return 6; }
-  int16_t p_e3() const { return 7; }
-  int16_t q_e3() const { return 8; }
-  int16_t r_e3() const { return 9; }
-  int16_t roll_setpoint_e4() const { return 0; }
-  int16_t pitch_setpoint_e4() const { return 0; }
-  int16_t yaw_rate_setpoint_e3() const { return 0; }
+  // The read-outs, in the flight chain's numbers (the observables' readers convert them): the
+  // attitude 123, -45 and 6 in 1e-4 rad, the rates 7, 8 and 9 in 1e-3 rad/s.
+  using Numbers = chain::FixedNumbers;
+  using Angle = Numbers::Angle;
+  using Rate = Numbers::Rate;
+  using Thrust = Numbers::Thrust;
+  Angle roll() const { return Angle(0.0123); }
+  Angle pitch() const { return Angle(-0.0045); }
+  Angle yaw() const { return Angle(0.0006); }
+  Rate p() const { return Rate(0.007); }
+  Rate q() const { return Rate(0.008); }
+  Rate r() const { return Rate(0.009); }
+  Angle roll_setpoint() const { return {}; }
+  Angle pitch_setpoint() const { return {}; }
+  Rate yaw_rate_setpoint() const { return {}; }
   int32_t tilt_mrad() const { return tilt; }
   int16_t gyro_filtered(int axis) const { return static_cast<int16_t>(10 + axis); }
   int16_t accel_filtered(int axis) const { return static_cast<int16_t>(-20 - axis); }
+  Numbers::Climb climb() const { return {}; }
   // The controllers' terms: a distinct value for each term and axis, so a test sees which one a
-  // reader took.
-  int16_t rate_setpoint_e3(int axis) const { return static_cast<int16_t>(100 + axis); }
-  int32_t p_term_e1(int axis) const { return 200 + axis; }
-  int32_t d_term_e1(int axis) const { return -300 - axis; }
-  int32_t integral_e1(int axis) const { return 400 + axis; }
-  int32_t moment_e1(int axis) const { return -500 - axis; }
-  int32_t climb_setpoint_mm_s() const { return 601; }
-  int32_t vertical_p_term_mm_s2() const { return -602; }
-  int32_t vertical_integral_mm_s2() const { return 603; }
-  int32_t vertical_thrust_e1() const { return 2604; }
+  // reader took. In the wire's units: rate set-points 100 + axis (1e-3 rad/s); P terms 200 +
+  // axis, D terms -300 - axis, integrals 400 + axis, moments -500 - axis (0.1 thrust units); the
+  // vertical loops' climb set-point 601 mm/s, P term -602 and integral 603 mm/s², thrust 2604.
+  Rate rate_setpoint(int axis) const { return kRateSetpoints[axis]; }
+  Thrust p_term(int axis) const { return kPTerms[axis]; }
+  Thrust d_term(int axis) const { return kDTerms[axis]; }
+  Thrust integral(int axis) const { return kIntegrals[axis]; }
+  Thrust moment(int axis) const { return kMoments[axis]; }
+  Numbers::Climb climb_setpoint() const { return Numbers::Climb(0.601); }
+  Numbers::VerticalAccel vertical_p_term() const { return Numbers::VerticalAccel(-0.602); }
+  Numbers::VerticalAccel vertical_integral() const { return Numbers::VerticalAccel(0.603); }
+  Thrust vertical_thrust() const { return Thrust(260.4); }
 
  private:
   static EngineCommand all(uint16_t v) { return EngineCommand{{v, v, v, v}}; }
+  static constexpr Rate kRateSetpoints[3] = {Rate(0.100), Rate(0.101), Rate(0.102)};
+  static constexpr Thrust kPTerms[3] = {Thrust(20.0), Thrust(20.1), Thrust(20.2)};
+  static constexpr Thrust kDTerms[3] = {Thrust(-30.0), Thrust(-30.1), Thrust(-30.2)};
+  static constexpr Thrust kIntegrals[3] = {Thrust(40.0), Thrust(40.1), Thrust(40.2)};
+  static constexpr Thrust kMoments[3] = {Thrust(-50.0), Thrust(-50.1), Thrust(-50.2)};
   uint32_t run_samples_ = 0;
   bool calibrated_ = false;
 };

@@ -17,6 +17,7 @@
 #include <qr/boards/rv32virt/recording.hpp>
 #include <qr/core/board.hpp>
 #include <qr/core/cycle_stats.hpp>
+#include <qr/core/observable_readers.hpp>
 
 namespace rv32virt {
 
@@ -69,12 +70,12 @@ class VirtBoard {
     f.flags = flight.telemetry_flags();
     f.ground_bytes = ground_sent_;
     f.deadline_misses = deadline_misses;
-    const auto& chain = flight.chain();
-    f.angles_e4[f.roll_estimate] = chain.roll_e4();
-    f.angles_e4[f.pitch_estimate] = chain.pitch_e4();
-    f.angles_e4[f.roll_setpoint] = chain.roll_setpoint_e4();
-    f.angles_e4[f.pitch_setpoint] = chain.pitch_setpoint_e4();
-    f.yaw_rate_setpoint_e3 = chain.yaw_rate_setpoint_e3();
+    using Id = wire::ObservableId;  // the estimate and set-points as a stream shows them
+    f.angles_e4[f.roll_estimate] = qr::observe<Id::phi>(flight);
+    f.angles_e4[f.pitch_estimate] = qr::observe<Id::theta>(flight);
+    f.angles_e4[f.roll_setpoint] = qr::observe<Id::phi_sp>(flight);
+    f.angles_e4[f.pitch_setpoint] = qr::observe<Id::theta_sp>(flight);
+    f.yaw_rate_setpoint_e3 = qr::observe<Id::r_sp>(flight);
     send_engines(f);
   }
 

@@ -13,6 +13,7 @@
 #include <qr/boards/sim/sim_board.hpp>
 #include <qr/boards/sim/sim_qr.hpp>
 #include <qr/core/flight_types.hpp>
+#include <qr/core/observable_readers.hpp>
 #include <sim/world.hpp>
 
 namespace qrsim {
@@ -56,14 +57,17 @@ class HostQr final : public FlyingQr {
   SimBoard& board() override { return qr_->board; }
   bool tick() override { return qr_->tick(); }
   FirmwareView view() const override {
-    const auto& chain = qr_->firmware.chain();
+    const auto& flight = qr_->firmware;
+    const auto& chain = flight.chain();
+    using Id = wire::ObservableId;  // the estimate, rates and set-points as a stream shows them
     FirmwareView v;
-    v.mode = static_cast<uint8_t>(qr_->firmware.mode());
-    v.roll_e4 = chain.roll_e4(), v.pitch_e4 = chain.pitch_e4();
-    v.roll_setpoint_e4 = chain.roll_setpoint_e4(), v.pitch_setpoint_e4 = chain.pitch_setpoint_e4();
-    v.yaw_rate_setpoint_e3 = chain.yaw_rate_setpoint_e3();
+    v.mode = static_cast<uint8_t>(flight.mode());
+    v.roll_e4 = qr::observe<Id::phi>(flight), v.pitch_e4 = qr::observe<Id::theta>(flight);
+    v.roll_setpoint_e4 = qr::observe<Id::phi_sp>(flight), v.pitch_setpoint_e4 = qr::observe<Id::theta_sp>(flight);
+    v.yaw_rate_setpoint_e3 = qr::observe<Id::r_sp>(flight);
     v.has_rates = true;
-    v.yaw_e4 = chain.yaw_e4(), v.p_e3 = chain.p_e3(), v.q_e3 = chain.q_e3(), v.r_e3 = chain.r_e3();
+    v.yaw_e4 = qr::observe<Id::psi>(flight), v.p_e3 = qr::observe<Id::p>(flight);
+    v.q_e3 = qr::observe<Id::q>(flight), v.r_e3 = qr::observe<Id::r>(flight);
     v.flying = !chain.landed();
     v.height_mm = chain.height_mm(), v.climb_mm_s = chain.climb_mm_s();
     v.controls = qr_->firmware.controls();

@@ -1,10 +1,13 @@
 // The chain's values as decimal integers, named by their unit: roll_e4() is the roll estimate in
 // 1e-4 rad, climb_mm_s() the vertical speed in mm/s. Each is the chain's own number converted
 // once (decimal_units.hpp: rounded half up; the angles and rates saturated to int16, as the wire
-// carries them). Telemetry, the logs and the observables' readers send them; they are also the
-// columns of the replay's CSV (replay_tick.hpp), what the chain checksum folds
-// (tests/chain/chain_checksum.hpp) and what the chain's tests compare. A base of FlightChain
-// (Chain is the chain itself), reading only what the chain exposes publicly.
+// carries them). They are the columns of the replay's CSV (replay_tick.hpp), what the chain
+// checksum folds (tests/chain/chain_checksum.hpp) and what the chain's tests compare.
+//
+// The flight never reads these: what it sends, logs and streams goes through the observables'
+// readers (qr/core/observable_readers.hpp), which read the chain's own numbers and convert them
+// by the observable table's scales. A base of FlightChain (Chain is the chain itself), reading
+// only what the chain exposes publicly.
 #pragma once
 
 #include <stdint.h>
@@ -54,8 +57,6 @@ class DecimalReadouts {
   int32_t accel_bias_mm_s2() const { return decimal<3>(self().height_estimator().accel_bias()); }
   int32_t baro_height_mm() const { return decimal<3>(self().height_estimator().baro_height()); }
   int32_t climb_setpoint_mm_s() const { return decimal<3>(self().climb_setpoint()); }
-  int32_t vertical_p_term_mm_s2() const { return decimal<3>(self().vertical_p_term()); }
-  int32_t vertical_integral_mm_s2() const { return decimal<3>(self().vertical_integral()); }
   int32_t vertical_thrust_e1() const { return decimal<1>(self().vertical_thrust()); }
   int32_t vertical_thrust_e3() const { return decimal<3>(self().vertical_thrust()); }
 
