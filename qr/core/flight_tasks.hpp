@@ -4,7 +4,7 @@
 // word, then telemetry and the logs. docs/architecture.md prints both tables.
 //
 // Both are templates over the context that runs them: qr::Flight in flight, and the replay's
-// context (qr/core/chain/replay_tick.hpp), which runs the same rows for its chain work so test
+// context (qr/core/replay_tick.hpp), which runs the same rows for its chain work so test
 // mode runs the tick the flight runs.
 #pragma once
 

@@ -12,7 +12,7 @@
 
 #include <common/mode.hpp>
 #include <qr/core/chain/flight_chain.hpp>
-#include <qr/core/chain/replay_tick.hpp>
+#include <qr/core/replay_tick.hpp>
 #include <qr/host/real_numbers.hpp>
 
 namespace qr::host {
@@ -188,8 +188,8 @@ template <class Chain>
 int fly(const std::vector<Row>& rows, std::ostream& out, const wire::ParameterValues& parameters) {
   Chain chain;
   chain.set_parameters(parameters);
-  chain::ChainReplay<Chain> test_mode(chain,
-                                      rows.empty() ? chain::ChainReplay<Chain>::kPeriodUs : rows.front().time_us);
+  ChainReplay<Chain> test_mode(chain,
+                                      rows.empty() ? ChainReplay<Chain>::kPeriodUs : rows.front().time_us);
   out << replay_output_header() << "\n";
   std::string line;
   for (const Row& row : rows) {
@@ -198,7 +198,7 @@ int fly(const std::vector<Row>& rows, std::ostream& out, const wire::ParameterVa
     append(line, row.time_us);
     line += ',';
     append(line, static_cast<int>(mode));
-    for (const auto& column : chain::kReplayColumns<Chain>) {
+    for (const auto& column : kReplayColumns<Chain>) {
       line += ',';
       append(line, column.value(chain));
     }
@@ -278,7 +278,7 @@ const std::string& replay_input_header_without_pressure() {
 const std::string& replay_output_header() {
   static const std::string header = [] {
     std::vector<std::string> names = {"time_us", "mode"};
-    for (const auto& column : chain::kReplayColumns<FixedChain>) names.push_back(column.name);
+    for (const auto& column : kReplayColumns<FixedChain>) names.push_back(column.name);
     return join(names);
   }();
   return header;

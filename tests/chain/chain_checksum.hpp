@@ -6,7 +6,7 @@
 
 #include <stdint.h>
 
-#include <qr/core/chain/replay_tick.hpp>
+#include <qr/core/replay_tick.hpp>
 
 #include "synthetic_flight.hpp"
 

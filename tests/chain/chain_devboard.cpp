@@ -19,7 +19,7 @@ qr::SchedulerStats<qr::kFlightTaskCount> stats;
 
 int main() {
   const uint32_t sum = qr::chain::checksum::fly<qr::FixedChain, Instret>(chain, &stats);
-  using Replay = qr::chain::ChainReplay<qr::FixedChain, Instret>;
+  using Replay = qr::ChainReplay<qr::FixedChain, Instret>;
   for (uint8_t i = 0; i < qr::kFlightTaskCount; ++i) {
     const qr::CycleStats& c = stats.task[i];
     if (c.count == 0) continue;

@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include <qr/core/chain/flight_chain.hpp>
-#include <qr/core/chain/replay_tick.hpp>
+#include <qr/core/replay_tick.hpp>
 #include <qr/host/real_numbers.hpp>
 
 #include "chain_checksum.hpp"
@@ -356,8 +356,8 @@ TEST(FlightChain, LiftZeroKeepsTheEnginesStopped) {
 TEST(FlightChain, FixedFollowsDoubleOverTheSyntheticFlight) {
   FixedChain q;
   DoubleChain d;
-  chain::ChainReplay<FixedChain> rq(q);
-  chain::ChainReplay<DoubleChain> rd(d);
+  ChainReplay<FixedChain> rq(q);
+  ChainReplay<DoubleChain> rd(d);
   chain::synthetic::Flight<1000> flight;
   double angle = 0, rate = 0, moment = 0;
   int engine = 0, engine_differs = 0, readout = 0;
@@ -399,8 +399,8 @@ TEST(FlightChain, FixedFollowsDoubleOverTheSyntheticFlight) {
 TEST(FlightChain, FloatInstantiationFollowsDouble) {
   FlightChain<chain::FloatNumbers> f;
   DoubleChain d;
-  chain::ChainReplay<FlightChain<chain::FloatNumbers>> rf(f);
-  chain::ChainReplay<DoubleChain> rd(d);
+  ChainReplay<FlightChain<chain::FloatNumbers>> rf(f);
+  ChainReplay<DoubleChain> rd(d);
   chain::synthetic::Flight<1000> flight;
   double angle = 0;
   int engine = 0;
@@ -431,7 +431,7 @@ TEST(FlightChain, FloatInstantiationFollowsDouble) {
 template <uint32_t Hz>
 void check_truth(double bound) {
   FlightChain<chain::FixedNumbers, Hz> c;
-  chain::ChainReplay<FlightChain<chain::FixedNumbers, Hz>> replay(c);
+  ChainReplay<FlightChain<chain::FixedNumbers, Hz>> replay(c);
   chain::synthetic::Flight<Hz> flight;
   double worst = 0;
   for (uint32_t n = 0; n < chain::synthetic::Flight<Hz>::kTicks; ++n) {

@@ -21,7 +21,7 @@
 #include <common/messages.hpp>
 #include <common/observable_table.hpp>
 #include <common/parameter_table.hpp>
-#include <qr/boards/sim/pilot.hpp>
+#include <qr/sim_runner/pilot.hpp>
 #include <qr/boards/sim/sim_qr.hpp>
 #include <sim/vehicle.hpp>
 

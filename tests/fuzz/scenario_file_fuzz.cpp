@@ -10,8 +10,8 @@
 #include <cstdlib>
 #include <string>
 
-#include <qr/boards/sim/scenario_figures.hpp>
-#include <qr/boards/sim/scenario_script.hpp>
+#include <qr/sim_runner/scenario_figures.hpp>
+#include <qr/sim_runner/scenario_script.hpp>
 
 #include "fuzz_checks.hpp"
 

@@ -1,5 +1,5 @@
 // Fuzz target: arbitrary lines into the simulator's truth channel (qrsim --truth-fd,
-// qr/boards/sim/truth_channel.cpp). Beyond what ASan and UBSan catch: a refused line says why; an
+// qr/sim_runner/truth_channel.cpp). Beyond what ASan and UBSan catch: a refused line says why; an
 // accepted push is finite and within the channel's bounds (10 N m, 10 s); an accepted turn keeps
 // the hand turn's limits (sim/hand_turn.hpp); an accepted radio arm names a mode the radio's arm
 // switch arms.
@@ -10,7 +10,7 @@
 #include <string>
 #include <string_view>
 
-#include <qr/boards/sim/truth_channel.hpp>
+#include <qr/sim_runner/truth_channel.hpp>
 
 #include "fuzz_checks.hpp"
 

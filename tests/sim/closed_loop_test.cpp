@@ -12,7 +12,7 @@
 #include <utility>
 #include <vector>
 
-#include <qr/boards/sim/scenario.hpp>
+#include <qr/sim_runner/scenario.hpp>
 #include <qr/host/replay.hpp>
 #include <sim/random.hpp>
 

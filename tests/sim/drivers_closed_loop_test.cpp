@@ -7,7 +7,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include <qr/boards/sim/scenario.hpp>
+#include <qr/sim_runner/scenario.hpp>
 
 namespace {
 

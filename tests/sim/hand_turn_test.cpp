@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include <qr/boards/sim/scenario.hpp>
-#include <qr/boards/sim/scenario_script.hpp>
+#include <qr/sim_runner/scenario.hpp>
+#include <qr/sim_runner/scenario_script.hpp>
 #include <sim/hand_turn.hpp>
 #include <sim/world.hpp>
 

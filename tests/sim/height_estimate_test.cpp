@@ -17,7 +17,7 @@
 #include <sstream>
 #include <string>
 
-#include <qr/boards/sim/pilot.hpp>
+#include <qr/sim_runner/pilot.hpp>
 #include <qr/boards/sim/sim_qr.hpp>
 #include <qr/host/replay.hpp>
 

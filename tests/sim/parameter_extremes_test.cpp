@@ -13,7 +13,7 @@
 #include <vector>
 
 #include <common/parameter_table.hpp>
-#include <qr/boards/sim/scenario.hpp>
+#include <qr/sim_runner/scenario.hpp>
 
 namespace {
 

@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include <qr/boards/sim/scenario.hpp>
-#include <qr/boards/sim/scenario_figures.hpp>
-#include <qr/boards/sim/sweep.hpp>
+#include <qr/sim_runner/scenario.hpp>
+#include <qr/sim_runner/scenario_figures.hpp>
+#include <qr/sim_runner/sweep.hpp>
 
 #include "../support/source_text.hpp"
 

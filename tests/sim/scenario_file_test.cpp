@@ -7,8 +7,8 @@
 #include <fstream>
 #include <string>
 
-#include <qr/boards/sim/scenario.hpp>
-#include <qr/boards/sim/scenario_script.hpp>
+#include <qr/sim_runner/scenario.hpp>
+#include <qr/sim_runner/scenario_script.hpp>
 
 namespace {
 

@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include <qr/boards/sim/builtin_scenarios.hpp>
-#include <qr/boards/sim/scenario.hpp>
+#include <qr/sim_runner/builtin_scenarios.hpp>
+#include <qr/sim_runner/scenario.hpp>
 
 namespace {
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include <qr/boards/sim/scenario_score.hpp>
+#include <qr/sim_runner/scenario_score.hpp>
 
 namespace {
 

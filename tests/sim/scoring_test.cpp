@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include <qr/boards/sim/scoring.hpp>
+#include <qr/sim_runner/scoring.hpp>
 
 namespace {
 

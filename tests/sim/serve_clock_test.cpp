@@ -1,9 +1,9 @@
-// Serve mode's pace (qr/boards/sim/serve_clock.hpp): the kicks on the wall clock, a late world
+// Serve mode's pace (qr/sim_runner/serve_clock.hpp): the kicks on the wall clock, a late world
 // caught up no faster than twice the wall clock, a world far behind paused rather than skipped.
 // The wall clock is the test's, so nothing here sleeps.
 #include <gtest/gtest.h>
 
-#include <qr/boards/sim/serve_clock.hpp>
+#include <qr/sim_runner/serve_clock.hpp>
 
 namespace {
 

@@ -1,4 +1,4 @@
-// Serve mode's way out to the console (qr/boards/sim/serve_output.hpp): whole frames, written
+// Serve mode's way out to the console (qr/sim_runner/serve_output.hpp): whole frames, written
 // without waiting; into a pty nobody reads, the oldest whole frames are dropped and counted, and
 // what the reader gets at last is whole frames only.
 #include <fcntl.h>
@@ -12,7 +12,7 @@
 
 #include <common/frame_parser.hpp>
 #include <common/messages.hpp>
-#include <qr/boards/sim/serve_output.hpp>
+#include <qr/sim_runner/serve_output.hpp>
 
 namespace {
 

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <iterator>
 
-#include <qr/boards/sim/sweep.hpp>
+#include <qr/sim_runner/sweep.hpp>
 
 namespace {
 

@@ -1,7 +1,7 @@
-// The serve mode side channel's command parser and truth line (qr/boards/sim/truth_channel.hpp).
+// The serve mode side channel's command parser and truth line (qr/sim_runner/truth_channel.hpp).
 #include <gtest/gtest.h>
 
-#include <qr/boards/sim/truth_channel.hpp>
+#include <qr/sim_runner/truth_channel.hpp>
 #include <sim/quaternion.hpp>
 
 namespace {

@@ -1,11 +1,11 @@
 // Test mode on the devboard: the recording QEMU put in memory, through the flight chain tick by
 // tick, one CSV row per tick on the UART: the same rows as the host replay (docs/replay.md),
-// from the same code (qr/core/chain/replay_tick.hpp: the flight's own task table). `scripts/devboard --replay` runs it.
+// from the same code (qr/core/replay_tick.hpp: the flight's own task table). `scripts/devboard --replay` runs it.
 #include <qr/boards/rv32virt/devboard.hpp>
 #include <qr/boards/rv32virt/recording.hpp>
 #include <qr/boards/rv32virt/virt_map.hpp>
 #include <qr/core/chain/flight_chain.hpp>
-#include <qr/core/chain/replay_tick.hpp>
+#include <qr/core/replay_tick.hpp>
 
 namespace {
 
@@ -13,10 +13,10 @@ template <uint32_t Hz>
 int replay(const rv32virt::Recording& recording) {
   using Chain = qr::FlightChain<qr::chain::FixedNumbers, Hz>;
   static Chain chain;  // large: not on the stack
-  static qr::chain::ChainReplay<Chain> test_mode(
-      chain, recording.count() == 0 ? qr::chain::ChainReplay<Chain>::kPeriodUs : recording.time_us(0));
+  static qr::ChainReplay<Chain> test_mode(
+      chain, recording.count() == 0 ? qr::ChainReplay<Chain>::kPeriodUs : recording.time_us(0));
   rv32virt::puts("time_us,mode");
-  for (const auto& column : qr::chain::kReplayColumns<Chain>) {
+  for (const auto& column : qr::kReplayColumns<Chain>) {
     rv32virt::putc(',');
     rv32virt::puts(column.name);
   }
@@ -28,7 +28,7 @@ int replay(const rv32virt::Recording& recording) {
     rv32virt::put_u32(recording.time_us(i));
     rv32virt::putc(',');
     rv32virt::put_u32(static_cast<uint32_t>(mode));
-    for (const auto& column : qr::chain::kReplayColumns<Chain>) {
+    for (const auto& column : qr::kReplayColumns<Chain>) {
       rv32virt::putc(',');
       rv32virt::put_i32(column.value(chain));
     }

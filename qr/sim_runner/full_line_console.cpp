@@ -1,9 +1,9 @@
-#include <qr/boards/sim/full_line_console.hpp>
+#include <qr/sim_runner/full_line_console.hpp>
 
 #include <algorithm>
 
 #include <common/frame.hpp>
-#include <qr/boards/sim/scoring.hpp>
+#include <qr/sim_runner/scoring.hpp>
 #include <qr/core/rate.hpp>
 #include <qr/core/transmit_queue.hpp>
 

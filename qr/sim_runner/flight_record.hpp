@@ -7,7 +7,7 @@
 
 #include <string>
 
-#include <qr/boards/sim/scoring.hpp>
+#include <qr/sim_runner/scoring.hpp>
 
 namespace qrsim {
 

@@ -1,4 +1,4 @@
-#include <qr/boards/sim/radio_transmitter.hpp>
+#include <qr/sim_runner/radio_transmitter.hpp>
 
 #include <common/drivers/rc_sticks.hpp>
 

@@ -1,4 +1,4 @@
-#include <qr/boards/sim/serve.hpp>
+#include <qr/sim_runner/serve.hpp>
 
 #include <fcntl.h>
 #include <poll.h>
@@ -15,10 +15,10 @@
 
 #include <qr/boards/sim/devboard_qr.hpp>
 #include <qr/boards/sim/flying_qr.hpp>
-#include <qr/boards/sim/serve_clock.hpp>
-#include <qr/boards/sim/serve_output.hpp>
-#include <qr/boards/sim/serve_radio.hpp>
-#include <qr/boards/sim/truth_channel.hpp>
+#include <qr/sim_runner/serve_clock.hpp>
+#include <qr/sim_runner/serve_output.hpp>
+#include <qr/sim_runner/serve_radio.hpp>
+#include <qr/sim_runner/truth_channel.hpp>
 
 namespace qrsim {
 namespace {

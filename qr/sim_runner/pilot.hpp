@@ -19,7 +19,7 @@
 #include <common/messages.hpp>
 #include <common/parameter_table.hpp>
 #include <common/resend_queue.hpp>
-#include <qr/boards/sim/radio_transmitter.hpp>
+#include <qr/sim_runner/radio_transmitter.hpp>
 #include <qr/boards/sim/sim_board.hpp>
 #include <sim/quadrotor.hpp>
 

@@ -1,4 +1,4 @@
-#include <qr/boards/sim/pilot.hpp>
+#include <qr/sim_runner/pilot.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -21,8 +21,8 @@
 
 #include <common/frame_parser.hpp>
 #include <common/messages.hpp>
-#include <qr/boards/sim/pilot.hpp>
-#include <qr/boards/sim/scenario.hpp>
+#include <qr/sim_runner/pilot.hpp>
+#include <qr/sim_runner/scenario.hpp>
 #include <qr/boards/sim/sim_board.hpp>
 
 namespace qrsim {

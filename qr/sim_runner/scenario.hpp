@@ -12,7 +12,7 @@
 #include <vector>
 
 #include <common/parameter_table.hpp>
-#include <qr/boards/sim/scenario_script.hpp>
+#include <qr/sim_runner/scenario_script.hpp>
 #include <sim/vehicle.hpp>
 
 namespace qrsim {

@@ -1,7 +1,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include <qr/boards/sim/scenario.hpp>
+#include <qr/sim_runner/scenario.hpp>
 
 namespace qrsim {
 namespace {

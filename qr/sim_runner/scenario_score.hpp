@@ -5,8 +5,8 @@
 
 #include <vector>
 
-#include <qr/boards/sim/flight_record.hpp>
-#include <qr/boards/sim/scenario.hpp>
+#include <qr/sim_runner/flight_record.hpp>
+#include <qr/sim_runner/scenario.hpp>
 
 namespace qrsim {
 

@@ -18,7 +18,7 @@
 #include <qr/core/rate.hpp>
 #include <qr/core/scheduler.hpp>
 
-namespace qr::chain {
+namespace qr {
 
 // A cycle counter for the replay's task statistics: none on the host (`NoCycles`); the devboard
 // passes one that reads minstret.
@@ -174,4 +174,4 @@ inline constexpr ReplayColumn<Chain> kReplayColumns[] = {
     {"baro_height_mm", [](const Chain& c) -> int32_t { return c.baro_height_mm(); }},
 };
 
-}  // namespace qr::chain
+}  // namespace qr

@@ -1,7 +1,7 @@
 // One scenario flight: the vehicle the script describes, the standard preflight, the script's
 // timed events, the record of truth and estimate every control period, then the figures and
 // the bands (scenario_score.cpp).
-#include <qr/boards/sim/scenario.hpp>
+#include <qr/sim_runner/scenario.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -12,11 +12,11 @@
 
 #include <common/task_names.hpp>
 #include <qr/boards/sim/devboard_qr.hpp>
-#include <qr/boards/sim/flight_record.hpp>
+#include <qr/sim_runner/flight_record.hpp>
 #include <qr/boards/sim/flying_qr.hpp>
-#include <qr/boards/sim/full_line_console.hpp>
-#include <qr/boards/sim/pilot.hpp>
-#include <qr/boards/sim/scenario_score.hpp>
+#include <qr/sim_runner/full_line_console.hpp>
+#include <qr/sim_runner/pilot.hpp>
+#include <qr/sim_runner/scenario_score.hpp>
 #include <qr/host/replay.hpp>
 
 namespace qrsim {

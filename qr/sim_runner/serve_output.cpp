@@ -1,4 +1,4 @@
-#include <qr/boards/sim/serve_output.hpp>
+#include <qr/sim_runner/serve_output.hpp>
 
 #include <errno.h>
 #include <unistd.h>

@@ -1,4 +1,4 @@
-#include <qr/boards/sim/serve_clock.hpp>
+#include <qr/sim_runner/serve_clock.hpp>
 
 #include <algorithm>
 

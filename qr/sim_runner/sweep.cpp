@@ -1,4 +1,4 @@
-#include <qr/boards/sim/sweep.hpp>
+#include <qr/sim_runner/sweep.hpp>
 
 #include <cmath>
 #include <iterator>

@@ -1,8 +1,8 @@
 // Where a scenario comes from: a built-in by name, else a file by path.
 #include <filesystem>
 
-#include <qr/boards/sim/builtin_scenarios.hpp>
-#include <qr/boards/sim/scenario.hpp>
+#include <qr/sim_runner/builtin_scenarios.hpp>
+#include <qr/sim_runner/scenario.hpp>
 
 namespace qrsim {
 

@@ -1,11 +1,11 @@
-#include <qr/boards/sim/truth_channel.hpp>
+#include <qr/sim_runner/truth_channel.hpp>
 
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <vector>
 
-#include <qr/boards/sim/text_fields.hpp>
+#include <qr/sim_runner/text_fields.hpp>
 #include <sim/quaternion.hpp>
 
 namespace qrsim {

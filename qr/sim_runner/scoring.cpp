@@ -1,4 +1,4 @@
-#include <qr/boards/sim/scoring.hpp>
+#include <qr/sim_runner/scoring.hpp>
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include <qr/boards/sim/serve_radio.hpp>
+#include <qr/sim_runner/serve_radio.hpp>
 
 #include <common/messages.hpp>
 

@@ -3,7 +3,7 @@
 //   at T action values...   an event, T seconds after t0, in time order
 //   band figure op limit    a pass band, op one of <, <=, ==, >, >=
 // Every error names the file and the line, so a user finds the mistake without the source.
-#include <qr/boards/sim/scenario_script.hpp>
+#include <qr/sim_runner/scenario_script.hpp>
 
 #include <cmath>
 #include <cstdio>
@@ -14,8 +14,8 @@
 #include <sstream>
 #include <utility>
 
-#include <qr/boards/sim/scenario_figures.hpp>
-#include <qr/boards/sim/text_fields.hpp>
+#include <qr/sim_runner/scenario_figures.hpp>
+#include <qr/sim_runner/text_fields.hpp>
 
 namespace qrsim {
 namespace {

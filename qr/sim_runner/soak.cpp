@@ -1,4 +1,4 @@
-#include <qr/boards/sim/soak.hpp>
+#include <qr/sim_runner/soak.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -10,7 +10,7 @@
 #include <common/log_downloader.hpp>
 #include <common/messages.hpp>
 #include <common/mode.hpp>
-#include <qr/boards/sim/pilot.hpp>
+#include <qr/sim_runner/pilot.hpp>
 #include <qr/boards/sim/sim_qr.hpp>
 
 namespace qrsim {

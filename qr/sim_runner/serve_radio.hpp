@@ -11,7 +11,7 @@
 #include <stdint.h>
 
 #include <common/frame_parser.hpp>
-#include <qr/boards/sim/radio_transmitter.hpp>
+#include <qr/sim_runner/radio_transmitter.hpp>
 #include <qr/boards/sim/sim_board.hpp>
 
 namespace qrsim {

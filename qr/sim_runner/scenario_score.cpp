@@ -1,4 +1,4 @@
-#include <qr/boards/sim/scenario_score.hpp>
+#include <qr/sim_runner/scenario_score.hpp>
 
 #include <qr/core/rate.hpp>
 #include <qr/core/safety.hpp>

@@ -16,12 +16,12 @@
 #include <string>
 
 #include <common/parameter_table.hpp>
-#include <qr/boards/sim/builtin_scenarios.hpp>
-#include <qr/boards/sim/scenario.hpp>
-#include <qr/boards/sim/serve.hpp>
-#include <qr/boards/sim/soak.hpp>
-#include <qr/boards/sim/sweep.hpp>
-#include <qr/boards/sim/text_fields.hpp>
+#include <qr/sim_runner/builtin_scenarios.hpp>
+#include <qr/sim_runner/scenario.hpp>
+#include <qr/sim_runner/serve.hpp>
+#include <qr/sim_runner/soak.hpp>
+#include <qr/sim_runner/sweep.hpp>
+#include <qr/sim_runner/text_fields.hpp>
 #include <qr/core/rate.hpp>
 #include <qr/host/replay.hpp>
 

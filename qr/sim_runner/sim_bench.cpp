@@ -17,7 +17,7 @@
 #include <cstring>
 #include <vector>
 
-#include <qr/boards/sim/scenario.hpp>
+#include <qr/sim_runner/scenario.hpp>
 
 namespace {
 
