@@ -32,7 +32,7 @@ enum FlightTask : uint8_t {
   kSafetyTask,
   kTelemetryTask,
   kLoggerTask,
-  kVerticalTask,  // numbered last (the wire's task numbers stay), runs after the height estimate
+  kVerticalTask,  // numbered after the older tasks (their wire numbers stay), runs after the height estimate
   kStreamTask,
   kFlightTaskCount,
 };
