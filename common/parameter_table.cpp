@@ -3,8 +3,8 @@
 namespace wire {
 namespace {
 
-// Ids are 1..kParameterCount in table order (tests/common/parameter_table_test checks it), so an
-// id finds its row by subtraction.
+// Ids are 1..kParameterCount in table order (tests/common/parameter_table_test.cpp checks it), so
+// an id finds its row by subtraction.
 size_t row_of(uint8_t id) { return id >= 1 && id <= kParameterCount ? size_t{id} - 1 : kParameterCount; }
 
 }  // namespace

@@ -207,11 +207,11 @@ class Flight {
   // The one door of mode changes (issue 31). Whatever made the safety machine change the mode
   // since the last tick's door (a request, the sticks or the radio's switches read by the link,
   // a finished calibration, a watchdog) takes effect here, once: the mode's sources go to the
-  // chain, and its entry action runs, told the mode the vehicle flew in before. It opens at the
-  // end of the link task, after every request the tick reads and before the chain runs, so a
-  // tick that reads a lift change already flies the stick (rule 15); what the calibration or the
-  // safety task changes takes effect at the next tick's door, a control period later (the safety
-  // machine's own engine limits apply at once).
+  // chain, and its entry action runs, told the mode the vehicle flew in before. It opens in the
+  // link task, after every request the tick reads (only the link's sending is left) and before the
+  // chain runs, so a tick that reads a lift change already flies the stick (rule 15); what the
+  // calibration or the safety task changes takes effect at the next tick's door, a control period
+  // later (the safety machine's own engine limits apply at once).
   void change_modes() {
     static_assert(modes_in_order<Flight>(), "kFlightModes: row i is mode i");
     static_assert(rows_in_task_order<Flight>(), "kFlightTaskTable: row i is task i");

@@ -132,7 +132,7 @@ constexpr TaskSet set(const uint8_t (&ids)[N]) {
 // (engine_sources.hpp: the mixer reads it, nothing else decides), and its entry action, run once
 // by the transition into it and told the mode it came from (nullptr: nothing to do). The mode's
 // other facts are the shared table's (common/mode.hpp). Adding a mode is a row here and one there
-// (docs/architecture.md, "Adding a mode": acro was added so).
+// (docs/architecture.md, "How to add ...": acro was added so).
 template <class Flight>
 struct FlightMode {
   Mode mode;

@@ -1,6 +1,6 @@
 // The safety state machine: which mode the QR is in, which requests it refuses and why, what
 // sends it to panic, and the last word on engine outputs. Rules are rows of tables, not ifs
-// scattered through the flight code; each rule has a test named after it (tests/qr/safety_test).
+// scattered through the flight code; each rule has a test named after it (tests/qr/safety_test.cpp).
 #pragma once
 
 #include <stdint.h>

@@ -16,12 +16,12 @@
 //   EngineCommand engines() const;  uint8_t leds() const;  bool running() const;
 //   void account(const TickReport&, const SchedulerStats<kTaskCount>&);   after each tick
 //
-// A board with a radio receiver (RadioBoard, board.hpp) and a context that takes its bytes
-// (radio_space, radio_receive) also get a bounded number of radio bytes per tick; a board whose
-// ESCs answer (EscAnswerBoard) hands their answers to the context (esc_answers) after the engines;
-// a board that counts its serial receiver's overruns (OverrunCountingBoard) tells the context
-// (serial_overruns) with the bytes.
-// one whose ESCs take commands (EscCommandBoard) sends them the context's (esc_command_due).
+// The optional exchanges, each only where both the board (board.hpp) and the context have it: a
+// board that counts its serial receiver's overruns (OverrunCountingBoard) tells the context
+// (serial_overruns) before the bytes; a board with a radio receiver (RadioBoard) gives the context
+// (radio_space, radio_receive) a bounded number of radio bytes per tick; after the engines, a board
+// whose ESCs answer (EscAnswerBoard) hands their answers to the context (esc_answers), and one
+// whose ESCs take commands (EscCommandBoard) is sent the context's (esc_command_due).
 //
 // Every rate, phase and budget is in the context's task table (task.hpp); no task divides itself.
 //

@@ -1,7 +1,8 @@
-// A scenario as a user writes it (docs/simulator.md, "Scenario files"): how the flight starts,
-// the vehicle and its modifiers, the pilot's timed events after the preflight, and the bands the
-// flight is judged by. parse_scenario reads the text; it touches no file, so it can be fuzzed
-// (tests/fuzz/scenario_file_fuzz.cpp). load_scenario_file also reads the vehicle file it names.
+// A scenario as a user writes it (docs/simulator.md section 6.2, the file format): how the flight
+// starts, the vehicle and its modifiers, the pilot's timed events after the preflight, and the
+// bands the flight is judged by. parse_scenario reads the text; it touches no file, so it can be
+// fuzzed (tests/fuzz/scenario_file_fuzz.cpp). load_scenario_file also reads the vehicle file it
+// names.
 #pragma once
 
 #include <stdint.h>

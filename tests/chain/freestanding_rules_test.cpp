@@ -1,8 +1,9 @@
-// The freestanding rules for qr/core/chain (DESIGN.md): only <stdint.h>, <stddef.h> and project
-// headers; no heap, exceptions, RTTI, virtual dispatch or standard library. Floating point is
-// allowed only where it becomes constants at compile time, which the compiler cannot tell from
-// here: the rv32 ELF check (ChainDevboard.FlightChainHasNoSoftFloat) proves none reaches run
-// time, so this test only keeps `float` out and `double` to the design and constant files.
+// The freestanding rules for qr/core/chain (docs/architecture.md, "Layers"): only <stdint.h>,
+// <stddef.h> and project headers; no heap, exceptions, RTTI, virtual dispatch or standard library.
+// Floating point is allowed only where it becomes constants at compile time, which the compiler
+// cannot tell from here: the rv32 ELF check (ChainDevboard.FlightChainHasNoSoftFloat) proves none
+// reaches run time, so this test only keeps `float` out and `double` to the design and constant
+// files.
 #include <gtest/gtest.h>
 
 #include <filesystem>

@@ -1,6 +1,7 @@
-// The freestanding rules for common/ (DESIGN.md): only <stdint.h>, <stddef.h> and project
-// headers; no heap, no exceptions, no RTTI, no virtual dispatch, no floating point, no memcpy of
-// structs. The compiler flags catch some of this; this test reads the sources for the rest (drivers/ too).
+// The freestanding rules for common/ (docs/architecture.md, "Layers"): only <stdint.h>,
+// <stddef.h> and project headers; no heap, no exceptions, no RTTI, no virtual dispatch, no floating
+// point, no memcpy of structs. The compiler flags catch some of this; this test reads the sources
+// for the rest (drivers/ too).
 #include <gtest/gtest.h>
 
 #include <filesystem>

@@ -1,8 +1,9 @@
-// The freestanding rules for fixedpoint/ (DESIGN.md), as tests/common and tests/chain check them
-// for their folders: only <stdint.h>, <stddef.h> and the library's own headers; no heap,
-// exceptions, RTTI, virtual dispatch or standard library; header-only. Floating point is not
-// banned here: constants are made from double literals at compile time, the float overloads
-// serve the float number policy, and the misuse tests (compile_fail/) keep doubles out of run time.
+// The freestanding rules for fixedpoint/ (docs/architecture.md, "Layers"), as tests/common and
+// tests/chain check them for their folders: only <stdint.h>, <stddef.h> and the library's own
+// headers; no heap, exceptions, RTTI, virtual dispatch or standard library; header-only. Floating
+// point is not banned here: constants are made from double literals at compile time, the float
+// overloads serve the float number policy, and the misuse tests (compile_fail/) keep doubles out of
+// run time.
 #include <gtest/gtest.h>
 
 #include <filesystem>

@@ -1,5 +1,5 @@
-// Arrows only point down (DESIGN.md, "Layers"). This test reads the source tree: every project
-// include and every CMake file, and fails when a layer reaches up or sideways.
+// Arrows only point down (docs/architecture.md, "Layers"). This test reads the source tree: every
+// project include and every CMake file, and fails when a layer reaches up or sideways.
 //
 //   pc            -> common, fixedpoint
 //   qr/sim_runner -> qr/boards/sim, qr/host, sim, qr/core (and below)

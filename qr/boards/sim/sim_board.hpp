@@ -65,7 +65,7 @@ class SimBoard {
   bool serial_write(uint8_t byte) { return to_pc_.send(byte, world_.now_us() * 1000); }
   void set_leds(uint8_t leds) { leds_ = leds; }
   qr::LogArea log_area() { return {log_.data(), log_.size()}; }
-  // ---- qr::RadioBoard, qr::EscAnswerBoard ----
+  // ---- qr::RadioBoard, qr::EscAnswerBoard, qr::EscCommandBoard ----
   bool radio_read(uint8_t& byte);
   bool esc_answers(qr::EscAnswers& answers);
   // A DShot special command for every engine (with --esc dshot; false without, or while an engine

@@ -9,7 +9,7 @@
 
 namespace qr::chain {
 
-// Ids are 1..kParameterCount in table order (tests/common/parameter_table_test checks it).
+// Ids are 1..kParameterCount in table order (tests/common/parameter_table_test.cpp checks it).
 constexpr const wire::ParameterSpec& parameter_spec(wire::ParamId id) {
   return wire::kParameterTable[static_cast<size_t>(id) - 1];
 }
