@@ -11,19 +11,9 @@
 
 namespace qrterm {
 
-// The mode switch's positions, low, centre, high: the mode the arm switch arms. The QR's own
-// table is qr::kRadioArmingModes (qr/core/radio_receiver.hpp), which the console may not include
-// (pc reads common/ only): this is the console's one copy. Height hold is entered in flight from
-// full control, so it is no arming mode.
-inline constexpr wire::Mode kRadioArmingModes[] = {wire::Mode::manual, wire::Mode::yaw_control,
-                                                   wire::Mode::full_control};
-
-constexpr bool armed_by_the_radio(wire::Mode mode) {
-  for (const wire::Mode arming : kRadioArmingModes) {
-    if (arming == mode) return true;
-  }
-  return false;
-}
+// Which modes the radio's arm switch arms, at which position of its mode switch, is a column of
+// the mode table (wire::armed_by_the_radio, wire::mode_at_switch: common/mode.hpp), read by the QR
+// and the simulator's radio alike.
 
 // The QR's last telemetry_radio says the radio is the pilot (its parameter `pilot`).
 inline bool radio_flies(const TelemetryModel& telemetry) {

@@ -96,7 +96,7 @@ void Flight<Chain>::on_radio_sticks(const drivers::RcSticks& sticks) {
   safety_.sticks_moved(controls_);
   Situation s = situation();
   s.requester = Pilot::radio;
-  safety_.radio_switches(sticks.arm, kRadioArmingModes[sticks.mode_position], s);
+  safety_.radio_switches(sticks.arm, wire::mode_at_switch(sticks.mode_position), s);
 }
 
 template <SignalChain Chain>

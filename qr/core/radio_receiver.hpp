@@ -1,7 +1,8 @@
 // The radio receiver's side of the flight: CRSF bytes in (crsf_parser.hpp), the pilot's sticks and
 // switches out through the channel map (rc_sticks.hpp), the link statistics kept for telemetry.
 // Only a valid RC channels frame is life of the radio link: link statistics say how the link is,
-// not that the pilot is there.
+// not that the pilot is there. The mode the arm switch arms at each position of the mode switch
+// is a column of the mode table (wire::mode_at_switch, common/mode.hpp).
 #pragma once
 
 #include <stddef.h>
@@ -14,10 +15,6 @@
 #include <qr/core/flight_types.hpp>
 
 namespace qr {
-
-// The mode switch's positions: the mode the arm switch arms (low, centre, high). Height hold is
-// entered in flight from full control only, so it is no arming mode.
-inline constexpr Mode kRadioArmingModes[3] = {Mode::manual, Mode::yaw_control, Mode::full_control};
 
 class RadioReceiver {
  public:

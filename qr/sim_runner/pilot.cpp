@@ -34,10 +34,11 @@ void Pilot::put(uint8_t byte) {
 }
 
 void Pilot::request_mode(wire::Mode mode) {
-  if (radio_ && wire::flies(mode)) {  // the radio arms: the switch off, then on
-    transmitter_.arm(mode, board_.world().now_us());
-    return;
-  }
+  // With a radio, a mode its mode switch has a position for is armed by the switch (off, then
+  // on). Any other goes to the QR as the console's key sends it (pc/core/radio_pilot.hpp): safe,
+  // panic and calibration stay the PC's, and a flying mode the radio does not arm (height hold,
+  // acro) the QR refuses, radio_is_pilot (docs/safety.md rule 17).
+  if (radio_ && transmitter_.arm(mode, board_.world().now_us())) return;
   const uint32_t now_ms = static_cast<uint32_t>(board_.world().now_us() / 1000);
   send(resend_.submit(wire::ModeChange{0, mode}, now_ms));
 }

@@ -3,9 +3,12 @@
 // through a resend queue, telemetry and replies through a parser listening to the QR's side.
 //
 // With a radio (qrsim --rc crsf, use_radio) the sticks go out as CRSF RC frames at 150 Hz on the
-// board's receiver line (link statistics at 10 Hz), a flight mode is armed with the arm switch
-// (off, then on with the mode switch at that mode: docs/safety.md rule 17), and going silent is
-// the radio's link lost; the PC link keeps the requests, the parameters and the abort key.
+// board's receiver line (link statistics at 10 Hz), a mode the radio arms is armed with the arm
+// switch (off, then on with the mode switch at that mode's position: docs/safety.md rule 17,
+// wire::armed_by_the_radio), and going silent is the radio's link lost; the PC link keeps the
+// requests, the parameters and the abort key. A flying mode the radio does not arm (height hold,
+// acro) is asked for on the PC link, as the console's key asks, and the QR refuses it
+// (radio_is_pilot).
 #pragma once
 
 #include <stdint.h>
@@ -19,8 +22,8 @@
 #include <common/messages.hpp>
 #include <common/parameter_table.hpp>
 #include <common/resend_queue.hpp>
-#include <qr/sim_runner/radio_transmitter.hpp>
 #include <qr/boards/sim/sim_board.hpp>
+#include <qr/sim_runner/radio_transmitter.hpp>
 #include <sim/quadrotor.hpp>
 
 namespace qrsim {

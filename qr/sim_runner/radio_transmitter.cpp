@@ -25,7 +25,8 @@ drivers::CrsfLinkStatistics nearby_link() {
 
 }  // namespace
 
-drivers::CrsfChannels transmitter_channels(const wire::Control& sticks, bool arm_switch_on, wire::Mode mode_switch) {
+drivers::CrsfChannels transmitter_channels(const wire::Control& sticks, bool arm_switch_on,
+                                           wire::ModeSwitch mode_switch) {
   drivers::CrsfChannels c;
   for (uint16_t& v : c.value) v = drivers::kCrsfChannelMid;
   c.value[0] = drivers::rc_channel_of_stick(sticks.roll);
@@ -33,16 +34,18 @@ drivers::CrsfChannels transmitter_channels(const wire::Control& sticks, bool arm
   c.value[2] = drivers::rc_channel_of_lift(sticks.lift);
   c.value[3] = drivers::rc_channel_of_stick(sticks.yaw);
   c.value[4] = arm_switch_on ? drivers::kCrsfChannelMax : drivers::kCrsfChannelMin;
-  c.value[5] = mode_switch == wire::Mode::manual        ? drivers::kCrsfChannelMin
-               : mode_switch == wire::Mode::yaw_control ? drivers::kCrsfChannelMid
-                                                        : drivers::kCrsfChannelMax;
+  c.value[5] = mode_switch == wire::ModeSwitch::low      ? drivers::kCrsfChannelMin
+               : mode_switch == wire::ModeSwitch::centre ? drivers::kCrsfChannelMid
+                                                         : drivers::kCrsfChannelMax;
   return c;
 }
 
-void RadioTransmitter::arm(wire::Mode mode, uint64_t now_us) {
+bool RadioTransmitter::arm(wire::Mode mode, uint64_t now_us) {
+  if (!wire::armed_by_the_radio(mode)) return false;
   arming_ = true;
   mode_ = mode;
   arm_at_us_ = now_us + kArmSwitchOffUs;
+  return true;
 }
 
 void RadioTransmitter::step(uint64_t now_us, bool silent, SimBoard& board) {
@@ -51,7 +54,7 @@ void RadioTransmitter::step(uint64_t now_us, bool silent, SimBoard& board) {
   if (next_rc_ns_ < now_us * 1000) next_rc_ns_ = now_us * 1000 + kRcPeriodNs;
   if (silent) return;
   const drivers::CrsfFrameBytes f = drivers::encode_rc_channels(
-      transmitter_channels(sticks_, arm_switch_on(now_us), mode_));
+      transmitter_channels(sticks_, arm_switch_on(now_us), wire::mode_spec(mode_).armed_at));
   board.radio_send(f.bytes, f.size);
   if (++rc_frames_ % kStatsEvery == 0) {
     const drivers::CrsfFrameBytes s = drivers::encode_link_statistics(nearby_link());

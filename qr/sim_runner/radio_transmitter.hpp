@@ -17,9 +17,10 @@
 
 namespace qrsim {
 
-// The channels a transmitter sends for these sticks and switches: the mode switch low for manual,
-// centre for yaw control, high for full control (qr::kRadioArmingModes).
-drivers::CrsfChannels transmitter_channels(const wire::Control& sticks, bool arm_switch_on, wire::Mode mode_switch);
+// The channels a transmitter sends for these sticks and switches: the mode switch at its position
+// (low, centre or high; the mode table's column says which mode each arms, wire::mode_at_switch).
+drivers::CrsfChannels transmitter_channels(const wire::Control& sticks, bool arm_switch_on,
+                                           wire::ModeSwitch mode_switch);
 
 class RadioTransmitter {
  public:
@@ -28,9 +29,10 @@ class RadioTransmitter {
 
   void set_sticks(const wire::Control& sticks) { sticks_ = sticks; }
   const wire::Control& sticks() const { return sticks_; }
-  // The mode switch to `mode` (manual, yaw control or full control) and the arm switch off, then
-  // on kArmSwitchOffUs later: one movement, one arming attempt (docs/safety.md rule 17).
-  void arm(wire::Mode mode, uint64_t now_us);
+  // The mode switch to `mode`'s position and the arm switch off, then on kArmSwitchOffUs later:
+  // one movement, one arming attempt (docs/safety.md rule 17). False, and nothing moves, for a
+  // mode the radio does not arm (wire::armed_by_the_radio: no position of the switch is its).
+  bool arm(wire::Mode mode, uint64_t now_us);
   // The arm switch off; in a flight mode that is the emergency stop of rule 17.
   void disarm() { arming_ = false; }
   bool arm_switch_on(uint64_t now_us) const { return arming_ && now_us >= arm_at_us_; }

@@ -11,23 +11,25 @@
 namespace qrsim {
 namespace {
 
-// The modes the radio's arm switch arms, by their mode switch position (qr::kRadioArmingModes).
-constexpr wire::Mode kArmedByTheRadio[] = {wire::Mode::manual, wire::Mode::yaw_control, wire::Mode::full_control};
-
+// "radio arm MODE" for the modes the radio's arm switch arms, by their mode switch position (the
+// mode table's column, wire::mode_at_switch), or "radio off".
 bool parse_radio_command(const std::vector<std::string>& words, TruthCommand& command, std::string& error) {
   if (words.size() == 2 && words[1] == "off") {
     command = TruthCommand{.kind = TruthCommand::Kind::radio_off};
     return true;
   }
-  if (words.size() == 3 && words[1] == "arm") {
-    for (const wire::Mode mode : kArmedByTheRadio) {
-      if (words[2] == wire::mode_key(mode)) {
-        command = TruthCommand{.kind = TruthCommand::Kind::radio_arm, .mode = mode};
-        return true;
-      }
+  for (uint8_t position = 0; position < wire::kModeSwitchPositions; ++position) {
+    const wire::Mode mode = wire::mode_at_switch(position);
+    if (words.size() == 3 && words[1] == "arm" && words[2] == wire::mode_key(mode)) {
+      command = TruthCommand{.kind = TruthCommand::Kind::radio_arm, .mode = mode};
+      return true;
     }
   }
-  error = "radio takes 'arm manual', 'arm yaw', 'arm full' or 'off'";
+  error = "radio takes";
+  for (uint8_t position = 0; position < wire::kModeSwitchPositions; ++position) {
+    error += std::string(position == 0 ? " 'arm " : ", 'arm ") + wire::mode_key(wire::mode_at_switch(position)) + "'";
+  }
+  error += " or 'off'";
   return false;
 }
 

@@ -34,15 +34,16 @@ TelemetryModel radio_flying(bool radio) {
 
 TEST(RadioPilot, OnlyTheSimulatorsRadioTakesTheSwitchsModesAndArmsOnlyFromSafe) {
   const TelemetryModel radio = radio_flying(true), pc = radio_flying(false);
-  for (const wire::Mode mode : kRadioArmingModes) {
+  for (uint8_t position = 0; position < wire::kModeSwitchPositions; ++position) {
+    const wire::Mode mode = wire::mode_at_switch(position);
     EXPECT_EQ(radio_arming(mode, true, true, radio), RadioArming::arm) << wire::mode_name(mode);
     EXPECT_EQ(radio_arming(mode, false, true, radio), RadioArming::refused) << wire::mode_name(mode);
     EXPECT_EQ(radio_arming(mode, true, false, radio), RadioArming::console) << "a real radio's switches";
     EXPECT_EQ(radio_arming(mode, true, true, pc), RadioArming::console) << "the PC flies";
   }
   for (const wire::Mode mode :
-       {wire::Mode::safe, wire::Mode::panic, wire::Mode::calibration, wire::Mode::height_hold}) {
-    EXPECT_FALSE(armed_by_the_radio(mode)) << wire::mode_name(mode);
+       {wire::Mode::safe, wire::Mode::panic, wire::Mode::calibration, wire::Mode::height_hold, wire::Mode::acro}) {
+    EXPECT_FALSE(wire::armed_by_the_radio(mode)) << wire::mode_name(mode);
     EXPECT_EQ(radio_arming(mode, true, true, radio), RadioArming::console) << wire::mode_name(mode);
   }
   EXPECT_FALSE(radio_flies(TelemetryModel{})) << "no telemetry_radio yet: the PC flies";

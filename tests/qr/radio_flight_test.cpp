@@ -85,6 +85,33 @@ TEST_F(RadioFlightTest, ArmsFliesAndStopsThroughCrsfFrames) {
   EXPECT_EQ(flight.safety().panic_cause(), PanicCause::disarmed);
 }
 
+// The mode switch's positions are a column of the mode table (wire::mode_at_switch): low manual,
+// centre yaw control, high full control; height hold and acro have none.
+static_assert(wire::mode_at_switch(0) == Mode::manual && wire::mode_at_switch(1) == Mode::yaw_control &&
+              wire::mode_at_switch(2) == Mode::full_control);
+static_assert(!wire::armed_by_the_radio(Mode::height_hold) && !wire::armed_by_the_radio(Mode::acro) &&
+              !wire::armed_by_the_radio(Mode::safe) && !wire::armed_by_the_radio(Mode::calibration));
+
+// The arm switch moved on at each position of the mode switch arms that position's mode; the
+// switch off is the emergency stop, and the panic ends in safe for the next position.
+TEST_F(RadioFlightTest, EachPositionOfTheModeSwitchArmsItsModeOfTheModeTable) {
+  make_radio_the_pilot();
+  ASSERT_EQ(request_mode(Mode::calibration), NackReason::none) << "calibration stays the PC's";
+  run_ms(50);
+  ASSERT_TRUE(flight.chain().calibrated());
+  ASSERT_EQ(flight.mode(), Mode::safe);
+  constexpr uint16_t kChannel[] = {drivers::kCrsfChannelMin, drivers::kCrsfChannelMid, drivers::kCrsfChannelMax};
+  for (uint8_t position = 0; position < wire::kModeSwitchPositions; ++position) {
+    radio.value[5] = kChannel[position];
+    arm(true);
+    run_ms(30);
+    EXPECT_EQ(flight.mode(), wire::mode_at_switch(position)) << "position " << int{position};
+    arm(false);
+    for (int i = 0; i < 1000 && flight.mode() != Mode::safe; ++i) run_ms(10);
+    ASSERT_EQ(flight.mode(), Mode::safe);
+  }
+}
+
 TEST_F(RadioFlightTest, ThePcsSticksAreIgnoredWhileTheRadioFlies) {
   make_radio_the_pilot();
   // The radio pauses (in safe no watchdog minds) so that no RC frame covers the PC's.

@@ -7,7 +7,10 @@
 #include <cmath>
 #include <cstdio>
 
+#include <qr/boards/sim/sim_qr.hpp>
+#include <qr/sim_runner/pilot.hpp>
 #include <qr/sim_runner/scenario.hpp>
+#include <sim/vehicle.hpp>
 
 namespace {
 
@@ -52,6 +55,52 @@ TEST(DriversClosedLoop, TheRadiosLinkLossLandsLikeTheCables) {
   const qrsim::ScenarioResult r = fly("link-loss", true, false);
   expect_bands_hold(r);
   EXPECT_EQ(r.figure("entered_panic"), 1);
+}
+
+// A flying mode the radio's switches do not arm (height hold, acro: wire::armed_by_the_radio) is
+// asked for on the PC link, as the console's key asks, and the QR refuses it while the radio flies
+// (radio_is_pilot, docs/safety.md rule 17). The scenario pilot moved the radio's switches for any
+// flying mode: for acro the mode switch went high and the radio armed full control, and for height
+// hold the arm switch's off-and-on in flight was the emergency stop (a panic 0.5 s in).
+TEST(DriversClosedLoop, AModeTheRadioDoesNotArmIsAskedOfTheQrAndRefused) {
+  const qrsim::ScenarioResult height = fly("height-hold", true, false);
+  EXPECT_TRUE(height.error.empty()) << height.error;
+  EXPECT_EQ(height.figure("entered_panic"), 0) << "no emergency stop";
+  EXPECT_EQ(height.final_mode, "full") << "refused: the radio's full control flies on";
+  EXPECT_GE(height.figure("nacks"), 1);
+  const qrsim::ScenarioResult acro = fly("acro-roll", true, false);
+  EXPECT_TRUE(acro.error.empty()) << acro.error;
+  EXPECT_EQ(acro.final_mode, "safe") << "refused, not armed as full control";
+  EXPECT_GE(acro.figure("nacks"), 1);
+}
+
+// The same, the pilot's own view: the request's nack says why, and the radio's switches never
+// moved (no arming, no emergency stop).
+TEST(DriversClosedLoop, ThePilotsRequestForAcroIsNackedRadioIsPilot) {
+  const std::unique_ptr<qrsim::SimQr> qr = qrsim::make_qr(sim::default_vehicle(), sim::WorldConfig{.seed = 1});
+  qrsim::Pilot pilot(qr->board);
+  const auto until = [&](double limit_s, const auto& done) {
+    for (uint32_t i = 0; i < limit_s * qr::kControlHz && !done(); ++i) {
+      pilot.step();
+      qr->tick();
+    }
+    return done();
+  };
+  until(0.3, [] { return false; });
+  pilot.set_parameter(wire::ParamId::pilot, 1);
+  pilot.use_radio();
+  pilot.request_mode(wire::Mode::calibration);
+  ASSERT_TRUE(until(10, [&] {
+    return (pilot.view().flags & wire::kFlagCalibrated) != 0 && qr->firmware.mode() == wire::Mode::safe &&
+           !pilot.request_pending(wire::MessageType::mode_change) &&
+           !pilot.request_pending(wire::MessageType::param_set);
+  }));
+  ASSERT_EQ(qr->firmware.pilot(), qr::Pilot::radio);
+  pilot.request_mode(wire::Mode::acro);
+  ASSERT_TRUE(until(2, [&] { return pilot.view().nacks > 0; }));
+  EXPECT_EQ(pilot.view().last_nack, wire::NackReason::radio_is_pilot);
+  until(0.5, [] { return false; });
+  EXPECT_EQ(qr->firmware.mode(), wire::Mode::safe);
 }
 
 // The PC's link lost in hover with DShot ESCs: the panic sets the QR down and stops the engines,
