@@ -48,6 +48,14 @@ std::string mode_keys() {
   return out;
 }
 
+class Reader;
+
+// An event's action word and the Reader's parser for the rest of its line.
+struct EventKeyword {
+  const char* action;
+  bool (Reader::*parse)(const std::vector<std::string>& w, Event& e);
+};
+
 // Reads one file's statements into a script; the first problem ends the reading.
 class Reader {
  public:
@@ -220,111 +228,120 @@ class Reader {
     return true;
   }
 
-  bool event(const std::vector<std::string>& w) {
-    if (w.size() < 3) return fail("an event is 'at T action ...'");
-    Event e;
-    e.line = line_;
-    if (!get_number(w[1], e.at_s, "the event's time")) return false;
-    if (e.at_s < 0) return fail("event time must be >= 0");
-    if (!out_.events.empty() && e.at_s < out_.events.back().at_s) {
-      std::ostringstream order;
-      order << "event out of order: at " << e.at_s << " after an event at " << out_.events.back().at_s;
-      return fail(order.str());
-    }
-    const std::string& action = w[2];
-    // Limits keep a user's typo from feeding the plant numbers it cannot integrate.
-    const auto one_number = [&](Action kind, const char* what, double limit) {
-      e.action = kind;
-      if (w.size() != 4) return fail(action + " needs one number (" + what + ")");
-      if (!get_number(w[3], e.value, what)) return false;
-      return std::abs(e.value) <= limit || fail(action + " " + w[3] + " is beyond +-" + text_of(limit) + " " + what);
-    };
-    // A switch between two words: value 1 for the first, 0 for the second.
-    const auto either = [&](Action kind, const char* one, const char* zero, const char* problem) {
-      e.action = kind;
-      if (w.size() != 4 || (w[3] != one && w[3] != zero)) return fail(problem);
-      e.value = w[3] == one ? 1 : 0;
+  // at T ACTION ...: the time is checked here, the rest by the action's parser (kEventKeywords).
+  bool event(const std::vector<std::string>& w);
+  static const EventKeyword kEventKeywords[];
+  static std::string event_actions();
+
+  // Limits keep a user's typo from feeding the plant numbers it cannot integrate.
+  bool one_number(const std::vector<std::string>& w, Event& e, Action kind, const char* what, double limit) {
+    e.action = kind;
+    if (w.size() != 4) return fail(w[2] + " needs one number (" + what + ")");
+    if (!get_number(w[3], e.value, what)) return false;
+    return std::abs(e.value) <= limit || fail(w[2] + " " + w[3] + " is beyond +-" + text_of(limit) + " " + what);
+  }
+
+  // A switch between two words: value 1 for the first, 0 for the second.
+  bool either(const std::vector<std::string>& w, Event& e, Action kind, const char* one, const char* zero,
+              const char* problem) {
+    e.action = kind;
+    if (w.size() != 4 || (w[3] != one && w[3] != zero)) return fail(problem);
+    e.value = w[3] == one ? 1 : 0;
+    return true;
+  }
+
+  bool roll(const std::vector<std::string>& w, Event& e) { return one_number(w, e, Action::roll, "degrees", 90); }
+  bool pitch(const std::vector<std::string>& w, Event& e) { return one_number(w, e, Action::pitch, "degrees", 90); }
+  bool yaw(const std::vector<std::string>& w, Event& e) { return one_number(w, e, Action::yaw, "rad/s", 20); }
+
+  // at T lift hold|still|height METRES|SHARE
+  bool lift(const std::vector<std::string>& w, Event& e) {
+    lift_still_ = false;  // any lift event moves the hand, but `lift still`
+    if (w.size() == 4 && w[3] == "hold") {
+      e.action = Action::lift_hold;
       return true;
-    };
-    bool ok = false;
-    if (action == "lift") lift_still_ = false;  // any lift event moves the hand, but `lift still` below
-    if (action == "roll") {
-      ok = one_number(Action::roll, "degrees", 90);
-    } else if (action == "pitch") {
-      ok = one_number(Action::pitch, "degrees", 90);
-    } else if (action == "yaw") {
-      ok = one_number(Action::yaw, "rad/s", 20);
-    } else if (action == "lift") {
-      if (w.size() == 4 && w[3] == "hold") {
-        e.action = Action::lift_hold;
-        ok = true;
-      } else if (w.size() == 4 && w[3] == "still") {
-        e.action = Action::lift_still;
-        lift_still_ = true;
-        ok = true;
-      } else if (w.size() == 5 && w[3] == "height") {
-        e.action = Action::lift_height;
-        ok = get_number(w[4], e.value, "the height");
-        if (ok && (e.value < 0.2 || e.value > 100)) ok = fail("lift height must be 0.2 .. 100 m");
-      } else if (w.size() == 4) {
-        e.action = Action::lift_share;
-        ok = get_number(w[3], e.value, "the share of hover lift");
-        if (ok && (e.value < 0 || e.value > 3)) ok = fail("lift share must be 0 .. 3 (of the hover lift)");
-      } else {
-        ok = fail("lift needs 'hold', 'height METRES', 'still' or a share of the hover lift");
-      }
-    } else if (action == "mode") {
-      e.action = Action::mode;
-      if (w.size() != 4) return fail("mode needs one mode key (" + mode_keys() + ")");
-      ok = mode_from_key(w[3], e.mode) || fail("unknown mode '" + w[3] + "' (" + mode_keys() + ")");
-      // The firmware leaves height hold as soon as the lift stick moves (SafetyMachine::sticks_moved),
-      // and the pilot's hand moves it every period unless told to stop: the hold would last a few
-      // hundredths of a second with no word of why.
-      if (ok && e.mode == wire::Mode::height_hold && !lift_still_) {
-        ok = fail(
-            "mode height with the pilot's lift hand moving: height hold ends at the lift stick's first "
-            "change; add 'at T lift still' before it");
-      }
-    } else if (action == "param") {
-      e.action = Action::param;
-      if (w.size() != 5) return fail("param needs NAME VALUE");
-      const std::string problem = parameter_from_text(w[3], w[4], e.param, e.raw);
-      ok = problem.empty() || fail(problem);
-    } else if (action == "torque") {
-      e.action = Action::torque;
-      ok = vector_for(w, e, "N m, body axes");
-    } else if (action == "force") {
-      e.action = Action::force;
-      ok = vector_for(w, e, "N, world axes");
-    } else if (action == "wind") {
-      e.action = Action::wind;
-      ok = vector_for(w, e, "m/s, world axes");
-    } else if (action == "turn") {
-      ok = turn(w, e);
-    } else if (action == "link") {
-      ok = either(Action::link, "on", "off", "link is 'on' or 'off'");
-    } else if (action == "console") {
-      ok = either(Action::console, "full", "normal", "console is 'full' (the line's full rate) or 'normal'");
-    } else if (action == "log") {
-      if (w.size() == 4 && w[3] == "start") {
-        e.action = Action::log_start;
-        ok = true;
-      } else if (w.size() == 4 && w[3] == "stop") {
-        e.action = Action::log_stop;
-        ok = true;
-      } else if (w.size() == 5 && w[3] == "download" && (w[4] == "sensor" || w[4] == "telemetry")) {
-        e.action = Action::download;
-        e.value = w[4] == "sensor" ? 0 : 1;
-        ok = true;
-      } else {
-        ok = fail("log is 'start', 'stop' or 'download sensor|telemetry'");
-      }
-    } else {
-      return fail("unknown action '" + action +
-                  "' (roll, pitch, yaw, lift, mode, param, torque, force, wind, turn, link, console, log)");
     }
-    if (ok) out_.events.push_back(e);
-    return ok;
+    if (w.size() == 4 && w[3] == "still") {
+      e.action = Action::lift_still;
+      lift_still_ = true;
+      return true;
+    }
+    if (w.size() == 5 && w[3] == "height") {
+      e.action = Action::lift_height;
+      if (!get_number(w[4], e.value, "the height")) return false;
+      if (e.value < 0.2 || e.value > 100) return fail("lift height must be 0.2 .. 100 m");
+      return true;
+    }
+    if (w.size() == 4) {
+      e.action = Action::lift_share;
+      if (!get_number(w[3], e.value, "the share of hover lift")) return false;
+      if (e.value < 0 || e.value > 3) return fail("lift share must be 0 .. 3 (of the hover lift)");
+      return true;
+    }
+    return fail("lift needs 'hold', 'height METRES', 'still' or a share of the hover lift");
+  }
+
+  bool mode(const std::vector<std::string>& w, Event& e) {
+    e.action = Action::mode;
+    if (w.size() != 4) return fail("mode needs one mode key (" + mode_keys() + ")");
+    if (!mode_from_key(w[3], e.mode)) return fail("unknown mode '" + w[3] + "' (" + mode_keys() + ")");
+    // The firmware leaves height hold as soon as the lift stick moves (SafetyMachine::sticks_moved),
+    // and the pilot's hand moves it every period unless told to stop: the hold would last a few
+    // hundredths of a second with no word of why.
+    if (e.mode == wire::Mode::height_hold && !lift_still_) {
+      return fail(
+          "mode height with the pilot's lift hand moving: height hold ends at the lift stick's first "
+          "change; add 'at T lift still' before it");
+    }
+    return true;
+  }
+
+  bool param(const std::vector<std::string>& w, Event& e) {
+    e.action = Action::param;
+    if (w.size() != 5) return fail("param needs NAME VALUE");
+    const std::string problem = parameter_from_text(w[3], w[4], e.param, e.raw);
+    return problem.empty() || fail(problem);
+  }
+
+  bool torque(const std::vector<std::string>& w, Event& e) {
+    e.action = Action::torque;
+    return vector_for(w, e, "N m, body axes");
+  }
+
+  bool force(const std::vector<std::string>& w, Event& e) {
+    e.action = Action::force;
+    return vector_for(w, e, "N, world axes");
+  }
+
+  bool wind(const std::vector<std::string>& w, Event& e) {
+    e.action = Action::wind;
+    return vector_for(w, e, "m/s, world axes");
+  }
+
+  bool link(const std::vector<std::string>& w, Event& e) {
+    return either(w, e, Action::link, "on", "off", "link is 'on' or 'off'");
+  }
+
+  bool console(const std::vector<std::string>& w, Event& e) {
+    return either(w, e, Action::console, "full", "normal", "console is 'full' (the line's full rate) or 'normal'");
+  }
+
+  // at T log start|stop|download sensor|telemetry
+  bool log(const std::vector<std::string>& w, Event& e) {
+    if (w.size() == 4 && w[3] == "start") {
+      e.action = Action::log_start;
+      return true;
+    }
+    if (w.size() == 4 && w[3] == "stop") {
+      e.action = Action::log_stop;
+      return true;
+    }
+    if (w.size() == 5 && w[3] == "download" && (w[4] == "sensor" || w[4] == "telemetry")) {
+      e.action = Action::download;
+      e.value = w[4] == "sensor" ? 0 : 1;
+      return true;
+    }
+    return fail("log is 'start', 'stop' or 'download sensor|telemetry'");
   }
 
   bool band(const std::vector<std::string>& w) {
@@ -362,6 +379,40 @@ class Reader {
   bool lift_still_ = false;  // the last lift event was `lift still`: the stick stays put
   int turn_line_ = 0;
 };
+
+// The order is the unknown-action message's.
+const EventKeyword Reader::kEventKeywords[] = {
+    {"roll", &Reader::roll}, {"pitch", &Reader::pitch}, {"yaw", &Reader::yaw},       {"lift", &Reader::lift},
+    {"mode", &Reader::mode}, {"param", &Reader::param}, {"torque", &Reader::torque}, {"force", &Reader::force},
+    {"wind", &Reader::wind}, {"turn", &Reader::turn},   {"link", &Reader::link},     {"console", &Reader::console},
+    {"log", &Reader::log},
+};
+
+std::string Reader::event_actions() {
+  std::string out;
+  for (const EventKeyword& k : kEventKeywords) out += (out.empty() ? "" : ", ") + std::string(k.action);
+  return out;
+}
+
+bool Reader::event(const std::vector<std::string>& w) {
+  if (w.size() < 3) return fail("an event is 'at T action ...'");
+  Event e;
+  e.line = line_;
+  if (!get_number(w[1], e.at_s, "the event's time")) return false;
+  if (e.at_s < 0) return fail("event time must be >= 0");
+  if (!out_.events.empty() && e.at_s < out_.events.back().at_s) {
+    std::ostringstream order;
+    order << "event out of order: at " << e.at_s << " after an event at " << out_.events.back().at_s;
+    return fail(order.str());
+  }
+  for (const EventKeyword& k : kEventKeywords) {
+    if (w[2] != k.action) continue;
+    if (!(this->*k.parse)(w, e)) return false;
+    out_.events.push_back(e);
+    return true;
+  }
+  return fail("unknown action '" + w[2] + "' (" + event_actions() + ")");
+}
 
 }  // namespace
 

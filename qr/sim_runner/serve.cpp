@@ -11,6 +11,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <string>
 
 #include <qr/boards/sim/devboard_qr.hpp>
@@ -18,6 +19,7 @@
 #include <qr/sim_runner/serve_clock.hpp>
 #include <qr/sim_runner/serve_output.hpp>
 #include <qr/sim_runner/serve_radio.hpp>
+#include <qr/sim_runner/serve_reports.hpp>
 #include <qr/sim_runner/truth_channel.hpp>
 
 namespace qrsim {
@@ -126,77 +128,6 @@ void let_the_line_finish(FlyingQr& qr, ServeOutput& out, int out_fd, bool linger
   for (int i = 0; linger && i < kLingerPeriods && g_stop == 0; ++i) usleep(qr::kPeriodUs);
 }
 
-// What the console's log gets to know (qrterm logs qrsim's stderr lines as "sim: ..."): a host
-// that stalled the world, and frames dropped because nobody read the line. At most a line a
-// second of each, so a host that stalls often, or a console that never reads, cannot flood it.
-class ServeReports {
- public:
-  static constexpr uint64_t kQuietUs = 1000000;
-
-  void paused(uint64_t pause_us, uint64_t sim_us) {
-    if (pauses_ == 0) since_sim_us_ = sim_us;
-    ++pauses_;
-    paused_us_ += pause_us;
-    longest_us_ = pause_us > longest_us_ ? pause_us : longest_us_;
-  }
-
-  // Once a control period: says what is due. `wall_us` for the stalls' rate, `sim_us` for the
-  // drops' (a line read again is one that has dropped nothing for a second of the world's time).
-  void step(const ServeOutput& out, uint64_t wall_us, uint64_t sim_us) {
-    if (pauses_ > 0 && (!stall_said_ || wall_us - stall_said_us_ >= kQuietUs)) {
-      if (pauses_ == 1) {
-        std::fprintf(stderr,
-                     "qrsim: the host stalled for %.2f s at t=%.3f s: the world paused there and went on "
-                     "(simulated time skips nothing; the console's bytes reach the QR in order)\n",
-                     static_cast<double>(paused_us_) * 1e-6, static_cast<double>(since_sim_us_) * 1e-6);
-      } else {
-        std::fprintf(stderr,
-                     "qrsim: the host stalled %llu times since t=%.3f s: the world paused %.2f s in all, the longest "
-                     "%.2f s\n",
-                     static_cast<unsigned long long>(pauses_), static_cast<double>(since_sim_us_) * 1e-6,
-                     static_cast<double>(paused_us_) * 1e-6, static_cast<double>(longest_us_) * 1e-6);
-      }
-      stall_said_ = true;
-      stall_said_us_ = wall_us;
-      pauses_ = paused_us_ = longest_us_ = 0;
-    }
-    const uint64_t dropped = out.frames_dropped();
-    if (dropped > frames_seen_) {
-      if (!dropping_) {
-        std::fprintf(stderr,
-                     "qrsim: the console does not read the serial line: the QR's oldest frames are dropped, "
-                     "whole, and the world flies on\n");
-        dropping_ = true;
-        episode_frames_ = frames_seen_;
-        episode_bytes_ = bytes_seen_;
-      }
-      frames_seen_ = dropped;
-      bytes_seen_ = out.bytes_dropped();
-      last_drop_sim_us_ = sim_us;
-    } else if (dropping_ && sim_us - last_drop_sim_us_ >= kQuietUs) {
-      std::fprintf(stderr,
-                   "qrsim: the console reads the serial line again: %llu frames (%llu bytes) dropped meanwhile\n",
-                   static_cast<unsigned long long>(frames_seen_ - episode_frames_),
-                   static_cast<unsigned long long>(bytes_seen_ - episode_bytes_));
-      dropping_ = false;
-    }
-  }
-
-  void finish(const ServeOutput& out) const {
-    if (out.frames_dropped() == 0) return;
-    std::fprintf(
-        stderr, "qrsim: %llu of the QR's frames (%llu bytes) dropped in all while nobody read the serial line\n",
-        static_cast<unsigned long long>(out.frames_dropped()), static_cast<unsigned long long>(out.bytes_dropped()));
-  }
-
- private:
-  uint64_t pauses_ = 0, paused_us_ = 0, longest_us_ = 0, since_sim_us_ = 0;
-  bool stall_said_ = false;
-  uint64_t stall_said_us_ = 0;
-  bool dropping_ = false;
-  uint64_t frames_seen_ = 0, bytes_seen_ = 0, episode_frames_ = 0, episode_bytes_ = 0, last_drop_sim_us_ = 0;
-};
-
 // The side channel (--truth-fd): command lines in, truth lines and error lines out. Writes never
 // block the flight: a line the reader has no room for is dropped.
 class TruthChannel {
@@ -272,23 +203,28 @@ class TruthChannel {
   std::string pending_;
 };
 
-}  // namespace
+// The console's end of the QR's serial line: a pseudo terminal, or stdin and stdout.
+struct ConsoleLine {
+  int in_fd = STDIN_FILENO;
+  int out_fd = STDOUT_FILENO;
+  int slave_keep = -1;  // the pty's slave, open for as long as serve mode runs (open_pty)
+};
 
-int serve(const ServeOptions& options) {
-  catch_stop_signals();
-  int in_fd = STDIN_FILENO, out_fd = STDOUT_FILENO, slave_keep = -1;
-  if (!options.stdio) {
+bool open_console_line(bool stdio, ConsoleLine& line) {
+  if (!stdio) {
     int master = -1;
-    if (!open_pty(master, slave_keep)) {
-      std::perror("qrsim: pseudo terminal");
-      return 1;
-    }
-    in_fd = out_fd = master;
+    if (!open_pty(master, line.slave_keep)) return false;
+    line.in_fd = line.out_fd = master;
   }
   // Neither way waits: a console that does not read must not stop the world (serve_output.hpp).
-  set_nonblocking(in_fd);
-  set_nonblocking(out_fd);
+  set_nonblocking(line.in_fd);
+  set_nonblocking(line.out_fd);
+  return true;
+}
 
+// The host build, or the cross-compiled firmware on the emulated devboard; null when the devboard
+// would not start (said on stderr).
+std::unique_ptr<FlyingQr> make_flying_qr(const ServeOptions& options) {
   std::unique_ptr<FlyingQr> qr;
   if (options.devboard_elf.empty()) {
     qr = std::make_unique<HostQr>(options.vehicle, sim::WorldConfig{.seed = options.seed});
@@ -297,99 +233,146 @@ int serve(const ServeOptions& options) {
                                       options.devboard_core_mhz);
     if (!qr->error().empty()) {
       std::fprintf(stderr, "qrsim: devboard: %s\n", qr->error().c_str());
-      return 1;
+      return nullptr;
     }
   }
   // The simulated motors have the pole pairs the QR's motor_poles parameter says by default.
   if (options.dshot) qr->board().use_dshot(static_cast<uint8_t>(qr->parameters().get(wire::ParamId::motor_poles) / 2));
-  const uint64_t stop_us = options.seconds > 0 ? static_cast<uint64_t>(std::llround(options.seconds * 1e6)) : 0;
-  uint64_t next_status_us = 1000000;
-  uint8_t buffer[256];
-  bool input_open = true;
-  TruthChannel truth(options.truth_fd);
-  uint64_t next_truth_us = 0;
-  sim::Vec3 push_torque;
-  uint64_t push_until_us = 0;
-  bool pushing = false;
-  std::unique_ptr<ServeRadio> radio;
-  if (options.radio) radio = std::make_unique<ServeRadio>();
-  ServeOutput out;
-  ServeReports reports;
-  // The kicks follow the wall clock from here (serve_clock.hpp); the board itself keeps
-  // simulated time only.
-  ServeClock clock(qr::kPeriodUs);
-  clock.start(wall_now_us(), qr->world().now_us());
+  return qr;
+}
 
-  while (g_stop == 0) {
-    const uint64_t kick_us = qr->board().kick_time_us(qr->board().kicks());
-    if (!sleep_until(clock.due_us(kick_us))) break;
-    const uint64_t wall_us = wall_now_us();
-    const uint64_t paused_us = clock.begin(kick_us, wall_us);
-    if (paused_us > 0) reports.paused(paused_us, qr->world().now_us());
-
-    // Bytes from the console go onto the line now; the line delivers them at 115200 baud, in order.
-    while (input_open) {
-      const ssize_t n = read(in_fd, buffer, sizeof buffer);
-      if (n > 0) {
-        for (ssize_t i = 0; i < n; ++i) {
-          qr->board().pc_send(buffer[i]);
-          if (radio) radio->hear(buffer[i], qr->world().now_us());
-        }
-      } else {
-        if (n == 0 && options.stdio) input_open = false;  // stdin closed: keep flying, silent
-        break;                                            // EAGAIN, or EIO: no console attached
-      }
-    }
-    forward_to_console(qr->board(), out, out_fd);
-
-    if (truth.open()) {
-      const uint64_t before = qr->world().now_us();
-      truth.poll_commands(*qr, radio.get(), push_torque, push_until_us);
-      const bool push_now = before < push_until_us;
-      if (push_now || pushing) qr->world().plant().set_disturbance(push_now ? push_torque : sim::Vec3{}, sim::Vec3{});
-      pushing = push_now;
-    }
-
-    if (radio) radio->step(qr->world().now_us(), qr->board());
-    if (!qr->tick()) {  // the physics to the kick, then the firmware's tick
-      if (!qr->error().empty()) std::fprintf(stderr, "qrsim: devboard: %s\n", qr->error().c_str());
-      else let_the_line_finish(*qr, out, out_fd, /*linger=*/!options.stdio);
-      break;
-    }
-
-    const uint64_t now = qr->world().now_us();
-    reports.step(out, wall_us, now);
-    if (truth.open() && now >= next_truth_us) {
-      next_truth_us = now - now % 20000 + 20000;
-      truth.send(truth_line(static_cast<double>(now) * 1e-6, qr->world().plant().state()));
-    }
-    if (options.status && now >= next_status_us) {
-      next_status_us += 1000000;
-      const sim::PlantState& s = qr->world().plant().state();
-      const sim::Euler e = sim::to_euler(s.attitude);
-      const ServeTiming& timing = clock.timing();
-      std::fprintf(stderr,
-                   "qrsim: t=%.0fs mode=%u height=%.2fm roll=%.1f pitch=%.1f yaw=%.1f deg battery=%.2fV misses=%u "
-                   "host: late_wakeups=%llu behind=%llu max_behind_ms=%.1f pauses=%llu paused_s=%.2f "
-                   "line: frames_dropped=%llu\n",
-                   static_cast<double>(now) * 1e-6, static_cast<unsigned>(qr->view().mode), -s.position.z,
-                   e.roll * 57.29578, e.pitch * 57.29578, e.yaw * 57.29578, qr->world().plant().battery_volts(),
-                   static_cast<unsigned>(qr->view().deadline_misses),
-                   static_cast<unsigned long long>(timing.late_wakeups),
-                   static_cast<unsigned long long>(timing.behind_kicks),
-                   static_cast<double>(timing.max_behind_us) * 1e-3, static_cast<unsigned long long>(timing.pauses),
-                   static_cast<double>(timing.paused_us) * 1e-6, static_cast<unsigned long long>(out.frames_dropped()));
-      if (radio) {
-        std::fprintf(stderr, "qrsim: radio %s, arm switch %s, mode switch %s, %u RC frames sent\n",
-                     radio->sending(now) ? "sending" : "silent (no control frames from the console)",
-                     radio->transmitter().arm_switch_on(now) ? "on" : "off",
-                     wire::mode_key(radio->transmitter().mode_switch()), radio->transmitter().rc_frames());
-      }
-    }
-    if (stop_us != 0 && now >= stop_us) break;
+// One run of serve mode: the QR, the console's line, the side channel and the radio, taken a
+// control period at a time on the wall clock.
+class ServeSession {
+ public:
+  ServeSession(const ServeOptions& options, FlyingQr& qr, const ConsoleLine& line)
+      : options_(options), qr_(qr), line_(line),
+        stop_us_(options.seconds > 0 ? static_cast<uint64_t>(std::llround(options.seconds * 1e6)) : 0),
+        truth_(options.truth_fd) {
+    if (options.radio) radio_ = std::make_unique<ServeRadio>();
   }
-  reports.finish(out);
-  if (slave_keep >= 0) close(slave_keep);
+
+  // Until the firmware stops, a signal asks to, or the time is up.
+  void run() {
+    // The kicks follow the wall clock from here (serve_clock.hpp); the board itself keeps
+    // simulated time only.
+    clock_.start(wall_now_us(), qr_.world().now_us());
+    while (g_stop == 0 && period()) {
+    }
+    reports_.finish(out_);
+  }
+
+ private:
+  // One kick; false when serve mode ends.
+  bool period() {
+    const uint64_t kick_us = qr_.board().kick_time_us(qr_.board().kicks());
+    if (!sleep_until(clock_.due_us(kick_us))) return false;
+    const uint64_t wall_us = wall_now_us();
+    const uint64_t paused_us = clock_.begin(kick_us, wall_us);
+    if (paused_us > 0) reports_.paused(paused_us, qr_.world().now_us());
+
+    take_console_bytes();
+    forward_to_console(qr_.board(), out_, line_.out_fd);
+    if (truth_.open()) take_side_channel_commands();
+    if (radio_) radio_->step(qr_.world().now_us(), qr_.board());
+    if (!qr_.tick()) {  // the physics to the kick, then the firmware's tick
+      if (!qr_.error().empty()) std::fprintf(stderr, "qrsim: devboard: %s\n", qr_.error().c_str());
+      else let_the_line_finish(qr_, out_, line_.out_fd, /*linger=*/!options_.stdio);
+      return false;
+    }
+
+    const uint64_t now = qr_.world().now_us();
+    reports_.step(out_, wall_us, now);
+    if (truth_.open() && now >= next_truth_us_) {
+      next_truth_us_ = now - now % 20000 + 20000;
+      truth_.send(truth_line(static_cast<double>(now) * 1e-6, qr_.world().plant().state()));
+    }
+    if (options_.status && now >= next_status_us_) {
+      next_status_us_ += 1000000;
+      print_status(now);
+    }
+    return stop_us_ == 0 || now < stop_us_;
+  }
+
+  // Bytes from the console go onto the line now; the line delivers them at 115200 baud, in order.
+  void take_console_bytes() {
+    uint8_t buffer[256];
+    while (input_open_) {
+      const ssize_t n = read(line_.in_fd, buffer, sizeof buffer);
+      if (n <= 0) {
+        if (n == 0 && options_.stdio) input_open_ = false;  // stdin closed: keep flying, silent
+        return;                                             // EAGAIN, or EIO: no console attached
+      }
+      for (ssize_t i = 0; i < n; ++i) {
+        qr_.board().pc_send(buffer[i]);
+        if (radio_) radio_->hear(buffer[i], qr_.world().now_us());
+      }
+    }
+  }
+
+  // A push acts on the plant until its time is up; then the disturbance is taken off once.
+  void take_side_channel_commands() {
+    const uint64_t before = qr_.world().now_us();
+    truth_.poll_commands(qr_, radio_.get(), push_torque_, push_until_us_);
+    const bool push_now = before < push_until_us_;
+    if (push_now || pushing_) qr_.world().plant().set_disturbance(push_now ? push_torque_ : sim::Vec3{}, sim::Vec3{});
+    pushing_ = push_now;
+  }
+
+  // --status: the flight and the host's pace once a second of simulated time.
+  void print_status(uint64_t now) {
+    const sim::PlantState& s = qr_.world().plant().state();
+    const sim::Euler e = sim::to_euler(s.attitude);
+    const ServeTiming& timing = clock_.timing();
+    std::fprintf(stderr,
+                 "qrsim: t=%.0fs mode=%u height=%.2fm roll=%.1f pitch=%.1f yaw=%.1f deg battery=%.2fV misses=%u "
+                 "host: late_wakeups=%llu behind=%llu max_behind_ms=%.1f pauses=%llu paused_s=%.2f "
+                 "line: frames_dropped=%llu\n",
+                 static_cast<double>(now) * 1e-6, static_cast<unsigned>(qr_.view().mode), -s.position.z,
+                 e.roll * 57.29578, e.pitch * 57.29578, e.yaw * 57.29578, qr_.world().plant().battery_volts(),
+                 static_cast<unsigned>(qr_.view().deadline_misses),
+                 static_cast<unsigned long long>(timing.late_wakeups),
+                 static_cast<unsigned long long>(timing.behind_kicks), static_cast<double>(timing.max_behind_us) * 1e-3,
+                 static_cast<unsigned long long>(timing.pauses), static_cast<double>(timing.paused_us) * 1e-6,
+                 static_cast<unsigned long long>(out_.frames_dropped()));
+    if (!radio_) return;
+    std::fprintf(stderr, "qrsim: radio %s, arm switch %s, mode switch %s, %u RC frames sent\n",
+                 radio_->sending(now) ? "sending" : "silent (no control frames from the console)",
+                 radio_->transmitter().arm_switch_on(now) ? "on" : "off",
+                 wire::mode_key(radio_->transmitter().mode_switch()), radio_->transmitter().rc_frames());
+  }
+
+  const ServeOptions& options_;
+  FlyingQr& qr_;
+  ConsoleLine line_;
+  uint64_t stop_us_;  // 0: no end but the firmware's or a signal
+  TruthChannel truth_;
+  std::unique_ptr<ServeRadio> radio_;  // --rc crsf
+  ServeOutput out_;
+  ServeReports reports_;
+  ServeClock clock_{qr::kPeriodUs};
+  bool input_open_ = true;
+  uint64_t next_status_us_ = 1000000;
+  uint64_t next_truth_us_ = 0;
+  sim::Vec3 push_torque_;
+  uint64_t push_until_us_ = 0;
+  bool pushing_ = false;  // a push's disturbance is on the plant
+};
+
+}  // namespace
+
+int serve(const ServeOptions& options) {
+  catch_stop_signals();
+  ConsoleLine line;
+  if (!open_console_line(options.stdio, line)) {
+    std::perror("qrsim: pseudo terminal");
+    return 1;
+  }
+  const std::unique_ptr<FlyingQr> qr = make_flying_qr(options);
+  if (!qr) return 1;
+  ServeSession session(options, *qr, line);
+  session.run();
+  if (line.slave_keep >= 0) close(line.slave_keep);
   return 0;
 }
 
