@@ -31,9 +31,13 @@ double Barometer::drift_pa(uint64_t now_us) const {
   return temp_coeff_pa_per_k_ * (temperature_c(now_us) - (kIsaSeaLevelK - 273.15));
 }
 
+double Barometer::sense_pa(uint64_t now_us, double altitude_m, double noise_scale) {
+  return isa_pressure_pa(altitude_m) + drift_pa(now_us) + noise_pa_ * noise_scale * random_.normal();
+}
+
 void Barometer::step(uint64_t now_us, double altitude_m) {
   if (now_us >= next_sample_us_) {
-    sampled_pa_ = isa_pressure_pa(altitude_m) + drift_pa(now_us) + noise_pa_ * random_.normal();
+    sampled_pa_ = sense_pa(now_us, altitude_m);
     next_sample_us_ += kPeriodUs;
   }
   if (now_us >= next_publish_us_) {

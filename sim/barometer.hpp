@@ -54,6 +54,12 @@ class Barometer {
   // the pressure at the middle of each D1 conversion and publishes it at the end of the cycle.
   void step(uint64_t now_us, double altitude_m);
 
+  // What the sensing element senses at `now_us` at `altitude_m`, Pa: the ISA pressure, the warm-up
+  // drift and one draw of the noise, scaled by `noise_scale` (1: baro_noise_pa, the RMS at OSR 4096).
+  // step() takes its readings through it; the register-level model (sim/ms5611_model.hpp) converts
+  // what it returns, at the OSR its driver asked for.
+  double sense_pa(uint64_t now_us, double altitude_m, double noise_scale = 1.0);
+
   // The last published reading, Pa (what the board reports); 0 before the first.
   int32_t pressure_pa() const { return published_pa_; }
   // The board's temperature now, °C, and the pressure error it adds, Pa.

@@ -37,16 +37,25 @@ Imu::Imu(const VehicleParams& v, const Random& random)
   accel_scale_ = Vec3{1, 1, 1} + draw(random_, {s, s, s});
 }
 
+ImuSense Imu::sense(const Vec3& rate, const Vec3& specific_force, const VibrationSample& vibration) {
+  std::array<double, 3> gyro{}, accel{};
+  for (int axis = 0; axis < 3; ++axis) {
+    const size_t a = static_cast<size_t>(axis);
+    gyro[a] = gyro_scale_[axis] * (rate[axis] + vibration.gyro[axis]) + gyro_bias_[axis] +
+              gyro_sigma_ * random_.normal();
+    accel[a] = accel_scale_[axis] * (specific_force[axis] + vibration.accel[axis]) + accel_bias_[axis] +
+               accel_sigma_ * random_.normal();
+  }
+  return {{gyro[0], gyro[1], gyro[2]}, {accel[0], accel[1], accel[2]}};
+}
+
 ImuReading Imu::sample(const Vec3& rate, const Vec3& specific_force, const VibrationSample& vibration) {
+  const ImuSense sensed = sense(rate, specific_force, vibration);
   ImuReading out;
   for (int axis = 0; axis < 3; ++axis) {
     const size_t a = static_cast<size_t>(axis);
-    const double gyro = gyro_scale_[axis] * (rate[axis] + vibration.gyro[axis]) + gyro_bias_[axis] +
-                        gyro_sigma_ * random_.normal();
-    const double accel = accel_scale_[axis] * (specific_force[axis] + vibration.accel[axis]) + accel_bias_[axis] +
-                         accel_sigma_ * random_.normal();
-    out.gyro[a] = to_counts(gyro, kGyroCountsPerRadS);
-    out.accel[a] = to_counts(accel, kAccelCountsPerMps2);
+    out.gyro[a] = to_counts(sensed.rate[axis], kGyroCountsPerRadS);
+    out.accel[a] = to_counts(sensed.specific_force[axis], kAccelCountsPerMps2);
   }
   return out;
 }

@@ -26,6 +26,14 @@ struct ImuReading {
   std::array<int16_t, 3> accel{};  // counts, x y z
 };
 
+// What the part senses before its ADC, in physical units: the truth through this part's scale
+// error and bias, with the vibration and one draw of the noise (what the register-level model,
+// sim/mpu6050_model.hpp, converts at the full scale its driver chose).
+struct ImuSense {
+  Vec3 rate;            // rad/s
+  Vec3 specific_force;  // m/s²
+};
+
 class Imu {
  public:
   Imu(const VehicleParams& vehicle, const Random& random);
@@ -33,6 +41,9 @@ class Imu {
   // One sample of body rate `rate` (rad/s) and specific force `specific_force` (m/s²), with the
   // vibration at that instant.
   ImuReading sample(const Vec3& rate, const Vec3& specific_force, const VibrationSample& vibration);
+  // The same sample before the ADC (the same draws in the same order: sample() is sense() in counts
+  // at FS_SEL = 1 and AFS_SEL = 1).
+  ImuSense sense(const Vec3& rate, const Vec3& specific_force, const VibrationSample& vibration);
 
   // The errors drawn at turn-on, in physical units (what calibration has to remove).
   const Vec3& gyro_bias() const { return gyro_bias_; }    // rad/s
