@@ -8,16 +8,20 @@
 #include <cmath>
 #include <cstdio>
 #include <ctime>
+#include <memory>
 #include <numbers>
+#include <string>
+#include <vector>
 
 #include <common/task_names.hpp>
 #include <qr/boards/sim/devboard_qr.hpp>
-#include <qr/sim_runner/flight_record.hpp>
 #include <qr/boards/sim/flying_qr.hpp>
+#include <qr/host/replay.hpp>
+#include <qr/sim_runner/flight_record.hpp>
 #include <qr/sim_runner/full_line_console.hpp>
 #include <qr/sim_runner/pilot.hpp>
+#include <qr/sim_runner/preflight.hpp>
 #include <qr/sim_runner/scenario_score.hpp>
-#include <qr/host/replay.hpp>
 
 namespace qrsim {
 namespace {
@@ -26,9 +30,10 @@ constexpr double kDeg = 180 / std::numbers::pi;
 constexpr double kRad = std::numbers::pi / 180;
 
 // ---- the flight plan ------------------------------------------------------------------------
-// What the pilot does before the manoeuvre, one phase after the other. A flight still in the
-// preflight after kPreflightLimit fails with the phase's name as its error.
-enum class Phase : uint8_t { power_up, calibrate, arm, take_off, settle, manoeuvre };
+// What the pilot does before the manoeuvre, one phase after the other: the pre-flight every
+// runner flies (preflight.hpp), then take-off and a steady hover. A flight still short of its
+// manoeuvre after kPreflightLimit fails with the stage's name as its error.
+enum class Phase : uint8_t { preflight, take_off, settle, manoeuvre };
 
 constexpr double kHoverHeight = 1.5;                     // m, centre of mass above the ground
 constexpr double kSettleSeconds = 1.5;                   // steady hover before the manoeuvre
@@ -344,6 +349,320 @@ void add_instruction_figures(const DevboardQr& devboard, std::vector<Figure>& f)
   if (devboard.core_mhz() != 0) f.push_back({"core_mhz", static_cast<double>(devboard.core_mhz())});
 }
 
+// The files a flight writes as it flies (--trace, --record), closed when it ends.
+struct FileCloser {
+  void operator()(FILE* file) const { std::fclose(file); }
+};
+using OutputFile = std::unique_ptr<FILE, FileCloser>;
+
+OutputFile open_output(const std::string& path) {
+  return OutputFile(path.empty() ? nullptr : std::fopen(path.c_str(), "w"));
+}
+
+// The host build of the firmware, or the devboard's binary when the options name one.
+std::unique_ptr<FlyingQr> make_flying_qr(const sim::VehicleParams& vehicle, const RunOptions& options) {
+  if (options.devboard_elf.empty()) return std::make_unique<HostQr>(vehicle, sim::WorldConfig{.seed = options.seed});
+  return std::make_unique<DevboardQr>(vehicle, sim::WorldConfig{.seed = options.seed}, options.devboard_elf,
+                                      options.devboard_core_mhz);
+}
+
+// The scenario's pre-flight: the scenario's parameters then --param's go up; a "start: safe"
+// flight stays on the ground unarmed, its script arming what it flies.
+PreflightPlan preflight_plan(const ScenarioScript& script, const RunOptions& options) {
+  PreflightPlan plan;
+  plan.parameters = script.parameters;
+  plan.parameters.insert(plan.parameters.end(), options.parameters.begin(), options.parameters.end());
+  plan.radio = options.radio;
+  plan.arm = script.start != Start::safe;
+  return plan;
+}
+
+// What only the flight's end knows: the battery panic level, the yaw-rate set-point, and where
+// the yaw loop's P term alone would settle, its moment balancing the rotor drag's yaw damping:
+//  yaw_p (r_sp - r) k_m w_max^2 / 1000 = c_rd l^2 (sum of rotor speeds) r
+// (thrust units: w_i = e_i^2 / 1000, so a thrust unit is k_m w_max^2 / 1000 of yaw torque,
+// engine_mixer.hpp; w_max = speed per volt x battery volts).
+EndState end_state(FlyingQr& qr) {
+  const sim::Quadrotor& plant = qr.world().plant();
+  EndState end;
+  end.battery_panic_volts = qr.parameters().get(wire::ParamId::battery_panic_mv) * 1e-3;
+  end.yaw_rate_setpoint = qr.view().yaw_rate_setpoint_e3 * 1e-3;
+  const double yaw_p = qr.parameters().get(wire::ParamId::yaw_p) / 16.0;
+  const sim::VehicleParams& v = plant.vehicle();
+  const double w_max = v.speed_per_volt() * plant.battery_volts();
+  double speeds = 0;
+  for (double w : plant.state().rotor_speed) speeds += w;
+  const double gain = yaw_p * v.torque_coeff * w_max * w_max / 1000;
+  const double damping = v.rotor_drag_coeff * v.arm_m * v.arm_m * speeds;
+  end.yaw_rate_p_only = end.yaw_rate_setpoint * gain / (gain + damping);
+  return end;
+}
+
+// The firmware divides each gyro axis by 1 + ppm 1e-6 (qr/core/chain/sensor_units.hpp); what is
+// left of the IMU's drawn factor is the error it flies with, the worst axis's.
+double gyro_scale_error_ppm(FlyingQr& qr) {
+  constexpr wire::ParamId kScale[3] = {wire::ParamId::gyro_scale_x_ppm, wire::ParamId::gyro_scale_y_ppm,
+                                       wire::ParamId::gyro_scale_z_ppm};
+  double worst = 0;
+  for (int i = 0; i < 3; ++i) {
+    const double corrected = 1 + qr.parameters().get(kScale[i]) * 1e-6;
+    worst = std::max(worst, std::abs(qr.world().imu().gyro_scale()[i] / corrected - 1) * 1e6);
+  }
+  return worst;
+}
+
+// The ESCs' side (frames taken, frames dropped for their check) and the front engine's speed as
+// the QR last reported it from the ESC's answer, beside the truth. Special command frames (the
+// lost-model beacon, docs/safety.md rule 18), and those that came while an ESC's motor ran (none
+// may).
+void add_esc_figures(FlyingQr& qr, const ConsoleView& heard, std::vector<Figure>& f) {
+  uint64_t accepted = 0, rejected = 0, commands = 0, commands_turning = 0;
+  for (const SimEsc& esc : qr.board().escs()) {
+    accepted += esc.accepted();
+    rejected += esc.rejected();
+    commands += esc.commands();
+    commands_turning += esc.commands_while_turning();
+  }
+  f.push_back({"esc_frames", static_cast<double>(accepted)});
+  f.push_back({"esc_frames_rejected", static_cast<double>(rejected)});
+  f.push_back({"esc_commands", static_cast<double>(commands)});
+  f.push_back({"esc_commands_while_turning", static_cast<double>(commands_turning)});
+  f.push_back({"rpm_front_reported", static_cast<double>(heard.rpm[0])});
+  f.push_back({"rpm_front_truth", std::abs(qr.world().plant().state().rotor_speed[0]) * 60.0 / (2.0 * M_PI)});
+}
+
+// When the run began, on the wall and on this process's CPU, for its speed figures.
+struct RunClock {
+  std::chrono::steady_clock::time_point wall_start = std::chrono::steady_clock::now();
+  std::clock_t cpu_start = std::clock();
+};
+
+// What the run cost and on what it flew: simulated, wall and CPU time, the rate, the seed and
+// the vehicle's draw.
+void add_run_figures(const RunClock& clock, FlyingQr& qr, const RunOptions& options, const VehicleDraw& flown,
+                     std::vector<Figure>& f) {
+  const double sim_seconds = static_cast<double>(qr.world().now_us()) * 1e-6;
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock.wall_start).count();
+  f.push_back({"sim_seconds", sim_seconds});
+  f.push_back({"wall_seconds", wall});
+  f.push_back({"speedup", sim_seconds / wall});
+  // CPU time of this process: on a machine busy with other work the wall figures understate
+  // what the simulator does; this one does not.
+  const double cpu = static_cast<double>(std::clock() - clock.cpu_start) / CLOCKS_PER_SEC;
+  f.push_back({"cpu_seconds", cpu});
+  f.push_back({"speedup_cpu", cpu > 0 ? sim_seconds / cpu : kNotMeasured});
+  f.push_back({"control_hz", static_cast<double>(qr::kControlHz)});
+  f.push_back({"seed", static_cast<double>(options.seed)});
+  f.push_back({"mass_scale", flown.mass});
+  f.push_back({"inertia_scale", flown.inertia});
+  f.push_back({"motor_tau_ms", flown.motor_tau});
+  f.push_back({"noise_scale", flown.noise});
+  f.push_back({"vibration_scale", flown.vibration});
+}
+
+// One scenario flight as it flies: the QR and its pilot, where the pilot is in the flight plan
+// and what its hands hold, the script's next event, the record, and the files it writes.
+class ScenarioFlight {
+ public:
+  ScenarioFlight(const ScenarioScript& script, const RunOptions& options, FlyingQr& qr, ScenarioResult& result);
+
+  // Control period after control period until the scored window ends, the firmware stops or the
+  // flight fails (result.error).
+  void fly();
+  // The figures of the flight, after the run's own (add_run_figures), and the final mode.
+  void add_figures();
+
+ private:
+  void fly_plan(double t);
+  void enter(Phase next, double t);
+  void begin_manoeuvre(double t);
+  bool play_events(double t);
+  bool preflight_overdue(double t, uint8_t mode);
+  void write_replay_input();
+  void add_end_figures(std::vector<Figure>& f);
+
+  const ScenarioScript& script_;
+  const RunOptions& options_;
+  FlyingQr& qr_;
+  sim::Quadrotor& plant_;
+  ScenarioResult& result_;
+  const double seconds_;  // the scored window
+  Pilot pilot_;
+  std::unique_ptr<FullLineConsole> console_;
+  Preflight preflight_;
+  Phase phase_ = Phase::preflight;
+  double phase_start_ = 0;
+  Hands hands_;
+  size_t next_event_ = 0;
+  FlightRecord rec_;
+  bool airborne_ = false;
+  double last_down_speed_ = 0;
+  size_t text_at_t0_ = 0;  // how much debug text the pilot had heard at t0
+  OutputFile record_;
+  bool recording_ = false;  // from the first calibration tick on
+  OutputFile trace_;
+  const uint16_t idle_;  // the firmware's default idle level, for the record's saturation
+  // The parameters as the pilot uploads them, over the defaults: the scenario's, --param, then the
+  // param events as they come (for the notes on what a stick event can ask for).
+  wire::ParameterValues uploaded_;
+};
+
+ScenarioFlight::ScenarioFlight(const ScenarioScript& script, const RunOptions& options, FlyingQr& qr,
+                               ScenarioResult& result)
+    : script_(script), options_(options), qr_(qr), plant_(qr.world().plant()), result_(result),
+      seconds_(options.seconds > 0 ? options.seconds : script.seconds), pilot_(qr.board()),
+      preflight_(preflight_plan(script, options)), record_(open_output(options.record_path)),
+      trace_(open_output(options.trace_path)),
+      idle_(static_cast<uint16_t>(qr.parameters().get(wire::ParamId::idle_level))) {
+  // Only a script that asks for it pays for the console's watch over every byte of the line.
+  for (const Event& e : script.events) {
+    if (e.action == Action::console && console_ == nullptr)
+      console_ = std::make_unique<FullLineConsole>(qr.board(), pilot_);
+  }
+  rec_.t_end = 1e9;
+  if (record_ != nullptr) std::fprintf(record_.get(), "%s\n", qr::host::replay_input_header().c_str());
+  if (trace_ != nullptr) write_trace_header(trace_.get());
+  for (const auto& [id, raw] : script.parameters) uploaded_.set(static_cast<uint8_t>(id), raw);
+  for (const auto& [id, raw] : options.parameters) uploaded_.set(static_cast<uint8_t>(id), raw);
+}
+
+void ScenarioFlight::fly() {
+  for (;;) {
+    const double t = static_cast<double>(qr_.world().now_us()) * 1e-6;
+    const uint8_t mode = qr_.view().mode;
+    fly_plan(t);
+    if (phase_ == Phase::manoeuvre && !play_events(t)) break;
+    if (preflight_overdue(t, mode)) break;
+    pilot_.step();
+    if (console_ != nullptr) console_->step();
+
+    if (rec_.t0 >= 0) record_tick(rec_, t, mode, qr_, idle_, airborne_, last_down_speed_);
+    if (trace_ != nullptr) write_trace_line(trace_.get(), t, mode, qr_);
+    if (t >= rec_.t_end) break;
+    recording_ = recording_ || mode == static_cast<uint8_t>(wire::Mode::calibration);
+    if (!qr_.tick()) break;  // the firmware stopped
+    if (record_ != nullptr && recording_) write_replay_input();
+  }
+  record_.reset();
+  trace_.reset();
+  if (!qr_.error().empty() && result_.error.empty()) result_.error = "devboard: " + qr_.error();
+  if (rec_.entered_panic) rec_.panic_cause = first_panic_cause(pilot_.view().debug_text, text_at_t0_);
+}
+
+// The pilot before the manoeuvre: the pre-flight, then off the ground to the hover height and a
+// steady hover, or straight to the manoeuvre on the ground, lift stick down, for a flight that
+// starts there (armed or not).
+void ScenarioFlight::fly_plan(double t) {
+  switch (phase_) {
+    case Phase::preflight:
+      if (!preflight_.step(t, pilot_.view().mode, pilot_)) break;
+      if (script_.start == Start::hover) {
+        enter(Phase::take_off, t);
+      } else {
+        hands_.hold_height = false;
+        begin_manoeuvre(t);
+      }
+      break;
+    case Phase::take_off: {
+      pilot_.set_sticks({hands_.thumb.lift(plant_, kHoverHeight, (t - phase_start_) / 1.0, kPeriodSeconds), 0, 0, 0});
+      const sim::PlantState& s = plant_.state();
+      if (std::abs(-s.position.z - kHoverHeight) < 0.1 && std::abs(s.velocity.z) < 0.1) enter(Phase::settle, t);
+      break;
+    }
+    case Phase::settle:
+      pilot_.set_sticks({hands_.thumb.lift(plant_, kHoverHeight, 1, kPeriodSeconds), 0, 0, 0});
+      if (t - phase_start_ >= kSettleSeconds) begin_manoeuvre(t);
+      break;
+    case Phase::manoeuvre: break;
+  }
+}
+
+void ScenarioFlight::enter(Phase next, double t) {
+  phase_ = next;
+  phase_start_ = t;
+}
+
+// t0: the scored window opens.
+void ScenarioFlight::begin_manoeuvre(double t) {
+  enter(Phase::manoeuvre, t);
+  rec_.t0 = t;
+  rec_.t_end = t + seconds_;
+  airborne_ = plant_.deepest_contact() < 0;
+  text_at_t0_ = pilot_.view().debug_text.size();
+}
+
+// The script's events due by now, the pushes acting, and the sticks the hands hold. False when
+// a turn was refused: the flight ends with that as its error.
+bool ScenarioFlight::play_events(double t) {
+  const double since = t - rec_.t0;
+  while (next_event_ < script_.events.size() && script_.events[next_event_].at_s <= since + 1e-9) {
+    const Event& e = script_.events[next_event_++];
+    apply(e, hands_, pilot_, console_.get(), plant_);
+    if (e.action == Action::param) uploaded_.set(static_cast<uint8_t>(e.param), e.raw);
+    if (std::string note = beyond_full_stick(e, uploaded_); !note.empty()) result_.notes.push_back(std::move(note));
+    const std::string refused = e.action == Action::turn ? qr_.world().start_hand_turn(e.turn) : "";
+    if (!refused.empty()) {
+      result_.error = script_.origin + ":" + std::to_string(e.line) + ": the turn was refused: " + refused;
+      return false;
+    }
+  }
+  apply_pushes(script_, since, plant_);
+  pilot_.set_sticks(hands_.sticks(plant_, qr_.parameters()));
+  return true;
+}
+
+// A flight still short of its manoeuvre after kPreflightLimit fails, naming where it stuck.
+bool ScenarioFlight::preflight_overdue(double t, uint8_t mode) {
+  if (phase_ == Phase::manoeuvre || t <= kPreflightLimit) return false;
+  const char* stuck = phase_ == Phase::preflight  ? preflight_.stage_name()
+                      : phase_ == Phase::take_off ? "take-off"
+                                                  : "settling";
+  result_.error = std::string("preflight did not finish: stuck in ") + stuck + " (mode " + mode_name(mode) + ")";
+  return true;
+}
+
+// The sensor sample this tick ran on and the sticks it read, a line of the replay's input.
+void ScenarioFlight::write_replay_input() {
+  const qr::SensorSample& in = qr_.board().read_sensors();
+  const qr::ControlInput c = qr_.view().controls;
+  std::fprintf(record_.get(), "%u,%d,%d,%d,%d,%d,%d,%u,%u,%d,%d,%d,%d\n", qr_.board().now_us(), in.gyro[0], in.gyro[1],
+               in.gyro[2], in.accel[0], in.accel[1], in.accel[2], in.battery_mv, c.lift, c.roll, c.pitch, c.yaw,
+               in.pressure_pa);
+}
+
+void ScenarioFlight::add_figures() {
+  std::vector<Figure>& f = result_.figures;
+  add_flight_figures(script_, rec_, end_state(qr_), f);
+  add_end_figures(f);
+  if (console_ != nullptr) console_->add_figures(f);
+  if (const auto* devboard = dynamic_cast<const DevboardQr*>(&qr_)) add_instruction_figures(*devboard, f);
+  if (options_.dshot) add_esc_figures(qr_, pilot_.view(), f);
+  if (options_.radio) f.push_back({"radio_flags", static_cast<double>(pilot_.view().radio_flags)});
+}
+
+// How the flight ended: upright or not, the engines, the mode, the battery, where the vehicle
+// is and how fast it goes, and what the pilot's requests met.
+void ScenarioFlight::add_end_figures(std::vector<Figure>& f) {
+  const uint8_t final_mode = qr_.view().mode;
+  result_.final_mode = mode_name(final_mode);
+  uint16_t engines_max = 0;
+  for (uint16_t v : qr_.board().engines().value) engines_max = std::max(engines_max, v);
+  const sim::PlantState& s = plant_.state();
+  const sim::Vec3 body_down = sim::rotate(s.attitude, {0, 0, 1});
+  f.push_back({"final_upright", body_down.z >= std::cos(30 * kRad) ? 1.0 : 0.0});
+  f.push_back({"gyro_scale_error_ppm_max", gyro_scale_error_ppm(qr_)});
+  f.push_back({"engine_saturation_pct", mean(rec_.saturated, rec_.t0, rec_.t_end)});
+  f.push_back({"engines_at_end_max", static_cast<double>(engines_max)});
+  f.push_back({"deadline_misses", static_cast<double>(qr_.view().deadline_misses)});
+  f.push_back({"final_mode", static_cast<double>(final_mode)});
+  f.push_back({"battery_v_end", plant_.battery_volts()});
+  f.push_back({"height_m_end", -s.position.z});
+  f.push_back({"drift_m_end", std::hypot(s.position.x, s.position.y)});
+  f.push_back({"speed_m_s_end", sim::norm(s.velocity)});
+  f.push_back({"requests_given_up", static_cast<double>(pilot_.view().requests_given_up)});
+  f.push_back({"nacks", static_cast<double>(pilot_.view().nacks)});
+}
+
 }  // namespace
 
 double ScenarioResult::figure(const std::string& name) const {
@@ -356,25 +675,16 @@ double ScenarioResult::figure(const std::string& name) const {
 const char* mode_name(uint8_t mode) { return wire::mode_key(static_cast<wire::Mode>(mode)); }
 
 ScenarioResult run_scenario(const ScenarioScript& script, const RunOptions& options) {
-  const auto wall_start = std::chrono::steady_clock::now();
-  const std::clock_t cpu_start = std::clock();
+  const RunClock clock;
   ScenarioResult result;
   result.scenario = script.name;
   result.known_failure = script.known_failure;
   result.vehicle = options.vehicle  ? options.vehicle_name
                    : script.vehicle ? script.vehicle_file
                                     : std::string(sim::default_vehicle_name());
-  const double seconds = options.seconds > 0 ? options.seconds : script.seconds;
-
   VehicleDraw flown;
   const sim::VehicleParams vehicle = vehicle_for(script, options, flown);
-  std::unique_ptr<FlyingQr> qr;
-  if (options.devboard_elf.empty()) {
-    qr = std::make_unique<HostQr>(vehicle, sim::WorldConfig{.seed = options.seed});
-  } else {
-    qr = std::make_unique<DevboardQr>(vehicle, sim::WorldConfig{.seed = options.seed}, options.devboard_elf,
-                                      options.devboard_core_mhz);
-  }
+  const std::unique_ptr<FlyingQr> qr = make_flying_qr(vehicle, options);
   result.firmware = qr->firmware();
   if (options.radio && !options.devboard_elf.empty()) {
     result.error = "--rc crsf flies the host firmware only: the devboard's sensor link carries no radio";
@@ -382,238 +692,10 @@ ScenarioResult run_scenario(const ScenarioScript& script, const RunOptions& opti
   }
   // The simulated motors have the pole pairs the QR's motor_poles parameter says by default.
   if (options.dshot) qr->board().use_dshot(static_cast<uint8_t>(qr->parameters().get(wire::ParamId::motor_poles) / 2));
-  sim::Quadrotor& plant = qr->world().plant();
-  Pilot pilot(qr->board());
-  // Only a script that asks for it pays for the console's watch over every byte of the line.
-  std::unique_ptr<FullLineConsole> console;
-  for (const Event& e : script.events) {
-    if (e.action == Action::console && console == nullptr)
-      console = std::make_unique<FullLineConsole>(qr->board(), pilot);
-  }
-
-  Phase phase = Phase::power_up;
-  double phase_start = 0;
-  int calibration_requests = 0;
-  Hands hands;
-  size_t next_event = 0;
-  FlightRecord rec;
-  rec.t_end = 1e9;
-  bool airborne = false;
-  double last_down_speed = 0;
-  size_t text_at_t0 = 0;  // how much debug text the pilot had heard at t0
-  FILE* record = options.record_path.empty() ? nullptr : std::fopen(options.record_path.c_str(), "w");
-  if (record != nullptr) std::fprintf(record, "%s\n", qr::host::replay_input_header().c_str());
-  bool recording = false;
-  FILE* trace = options.trace_path.empty() ? nullptr : std::fopen(options.trace_path.c_str(), "w");
-  if (trace != nullptr) write_trace_header(trace);
-  const auto idle = static_cast<uint16_t>(qr->parameters().get(wire::ParamId::idle_level));
-  // The parameters as the pilot uploads them, over the defaults: the scenario's, --param, then the
-  // param events as they come (for the notes on what a stick event can ask for).
-  wire::ParameterValues uploaded;
-  for (const auto& [id, raw] : script.parameters) uploaded.set(static_cast<uint8_t>(id), raw);
-  for (const auto& [id, raw] : options.parameters) uploaded.set(static_cast<uint8_t>(id), raw);
-
-  for (;;) {
-    const double t = static_cast<double>(qr->world().now_us()) * 1e-6;
-    const uint8_t mode = qr->view().mode;
-    const ConsoleView& view = pilot.view();
-    const auto enter = [&](Phase next) {
-      phase = next;
-      phase_start = t;
-    };
-    const auto begin_manoeuvre = [&] {
-      enter(Phase::manoeuvre);
-      rec.t0 = t;
-      rec.t_end = t + seconds;
-      airborne = plant.deepest_contact() < 0;
-      text_at_t0 = pilot.view().debug_text.size();
-    };
-
-    // ---- the pilot ----
-    switch (phase) {
-      case Phase::power_up:  // sensors settle, parameters go up
-        if (t - phase_start >= 0.3) {
-          for (const auto& [id, raw] : script.parameters) pilot.set_parameter(id, raw);
-          for (const auto& [id, raw] : options.parameters) pilot.set_parameter(id, raw);
-          if (options.radio) {
-            pilot.set_parameter(wire::ParamId::pilot, 1);
-            pilot.use_radio();
-          }
-          enter(Phase::calibrate);
-        }
-        break;
-      case Phase::calibrate:
-        if (!pilot.request_pending(wire::MessageType::mode_change) && calibration_requests == 0) {
-          pilot.request_mode(wire::Mode::calibration);
-          ++calibration_requests;
-        }
-        if (view.heard && (view.flags & wire::kFlagCalibrated) != 0 && view.mode == wire::Mode::safe &&
-            !pilot.request_pending(wire::MessageType::param_set)) {
-          if (script.start == Start::safe) {
-            hands.hold_height = false;  // on the ground, lift stick down, not armed
-            begin_manoeuvre();
-          } else {
-            pilot.request_mode(wire::Mode::full_control);
-            enter(Phase::arm);
-          }
-        }
-        break;
-      case Phase::arm:
-        if (view.mode != wire::Mode::full_control) break;
-        if (script.start == Start::ground) {
-          hands.hold_height = false;  // armed on the ground, lift stick down
-          begin_manoeuvre();
-        } else {
-          enter(Phase::take_off);
-        }
-        break;
-      case Phase::take_off: {
-        pilot.set_sticks({hands.thumb.lift(plant, kHoverHeight, (t - phase_start) / 1.0, kPeriodSeconds), 0, 0, 0});
-        const sim::PlantState& s = plant.state();
-        if (std::abs(-s.position.z - kHoverHeight) < 0.1 && std::abs(s.velocity.z) < 0.1) enter(Phase::settle);
-        break;
-      }
-      case Phase::settle:
-        pilot.set_sticks({hands.thumb.lift(plant, kHoverHeight, 1, kPeriodSeconds), 0, 0, 0});
-        if (t - phase_start >= kSettleSeconds) begin_manoeuvre();
-        break;
-      case Phase::manoeuvre: break;
-    }
-    if (phase == Phase::manoeuvre) {
-      const double since = t - rec.t0;
-      while (next_event < script.events.size() && script.events[next_event].at_s <= since + 1e-9) {
-        const Event& e = script.events[next_event++];
-        apply(e, hands, pilot, console.get(), plant);
-        if (e.action == Action::param) uploaded.set(static_cast<uint8_t>(e.param), e.raw);
-        if (std::string note = beyond_full_stick(e, uploaded); !note.empty()) result.notes.push_back(std::move(note));
-        const std::string refused = e.action == Action::turn ? qr->world().start_hand_turn(e.turn) : "";
-        if (!refused.empty()) {
-          result.error = script.origin + ":" + std::to_string(e.line) + ": the turn was refused: " + refused;
-          break;
-        }
-      }
-      if (!result.error.empty()) break;
-      apply_pushes(script, since, plant);
-      pilot.set_sticks(hands.sticks(plant, qr->parameters()));
-    }
-    if (phase != Phase::manoeuvre && t > kPreflightLimit) {
-      static const char* const kPhaseNames[] = {"power up", "calibration", "arming", "take-off", "settling"};
-      result.error = std::string("preflight did not finish: stuck in ") + kPhaseNames[static_cast<int>(phase)] +
-                     " (mode " + mode_name(mode) + ")";
-      break;
-    }
-    pilot.step();
-    if (console != nullptr) console->step();
-
-    if (rec.t0 >= 0) record_tick(rec, t, mode, *qr, idle, airborne, last_down_speed);
-    if (trace != nullptr) write_trace_line(trace, t, mode, *qr);
-    if (t >= rec.t_end) break;
-    recording = recording || mode == static_cast<uint8_t>(wire::Mode::calibration);
-    if (!qr->tick()) break;  // the firmware stopped
-    if (record != nullptr && recording) {
-      const qr::SensorSample& in = qr->board().read_sensors();  // what this tick ran on
-      const qr::ControlInput c = qr->view().controls;
-      std::fprintf(record, "%u,%d,%d,%d,%d,%d,%d,%u,%u,%d,%d,%d,%d\n", qr->board().now_us(), in.gyro[0], in.gyro[1],
-                   in.gyro[2], in.accel[0], in.accel[1], in.accel[2], in.battery_mv, c.lift, c.roll, c.pitch, c.yaw,
-                   in.pressure_pa);
-    }
-  }
-  if (trace != nullptr) std::fclose(trace);
-  if (record != nullptr) std::fclose(record);
-  if (!qr->error().empty() && result.error.empty()) result.error = "devboard: " + qr->error();
-  if (rec.entered_panic) rec.panic_cause = first_panic_cause(pilot.view().debug_text, text_at_t0);
-
-  // ---- what only the end knows ----
-  EndState end;
-  end.battery_panic_volts = qr->parameters().get(wire::ParamId::battery_panic_mv) * 1e-3;
-  end.yaw_rate_setpoint = qr->view().yaw_rate_setpoint_e3 * 1e-3;
-  {
-    // Where the yaw loop's P term alone would settle, its moment balancing the rotor drag's yaw
-    // damping:  yaw_p (r_sp - r) k_m w_max^2 / 1000 = c_rd l^2 (sum of rotor speeds) r
-    // (thrust units: w_i = e_i^2 / 1000, so a thrust unit is k_m w_max^2 / 1000 of yaw torque,
-    // engine_mixer.hpp; w_max = speed per volt x battery volts).
-    const double yaw_p = qr->parameters().get(wire::ParamId::yaw_p) / 16.0;
-    const sim::VehicleParams& v = plant.vehicle();
-    const double w_max = v.speed_per_volt() * plant.battery_volts();
-    double speeds = 0;
-    for (double w : plant.state().rotor_speed) speeds += w;
-    const double gain = yaw_p * v.torque_coeff * w_max * w_max / 1000;
-    const double damping = v.rotor_drag_coeff * v.arm_m * v.arm_m * speeds;
-    end.yaw_rate_p_only = end.yaw_rate_setpoint * gain / (gain + damping);
-  }
-
-  const double sim_seconds = static_cast<double>(qr->world().now_us()) * 1e-6;
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
-  const uint8_t final_mode = qr->view().mode;
-  result.final_mode = mode_name(final_mode);
-  uint16_t engines_max = 0;
-  for (uint16_t v : qr->board().engines().value) engines_max = std::max(engines_max, v);
-
-  auto& f = result.figures;
-  f.push_back({"sim_seconds", sim_seconds});
-  f.push_back({"wall_seconds", wall});
-  f.push_back({"speedup", sim_seconds / wall});
-  // CPU time of this process: on a machine busy with other work the wall figures understate
-  // what the simulator does; this one does not.
-  const double cpu = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
-  f.push_back({"cpu_seconds", cpu});
-  f.push_back({"speedup_cpu", cpu > 0 ? sim_seconds / cpu : kNotMeasured});
-  f.push_back({"control_hz", static_cast<double>(qr::kControlHz)});
-  f.push_back({"seed", static_cast<double>(options.seed)});
-  f.push_back({"mass_scale", flown.mass});
-  f.push_back({"inertia_scale", flown.inertia});
-  f.push_back({"motor_tau_ms", flown.motor_tau});
-  f.push_back({"noise_scale", flown.noise});
-  f.push_back({"vibration_scale", flown.vibration});
-  add_flight_figures(script, rec, end, f);
-
-  const sim::Vec3 body_down = sim::rotate(plant.state().attitude, {0, 0, 1});
-  f.push_back({"final_upright", body_down.z >= std::cos(30 * kRad) ? 1.0 : 0.0});
-  {
-    // The firmware divides each axis by 1 + ppm 1e-6 (qr/core/chain/sensor_units.hpp); what is
-    // left of the IMU's drawn factor is the error it flies with.
-    constexpr wire::ParamId kScale[3] = {wire::ParamId::gyro_scale_x_ppm, wire::ParamId::gyro_scale_y_ppm,
-                                         wire::ParamId::gyro_scale_z_ppm};
-    double worst = 0;
-    for (int i = 0; i < 3; ++i) {
-      const double corrected = 1 + qr->parameters().get(kScale[i]) * 1e-6;
-      worst = std::max(worst, std::abs(qr->world().imu().gyro_scale()[i] / corrected - 1) * 1e6);
-    }
-    f.push_back({"gyro_scale_error_ppm_max", worst});
-  }
-  f.push_back({"engine_saturation_pct", mean(rec.saturated, rec.t0, rec.t_end)});
-  f.push_back({"engines_at_end_max", static_cast<double>(engines_max)});
-  f.push_back({"deadline_misses", static_cast<double>(qr->view().deadline_misses)});
-  f.push_back({"final_mode", static_cast<double>(final_mode)});
-  f.push_back({"battery_v_end", plant.battery_volts()});
-  f.push_back({"height_m_end", -plant.state().position.z});
-  f.push_back({"drift_m_end", std::hypot(plant.state().position.x, plant.state().position.y)});
-  f.push_back({"speed_m_s_end", sim::norm(plant.state().velocity)});
-  f.push_back({"requests_given_up", static_cast<double>(pilot.view().requests_given_up)});
-  f.push_back({"nacks", static_cast<double>(pilot.view().nacks)});
-  if (console != nullptr) console->add_figures(f);
-  if (const auto* devboard = dynamic_cast<const DevboardQr*>(qr.get())) add_instruction_figures(*devboard, f);
-  if (options.dshot) {
-    // The ESCs' side (frames taken, frames dropped for their check) and the front engine's speed
-    // as the QR last reported it from the ESC's answer, beside the truth.
-    // Special command frames (the lost-model beacon, docs/safety.md rule 18), and those that came
-    // while an ESC's motor ran (none may).
-    uint64_t accepted = 0, rejected = 0, commands = 0, commands_turning = 0;
-    for (const SimEsc& esc : qr->board().escs()) {
-      accepted += esc.accepted();
-      rejected += esc.rejected();
-      commands += esc.commands();
-      commands_turning += esc.commands_while_turning();
-    }
-    f.push_back({"esc_frames", static_cast<double>(accepted)});
-    f.push_back({"esc_frames_rejected", static_cast<double>(rejected)});
-    f.push_back({"esc_commands", static_cast<double>(commands)});
-    f.push_back({"esc_commands_while_turning", static_cast<double>(commands_turning)});
-    f.push_back({"rpm_front_reported", static_cast<double>(pilot.view().rpm[0])});
-    f.push_back({"rpm_front_truth", std::abs(plant.state().rotor_speed[0]) * 60.0 / (2.0 * M_PI)});
-  }
-  if (options.radio) f.push_back({"radio_flags", static_cast<double>(pilot.view().radio_flags)});
-
+  ScenarioFlight flight(script, options, *qr, result);
+  flight.fly();
+  add_run_figures(clock, *qr, options, flown, result.figures);
+  flight.add_figures();
   judge(script, result);
   return result;
 }
