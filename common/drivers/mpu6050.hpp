@@ -43,7 +43,7 @@
 //     kLostAfterFailures failed reads in a row and the sensor is lost: counted, and the driver
 //     starts over from the reset at once.
 // The bus is assumed to be the driver's alone: poll() answers for the transfer this driver began.
-// Two devices on one wire need a bus that gives each its own view (or steps them in turn).
+// Two devices on one wire: each driver is given its own channel of a shared bus (I2cChannel, i2c.hpp).
 //
 // Sources (facts only, no code): InvenSense "MPU-6000 and MPU-6050 Register Map and Descriptions"
 // RM-MPU-6000A-00 rev. 4.2 (RM): section 3 (the register map; reset values 0x00 but PWR_MGMT_1 0x40
