@@ -50,7 +50,7 @@ class Flight {
     apply_parameters();
   }
 
-  // ---- the scheduler's side ----
+  // ---- the scheduler's side (SchedulerContext, scheduler.hpp) ----
   // The distinct task sets (modes that run the same rows share one: kCompiledSets).
   static constexpr uint8_t kSetCount = kCompiledSetCount;
   static constexpr Task<Flight> task(uint8_t id) { return flight_tasks<Flight>()[id]; }

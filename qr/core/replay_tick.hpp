@@ -26,38 +26,26 @@ struct NoCycles {
   static uint32_t now() { return 0; }
 };
 
-template <class Chain, class Cycles = NoCycles>
-class ChainReplay {
+// Test mode as a scheduler context (SchedulerContext, scheduler.hpp): the rows' side of the
+// flight's task table (flight_tasks.hpp) over the chain, and the scheduler's side, which has no
+// line, no engines and no LEDs.
+template <class Chain>
+class ReplayContext {
  public:
   using ChainType = Chain;
   static constexpr uint8_t kTaskCount = kFlightTaskCount;
-  static const Task<ChainReplay> (&kTasks)[kFlightTaskCount];
+  static const Task<ReplayContext> (&kTasks)[kFlightTaskCount];
 
-  // `first_time_us`: the QR clock of the first recorded tick. The flight's tick t runs at
-  // (t + 1) periods (its first kick comes one period after start), so the recording's time says
-  // which tick of the flight it starts at, and the divided rows fall on the ticks they fell on
-  // in flight.
-  static constexpr uint32_t kPeriodUs = 1000000u / Chain::kSampleHz;  // the recording's rate
+  explicit ReplayContext(Chain& chain) : chain_(chain) { enter(wire::Mode::calibration); }
 
-  explicit ChainReplay(Chain& chain, uint32_t first_time_us = kPeriodUs)
-      : chain_(chain), scheduler_{board_, *this, SchedulerLimits{}, first_tick(first_time_us)} {
-    enter(wire::Mode::calibration);
-  }
-
-  // One recorded tick; returns the mode the tick ran in.
-  wire::Mode tick(const SensorSample& sample, const ControlInput& sticks) {
-    board_.sample = sample;
-    sticks_ = sticks;
-    const wire::Mode ran_in = mode_;
-    scheduler_.tick();
-    return ran_in;
-  }
-  const SchedulerStats<kTaskCount>& stats() const { return scheduler_.stats(); }
+  // The recorded sticks for the next tick (the sample comes through the scheduler, begin_tick).
+  void take_sticks(const ControlInput& sticks) { sticks_ = sticks; }
+  wire::Mode mode() const { return mode_; }
 
   // ---- the rows' side (flight_tasks.hpp) ----
   Chain& chain() { return chain_; }
   void run_link() { chain_.set_pilot(sticks_); }
-  void run_filter() { chain_.filter(board_.sample); }
+  void run_filter() { chain_.filter(sample_); }
   void run_calibration() {
     if (chain_.calibrate()) enter(wire::Mode::full_control);
   }
@@ -73,10 +61,10 @@ class ChainReplay {
 
   // ---- the scheduler's side ----
   static constexpr uint8_t kSetCount = kModeCount;  // the flight's sets, one per mode
-  static constexpr Task<ChainReplay> task(uint8_t id) { return flight_tasks<ChainReplay>()[id]; }
-  static constexpr TaskSet task_set(uint8_t set) { return flight_modes<ChainReplay>()[set].tasks; }
+  static constexpr Task<ReplayContext> task(uint8_t id) { return flight_tasks<ReplayContext>()[id]; }
+  static constexpr TaskSet task_set(uint8_t set) { return flight_modes<ReplayContext>()[set].tasks; }
   uint8_t current_set() const { return index(mode_); }
-  void begin_tick(uint32_t, const SensorSample&) {}
+  void begin_tick(uint32_t, const SensorSample& sample) { sample_ = sample; }
   uint32_t rx_space() const { return 0; }
   void receive(uint8_t) {}
   bool tx_peek(uint8_t&) const { return false; }
@@ -85,6 +73,51 @@ class ChainReplay {
   uint8_t leds() const { return 0; }
   bool running() const { return true; }
   void account(const TickReport&, const SchedulerStats<kTaskCount>&) {}
+
+ private:
+  // Test mode's door: the recording's modes follow each other (calibration, then full control).
+  void enter(wire::Mode m) {
+    const FlightMode<ReplayContext>& row = flight_modes<ReplayContext>()[index(m)];
+    const wire::Mode from = mode_;
+    mode_ = m;
+    chain_.fly(row.sources);
+    if (row.enter != nullptr) row.enter(*this, from);
+  }
+
+  Chain& chain_;
+  SensorSample sample_;
+  ControlInput sticks_;
+  wire::Mode mode_ = wire::Mode::calibration;
+};
+
+template <class Chain>
+const Task<ReplayContext<Chain>> (&ReplayContext<Chain>::kTasks)[kFlightTaskCount] =
+    kFlightTaskTable<ReplayContext<Chain>>;
+
+// A recording, one tick at a time, through the flight's scheduler over test mode's context.
+template <class Chain, class Cycles = NoCycles>
+class ChainReplay {
+ public:
+  using Context = ReplayContext<Chain>;
+
+  // `first_time_us`: the QR clock of the first recorded tick. The flight's tick t runs at
+  // (t + 1) periods (its first kick comes one period after start), so the recording's time says
+  // which tick of the flight it starts at, and the divided rows fall on the ticks they fell on
+  // in flight.
+  static constexpr uint32_t kPeriodUs = 1000000u / Chain::kSampleHz;  // the recording's rate
+
+  explicit ChainReplay(Chain& chain, uint32_t first_time_us = kPeriodUs)
+      : context_(chain), scheduler_{board_, context_, SchedulerLimits{}, first_tick(first_time_us)} {}
+
+  // One recorded tick; returns the mode the tick ran in.
+  wire::Mode tick(const SensorSample& sample, const ControlInput& sticks) {
+    board_.sample = sample;
+    context_.take_sticks(sticks);
+    const wire::Mode ran_in = context_.mode();
+    scheduler_.tick();
+    return ran_in;
+  }
+  const SchedulerStats<Context::kTaskCount>& stats() const { return scheduler_.stats(); }
 
  private:
   // Time is the recording's: one tick a kick, never late.
@@ -105,25 +138,10 @@ class ChainReplay {
 
   static uint32_t first_tick(uint32_t time_us) { return time_us < kPeriodUs ? 0 : time_us / kPeriodUs - 1; }
 
-  // Test mode's door: the recording's modes follow each other (calibration, then full control).
-  void enter(wire::Mode m) {
-    const FlightMode<ChainReplay>& row = flight_modes<ChainReplay>()[index(m)];
-    const wire::Mode from = mode_;
-    mode_ = m;
-    chain_.fly(row.sources);
-    if (row.enter != nullptr) row.enter(*this, from);
-  }
-
-  Chain& chain_;
-  ControlInput sticks_;
-  wire::Mode mode_ = wire::Mode::calibration;
+  Context context_;
   ReplayBoard board_;
-  Scheduler<ReplayBoard, ChainReplay> scheduler_;  // last: it reads the rows at construction
+  Scheduler<ReplayBoard, Context> scheduler_;  // last: it reads the rows at construction
 };
-
-template <class Chain, class Cycles>
-const Task<ChainReplay<Chain, Cycles>> (&ChainReplay<Chain, Cycles>::kTasks)[kFlightTaskCount] =
-    kFlightTaskTable<ChainReplay<Chain, Cycles>>;
 
 template <class Chain>
 struct ReplayColumn {

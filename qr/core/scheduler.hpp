@@ -5,23 +5,17 @@
 //   3. finish: account timing, choose the next task set, and when the tick ran into the next
 //      kick count a deadline miss and skip that period instead of piling up.
 //
-// The context owns the flight data and the task table:
-//   static constexpr uint8_t kTaskCount, kSetCount;
-//   static constexpr Task<Context> task(uint8_t id);     row `id` of the task table
-//   static constexpr TaskSet task_set(uint8_t set);      the rows set `set` runs, in order
-//   uint8_t current_set() const;                         the set for the current mode
-//   void begin_tick(uint32_t now_us, const SensorSample&);
-//   uint32_t rx_space() const;  void receive(uint8_t);      bytes from the serial line
-//   bool tx_peek(uint8_t&) const;  void tx_pop();            bytes for the serial line
-//   EngineCommand engines() const;  uint8_t leds() const;  bool running() const;
-//   void account(const TickReport&, const SchedulerStats<kTaskCount>&);   after each tick
+// The context (the flight, flight.hpp; test mode's replay, replay_tick.hpp) owns the flight data
+// and the task table: what the scheduler calls on it is the `SchedulerContext` concept below, as
+// what it calls on a board is the `Board` concept (board.hpp).
 //
-// The optional exchanges, each only where both the board (board.hpp) and the context have it: a
-// board that counts its serial receiver's overruns (OverrunCountingBoard) tells the context
-// (serial_overruns) before the bytes; a board with a radio receiver (RadioBoard) gives the context
-// (radio_space, radio_receive) a bounded number of radio bytes per tick; after the engines, a board
-// whose ESCs answer (EscAnswerBoard) hands their answers to the context (esc_answers), and one
-// whose ESCs take commands (EscCommandBoard) is sent the context's (esc_command_due).
+// The optional exchanges, each only where both the board (board.hpp) and the context have it (a
+// concept on each side: OverrunCountingBoard and OverrunCountingContext, ...): a board that counts
+// its serial receiver's overruns tells the context (serial_overruns) before the bytes; a board with
+// a radio receiver (RadioBoard) gives the context (radio_space, radio_receive) a bounded number of
+// radio bytes per tick; after the engines, a board whose ESCs answer (EscAnswerBoard) hands their
+// answers to the context (esc_answers), and one whose ESCs take commands (EscCommandBoard) is sent
+// the context's (esc_command_due).
 //
 // Every rate, phase and budget is in the context's task table (task.hpp); no task divides itself.
 //
@@ -76,7 +70,60 @@ struct SchedulerStats {
   uint16_t cpu_load_permille = 0;  // busy share of the last full second
 };
 
-template <Board B, class Context>
+namespace detail {
+template <class A, class B>
+inline constexpr bool same_type = false;
+template <class A>
+inline constexpr bool same_type<A, A> = true;
+}  // namespace detail
+template <class T, class U>
+concept SameAs = detail::same_type<T, U>;
+
+// What the scheduler calls on its context, all of it: the task table and its sets (task.hpp),
+// then the tick's exchanges in the order a tick makes them (the optional ones apart, below).
+template <class C>
+concept SchedulerTables = requires {
+  {C::kTaskCount};  // rows of the task table (first: SchedulerStats<kTaskCount> is made from it)
+  {C::kSetCount};   // task sets
+  { C::task(uint8_t{}) } -> SameAs<Task<C>>;      // row `id` of the task table
+  { C::task_set(uint8_t{}) } -> SameAs<TaskSet>;  // the rows set `set` runs, in order
+};
+template <class C>
+concept SchedulerContext = SchedulerTables<C> &&
+    requires(C& c, const C& cc, uint8_t& byte, const SensorSample& sample, const TickReport& report,
+             const SchedulerStats<C::kTaskCount>& stats) {
+  c.begin_tick(uint32_t{}, sample);           // the kick's time and the latest sample
+  { cc.rx_space() } -> SameAs<uint32_t>;      // bytes from the serial line ...
+  c.receive(uint8_t{});                       // ... one at a time
+  { cc.engines() } -> SameAs<EngineCommand>;  // to the board once the rows ran
+  { cc.leds() } -> SameAs<uint8_t>;           // ...
+  { cc.tx_peek(byte) } -> SameAs<bool>;       // bytes for the serial line ...
+  c.tx_pop();                                 // ... each taken once the board took it
+  c.account(report, stats);                   // the tick's figures, when it finished
+  { cc.current_set() } -> SameAs<uint8_t>;    // the set for the mode now: the next tick's
+  { cc.running() } -> SameAs<bool>;           // false: tick() says the context stopped
+};
+
+// The optional exchanges, on the context's side (the board's are board.hpp's).
+template <class C>
+concept OverrunCountingContext = requires(C& c) {
+  c.serial_overruns(uint32_t{});
+};
+template <class C>
+concept RadioContext = requires(C& c, const C& cc) {
+  {cc.radio_space()};
+  c.radio_receive(uint8_t{});
+};
+template <class C>
+concept EscAnswerContext = requires(C& c, const EscAnswers& answers) {
+  c.esc_answers(answers);
+};
+template <class C>
+concept EscCommandContext = requires(const C& c) {
+  {c.esc_command_due()};
+};
+
+template <Board B, SchedulerContext Context>
 class Scheduler {
  public:
   static constexpr uint8_t kTaskCount = Context::kTaskCount;
@@ -117,7 +164,7 @@ class Scheduler {
  private:
   void run(uint32_t now_us) {
     context_.begin_tick(now_us, board_.read_sensors());
-    if constexpr (OverrunCountingBoard<B> && requires(Context & c) { c.serial_overruns(uint32_t{}); }) {
+    if constexpr (OverrunCountingBoard<B> && OverrunCountingContext<Context>) {
       context_.serial_overruns(board_.rx_overruns());
     }
     uint8_t byte = 0;
@@ -125,7 +172,7 @@ class Scheduler {
       if (!board_.serial_read(byte)) break;
       context_.receive(byte);
     }
-    if constexpr (RadioBoard<B> && requires(Context & c) { c.radio_receive(uint8_t{}); }) {
+    if constexpr (RadioBoard<B> && RadioContext<Context>) {
       for (uint16_t n = 0; n < limits_.radio_bytes_per_tick && context_.radio_space() > 0; ++n) {
         if (!board_.radio_read(byte)) break;
         context_.radio_receive(byte);
@@ -136,11 +183,11 @@ class Scheduler {
     running_ = kNoTask;
 
     board_.set_engines(context_.engines());
-    if constexpr (EscAnswerBoard<B> && requires(Context & c, const EscAnswers& a) { c.esc_answers(a); }) {
+    if constexpr (EscAnswerBoard<B> && EscAnswerContext<Context>) {
       EscAnswers answers;
       if (board_.esc_answers(answers)) context_.esc_answers(answers);
     }
-    if constexpr (EscCommandBoard<B> && requires(const Context& c) { c.esc_command_due(); }) {
+    if constexpr (EscCommandBoard<B> && EscCommandContext<Context>) {
       const uint8_t command = context_.esc_command_due();
       if (command != 0) board_.esc_command(command);
     }

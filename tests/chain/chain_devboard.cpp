@@ -24,7 +24,7 @@ int main() {
     const qr::CycleStats& c = stats.task[i];
     if (c.count == 0) continue;
     rv32virt::puts("{\"task\":\"");
-    rv32virt::puts(Replay::kTasks[i].name);
+    rv32virt::puts(Replay::Context::kTasks[i].name);
     rv32virt::puts("\",\"calls\":");
     rv32virt::put_u32(c.count);
     rv32virt::puts(",\"instr_avg\":");

@@ -351,6 +351,9 @@ TEST(FlightChain, LiftZeroKeepsTheEnginesStopped) {
   EXPECT_TRUE(p.run(Mode::manual, sample_at(0, 0), sticks(0, 1000, 1000, 1000), 10).all_zero());
 }
 
+// Test mode is a scheduler context (scheduler.hpp) over any chain, as the flight is.
+static_assert(SchedulerContext<ReplayContext<FixedChain>> && SchedulerContext<ReplayContext<DoubleChain>>);
+
 // The flight build against the double reference, tick by tick over the synthetic flight (the
 // same data as the replay recording). The bounds are the measured worst differences, rounded up.
 TEST(FlightChain, FixedFollowsDoubleOverTheSyntheticFlight) {

@@ -6,7 +6,10 @@
 #include <vector>
 
 #include <qr/boards/fake/fake_board.hpp>
+#include <qr/core/flight.hpp>
 #include <qr/core/scheduler.hpp>
+
+#include "scripted_chain.hpp"
 
 namespace qr {
 namespace {
@@ -75,6 +78,78 @@ constexpr Task<TestContext> kTestTasks[TestContext::kTaskCount] = {
      [](const TestContext& c) { return c.slow_divider; }},
 };
 constexpr Task<TestContext> TestContext::task(uint8_t id) { return kTestTasks[id]; }
+
+// What the scheduler calls on its context is the SchedulerContext concept: the test's context and
+// the flight are contexts; a context without any one of the calls is not.
+static_assert(SchedulerContext<TestContext>);
+static_assert(SchedulerContext<Flight<test::ScriptedChain>>);
+
+// Every call the scheduler makes, to take away one at a time (deleted in a derived context).
+template <class Self>
+struct EveryCall {
+  static constexpr uint8_t kTaskCount = 1;
+  static constexpr uint8_t kSetCount = 1;
+  static constexpr uint8_t kSet[] = {0};
+  static constexpr Task<Self> task(uint8_t) {
+    return {"row", [](Self&) {}, 1, 0, 100};
+  }
+  static constexpr TaskSet task_set(uint8_t) { return {kSet, 1}; }
+  void begin_tick(uint32_t, const SensorSample&) {}
+  uint32_t rx_space() const { return 0; }
+  void receive(uint8_t) {}
+  EngineCommand engines() const { return {}; }
+  uint8_t leds() const { return 0; }
+  bool tx_peek(uint8_t&) const { return false; }
+  void tx_pop() {}
+  void account(const TickReport&, const SchedulerStats<kTaskCount>&) {}
+  uint8_t current_set() const { return 0; }
+  bool running() const { return true; }
+};
+struct Whole : EveryCall<Whole> {};
+static_assert(SchedulerContext<Whole>);
+struct WithoutLeds : EveryCall<WithoutLeds> {
+  uint8_t leds() const = delete;
+};
+static_assert(!SchedulerContext<WithoutLeds>, "a context that cannot say its LEDs");
+struct WithoutTaskTable : EveryCall<WithoutTaskTable> {
+  static constexpr Task<WithoutTaskTable> task(uint8_t) = delete;
+};
+static_assert(!SchedulerContext<WithoutTaskTable>);
+struct WithoutAccount : EveryCall<WithoutAccount> {
+  void account(const TickReport&, const SchedulerStats<kTaskCount>&) = delete;
+};
+static_assert(!SchedulerContext<WithoutAccount>);
+struct WithoutRunning : EveryCall<WithoutRunning> {
+  bool running() const = delete;
+};
+static_assert(!SchedulerContext<WithoutRunning>);
+// The task table's rows must be the context's own: rows of another context's table are not.
+struct AnothersRows : EveryCall<AnothersRows> {
+  static constexpr Task<Whole> task(uint8_t) { return Whole::task(0); }
+};
+static_assert(!SchedulerContext<AnothersRows>);
+// A context with no members at all, and one missing only its set count (no deletion needed).
+struct Nothing {};
+static_assert(!SchedulerContext<Nothing>);
+struct NoSetCount {
+  static constexpr uint8_t kTaskCount = 1;
+  static constexpr uint8_t kSet[] = {0};
+  static constexpr Task<NoSetCount> task(uint8_t) {
+    return {"row", [](NoSetCount&) {}, 1, 0, 100};
+  }
+  static constexpr TaskSet task_set(uint8_t) { return {kSet, 1}; }
+  void begin_tick(uint32_t, const SensorSample&) {}
+  uint32_t rx_space() const { return 0; }
+  void receive(uint8_t) {}
+  EngineCommand engines() const { return {}; }
+  uint8_t leds() const { return 0; }
+  bool tx_peek(uint8_t&) const { return false; }
+  void tx_pop() {}
+  void account(const TickReport&, const SchedulerStats<kTaskCount>&) {}
+  uint8_t current_set() const { return 0; }
+  bool running() const { return true; }
+};
+static_assert(!SchedulerContext<NoSetCount>, "a context that does not say how many task sets it has");
 
 struct SchedulerTest : ::testing::Test {
   FakeBoard board;
