@@ -62,6 +62,21 @@ concept Board = requires(B& b, uint8_t& byte, EngineCommand engines) {
   {b.log_area()};
 };
 
+// Optional: the sensors on an I2C bus the core drives itself (common/drivers/i2c.hpp), an MPU-6050
+// and an MS5611 sharing it, read by sensor_stage.hpp in place of read_sensors().
+//   using I2cBus = ...                 the shared bus' type (drivers::I2cSharedBus, 2 channels)
+//   I2cBus& i2c()                      the bus
+//   bool sensors_on_i2c() const        false: read_sensors() gives the sample after all (the
+//                                      simulator's --sensors direct)
+//   uint16_t battery_mv()              the battery's reading (its ADC is not on the bus)
+template <class B>
+concept I2cBoard = requires(B& b, const B& cb) {
+  typename B::I2cBus;
+  {b.i2c()};
+  {cb.sensors_on_i2c()};
+  {b.battery_mv()};
+};
+
 // Optional: a radio receiver on a second serial line (CRSF, common/drivers/crsf.hpp).
 //   bool radio_read(uint8_t&)          one received byte if there is one
 template <class B>

@@ -31,6 +31,7 @@
 #include <qr/core/board.hpp>
 #include <qr/core/cycle_stats.hpp>
 #include <qr/core/rate.hpp>
+#include <qr/core/sensor_stage.hpp>
 #include <qr/core/task.hpp>
 
 namespace qr {
@@ -160,10 +161,16 @@ class Scheduler {
   // Where that index lives: a fault handler, which cannot be handed the scheduler, reads it there.
   const volatile uint8_t* running_task_cell() const { return &running_; }
   uint16_t divider(uint8_t id) const { return slots_[id].divider; }
+  // A board with its sensors on an I2C bus: the drivers, their faults and the stage's cycles.
+  const SensorStage<B>& sensor_stage() const { return sensors_; }
 
  private:
   void run(uint32_t now_us) {
-    context_.begin_tick(now_us, board_.read_sensors());
+    if constexpr (I2cBoard<B>) {
+      context_.begin_tick(now_us, sensors_.read(board_, now_us));  // the drivers' (sensor_stage.hpp)
+    } else {
+      context_.begin_tick(now_us, board_.read_sensors());
+    }
     if constexpr (OverrunCountingBoard<B> && OverrunCountingContext<Context>) {
       context_.serial_overruns(board_.rx_overruns());
     }
@@ -295,6 +302,7 @@ class Scheduler {
 
   B& board_;
   Context& context_;
+  [[no_unique_address]] SensorStage<B> sensors_;
   SchedulerLimits limits_;
   uint32_t seen_kick_;
   uint8_t next_set_;
