@@ -1,6 +1,7 @@
 #include <sim/world.hpp>
 
 #include <algorithm>
+#include <cmath>
 
 namespace sim {
 namespace {
@@ -37,7 +38,10 @@ uint32_t World::next_step_us(uint64_t time_us) const {
   if (now_us_ % coarse != 0 || now_us_ + coarse > time_us) return step_us_;
   // The barometer acts at the first fine step at or after its instant; a coarse step must end
   // exactly there or before it, so the reading is taken where the fine steps would take it.
-  if (barometer_.next_event_us() <= now_us_ + coarse - step_us_) return step_us_;
+  if (ms5611_ == nullptr && barometer_.next_event_us() <= now_us_ + coarse - step_us_) return step_us_;
+  if (const std::optional<uint64_t> at = chip_pressure_instant_us(); at && *at <= now_us_ + coarse - step_us_) {
+    return step_us_;
+  }
   if (!plant_.clear_of_ground_for(static_cast<double>(coarse) * 1e-6)) return step_us_;
   return coarse;
 }
@@ -50,8 +54,28 @@ void World::advance_to(uint64_t time_us) {
     if (hand_) hold();
     ++steps_taken_;
     // The barometer converts over milliseconds on its own clock, not at the kicks.
-    barometer_.step(now_us_, altitude_m());
+    if (ms5611_ == nullptr) {
+      barometer_.step(now_us_, altitude_m());
+    } else {
+      sense_pressure();
+    }
   }
+}
+
+std::optional<uint64_t> World::chip_pressure_instant_us() const {
+  if (ms5611_ == nullptr) return std::nullopt;
+  const std::optional<double> at = ms5611_->next_sample_s();
+  if (!at) return std::nullopt;
+  return *at <= 0 ? 0 : static_cast<uint64_t>(std::ceil(*at * 1e6));
+}
+
+// The MS5611 model's conversion takes its pressure at the first step at or after its middle.
+void World::sense_pressure() {
+  const std::optional<uint64_t> at = chip_pressure_instant_us();
+  if (!at || now_us_ < *at) return;
+  const double t_s = static_cast<double>(now_us_) * 1e-6;
+  ms5611_->sense(t_s, barometer_.sense_pa(now_us_, altitude_m(), ms5611_->noise_scale()),
+                 barometer_.temperature_c(now_us_));
 }
 
 std::string World::start_hand_turn(const HandTurnSpec& spec) {
@@ -85,9 +109,17 @@ VibrationSample World::vibration() const {
 SensorReading World::sample() {
   SensorReading out;
   const Vec3 specific_force = hand_ ? held_specific_force(plant_.state().attitude, kGravity) : plant_.specific_force();
-  out.imu = imu_.sample(plant_.state().rate, specific_force, vibration());
+  if (mpu_ != nullptr) {
+    const ImuSense body = imu_.sense(plant_.state().rate, specific_force, vibration());
+    // Mounted flat, X forward: chip (x, y, z) = body (x, -y, -z).
+    const ImuSense chip{{body.rate.x, -body.rate.y, -body.rate.z},
+                        {body.specific_force.x, -body.specific_force.y, -body.specific_force.z}};
+    mpu_->sample(static_cast<double>(now_us_) * 1e-6, chip, barometer_.temperature_c(now_us_));
+  } else {
+    out.imu = imu_.sample(plant_.state().rate, specific_force, vibration());
+    out.pressure_pa = barometer_.pressure_pa();
+  }
   out.battery_mv = battery_sensor_.read_mv(plant_.battery_volts());
-  out.pressure_pa = barometer_.pressure_pa();
   return out;
 }
 

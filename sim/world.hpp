@@ -13,6 +13,8 @@
 #include <sim/battery_sensor.hpp>
 #include <sim/hand_turn.hpp>
 #include <sim/imu.hpp>
+#include <sim/mpu6050_model.hpp>
+#include <sim/ms5611_model.hpp>
 #include <sim/quadrotor.hpp>
 #include <sim/vibration.hpp>
 
@@ -53,8 +55,23 @@ class World {
   std::string start_hand_turn(const HandTurnSpec& spec);
   bool held() const { return hand_.has_value(); }
 
-  // What the sensors read at this instant.
+  // What the sensors read at this instant. In chip mode (use_chips) the IMU's reading goes to the
+  // MPU-6050 model's registers instead, and the reading's imu and pressure_pa stay zero.
   SensorReading sample();
+
+  // Chip mode: the plant's sensors behind register-level chips that a firmware's drivers read over
+  // I2C (the sim board's --sensors drivers). From now on sample() feeds the MPU-6050 model what
+  // the IMU senses (Imu::sense, the very draws Imu::sample takes) in the chip's axes: it is mounted
+  // flat, component side up, its X arrow forward, so chip (x, y, z) is body (x, -y, -z), the
+  // firmware driver's default (common/drivers/mpu6050.hpp, kChipFlatXForward); its die at the
+  // board's temperature. The MS5611 model senses the pressure (Barometer::sense_pa, at its
+  // conversion's noise scale) at the middle of each conversion its driver starts, instead of the
+  // barometer's own 20 ms cycle (Barometer::step is not called). The chips must outlive the world.
+  void use_chips(Mpu6050Model& mpu, Ms5611Model& ms5611) {
+    mpu_ = &mpu;
+    ms5611_ = &ms5611;
+  }
+  bool chip_mode() const { return mpu_ != nullptr; }
   // The vibration the IMU would add now (for tests and plots).
   VibrationSample vibration() const;
 
@@ -72,6 +89,12 @@ class World {
   BatterySensor battery_sensor_;
   Barometer barometer_;
   std::optional<HandTurn> hand_;
+  Mpu6050Model* mpu_ = nullptr;
+  Ms5611Model* ms5611_ = nullptr;
+  // Chip mode: the barometer's instant, the middle of the MS5611 model's conversion (in whole
+  // microseconds, rounded up), or none.
+  std::optional<uint64_t> chip_pressure_instant_us() const;
+  void sense_pressure();
   Vec3 held_position_;
   // The step that may be taken from now towards `time_us`.
   uint32_t next_step_us(uint64_t time_us) const;

@@ -118,7 +118,7 @@ constexpr uint32_t transfer_time_ns(const I2cTransfer& t, uint32_t hz) {
 // such a bus needs whatever moves the bits: each channel's transfer queued, on the wire, finished;
 // the wire's side takes the oldest queued transfer when the wire is free (next()) and hands back
 // its result (finish()). A board's I2C interrupt handler would do the wire's side; the simulator's
-// bus does it in simulated time (the sim board, qr/boards/sim/).
+// bus does it in simulated time (qr/boards/sim/sim_i2c_bus.hpp).
 template <class B>
 concept I2cSharedBus = requires(B& bus, uint8_t channel, const I2cTransfer& transfer, I2cReply& reply) {
   {B::kChannels};

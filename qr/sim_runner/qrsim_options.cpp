@@ -21,9 +21,9 @@ constexpr const char* kUsage = R"(usage:
         [--devboard [ELF] [--core-mhz N] | --rc crsf] [--esc dshot]
   qrsim --scenario NAME|FILE [--seconds S] [--seed N] [--vehicle FILE] [--param NAME=VALUE]...
         [--no-noise] [--trace FILE.csv] [--record FILE.csv] [--json] [--devboard [ELF] [--core-mhz N]]
-        [--rc crsf] [--esc dshot]
+        [--rc crsf] [--esc dshot] [--sensors drivers|direct]
   qrsim --sweep NAME|FILE [--seeds N] [--no-draw] [--seed N] [--seconds S] [--vehicle FILE]
-        [--param NAME=VALUE]... [--rc crsf] [--esc dshot]
+        [--param NAME=VALUE]... [--rc crsf] [--esc dshot] [--sensors drivers|direct]
   qrsim --soak [--seconds S] [--seed N]
   qrsim --replay IN.csv --out OUT.csv [--double] [--param NAME=VALUE]...
   qrsim --list
@@ -86,6 +86,10 @@ rate) flying in a simulated IN4073-class quadrotor.
   --esc dshot      scenario, sweep, serve: the engines go out as bidirectional DShot frames to
                    simulated ESCs (a bad check keeps the last good value) that answer with the
                    rotor speed's eRPM, reported in telemetry as RPM
+  --sensors WHICH  scenario, sweep: drivers: the MPU-6050 and the MS5611 are register-level chips
+                   on the board's I2C bus (400 kHz, in simulated time), read by the firmware's own
+                   drivers, a sample one tick old; direct (the default): the board hands the
+                   firmware the plant's sample (docs/drivers.md)
   --replay IN      run a recording through the flight chain tick by tick (test mode) and write
                    every tick's estimates, controller outputs and engines to --out OUT
                    (docs/replay.md); --double runs the double-precision reference chain
@@ -268,6 +272,14 @@ bool esc(Arguments& args, CommandLine& line) {
   return true;
 }
 
+bool sensors(Arguments& args, CommandLine& line) {
+  const char* v = args.value();
+  if (v == nullptr || (std::strcmp(v, "drivers") != 0 && std::strcmp(v, "direct") != 0))
+    return refuse("--sensors is drivers or direct");
+  line.flight.sensor_drivers = std::strcmp(v, "drivers") == 0;
+  return true;
+}
+
 // A parameter goes to whichever flies: the scenario's pilot uploads it, the replay's chain runs with it.
 bool parameter(Arguments& args, CommandLine& line) {
   const char* v = args.value();
@@ -314,6 +326,7 @@ constexpr Option kOptions[] = {
     {"--double", reference_double},
     {"--rc", radio},
     {"--esc", esc},
+    {"--sensors", sensors},
     {"--param", parameter},
 };
 

@@ -415,6 +415,18 @@ double gyro_scale_error_ppm(FlyingQr& qr) {
 // the QR last reported it from the ESC's answer, beside the truth. Special command frames (the
 // lost-model beacon, docs/safety.md rule 18), and those that came while an ESC's motor ran (none
 // may).
+// --sensors drivers: how the drivers read the chips over the board's bus.
+void add_sensor_figures(FlyingQr& qr, double sim_s, std::vector<Figure>& f) {
+  const qr::SensorStage<SimBoard>* stage = qr.sensor_stage();
+  if (stage == nullptr) return;
+  f.push_back({"imu_samples", static_cast<double>(stage->imu().samples())});
+  f.push_back({"imu_faults", static_cast<double>(stage->imu().total_faults())});
+  f.push_back({"baro_readings", static_cast<double>(stage->barometer().readings())});
+  f.push_back({"baro_faults", static_cast<double>(stage->barometer().total_faults())});
+  f.push_back({"i2c_busy_pct", sim_s > 0 ? 100.0 * 1e-9 * static_cast<double>(qr.board().i2c().busy_ns()) / sim_s : 0});
+  f.push_back({"sensor_stage_ns_mean", static_cast<double>(stage->stats().mean())});
+}
+
 void add_esc_figures(FlyingQr& qr, const ConsoleView& heard, std::vector<Figure>& f) {
   uint64_t accepted = 0, rejected = 0, commands = 0, commands_turning = 0;
   for (const SimEsc& esc : qr.board().escs()) {
@@ -623,7 +635,7 @@ bool ScenarioFlight::preflight_overdue(double t, uint8_t mode) {
 
 // The sensor sample this tick ran on and the sticks it read, a line of the replay's input.
 void ScenarioFlight::write_replay_input() {
-  const qr::SensorSample& in = qr_.board().read_sensors();
+  const qr::SensorSample in = qr_.sensor_sample();
   const qr::ControlInput c = qr_.view().controls;
   std::fprintf(record_.get(), "%u,%d,%d,%d,%d,%d,%d,%u,%u,%d,%d,%d,%d\n", qr_.board().now_us(), in.gyro[0], in.gyro[1],
                in.gyro[2], in.accel[0], in.accel[1], in.accel[2], in.battery_mv, c.lift, c.roll, c.pitch, c.yaw,
@@ -637,6 +649,7 @@ void ScenarioFlight::add_figures() {
   if (console_ != nullptr) console_->add_figures(f);
   if (const auto* devboard = dynamic_cast<const DevboardQr*>(&qr_)) add_instruction_figures(*devboard, f);
   if (options_.dshot) add_esc_figures(qr_, pilot_.view(), f);
+  if (options_.sensor_drivers) add_sensor_figures(qr_, static_cast<double>(qr_.world().now_us()) * 1e-6, f);
   if (options_.radio) f.push_back({"radio_flags", static_cast<double>(pilot_.view().radio_flags)});
 }
 
@@ -690,6 +703,11 @@ ScenarioResult run_scenario(const ScenarioScript& script, const RunOptions& opti
     result.error = "--rc crsf flies the host firmware only: the devboard's sensor link carries no radio";
     return result;
   }
+  if (options.sensor_drivers && !options.devboard_elf.empty()) {
+    result.error = "--sensors drivers flies the host firmware only: the devboard's sensor link carries samples";
+    return result;
+  }
+  if (options.sensor_drivers) qr->board().use_sensor_drivers();
   // The simulated motors have the pole pairs the QR's motor_poles parameter says by default.
   if (options.dshot) qr->board().use_dshot(static_cast<uint8_t>(qr->parameters().get(wire::ParamId::motor_poles) / 2));
   ScenarioFlight flight(script, options, *qr, result);

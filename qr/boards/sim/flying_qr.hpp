@@ -14,6 +14,7 @@
 #include <qr/boards/sim/sim_qr.hpp>
 #include <qr/core/flight_types.hpp>
 #include <qr/core/observable_readers.hpp>
+#include <qr/core/sensor_stage.hpp>
 #include <sim/world.hpp>
 
 namespace qrsim {
@@ -46,6 +47,10 @@ class FlyingQr {
   virtual const wire::ParameterValues& parameters() const = 0;
   virtual const char* firmware() const = 0;  // "host" or "rv32"
   virtual std::string error() const { return {}; }
+  // The sample the firmware's last tick ran on (the board's, or the drivers' with --sensors drivers).
+  virtual qr::SensorSample sensor_sample() { return board().read_sensors(); }
+  // The host firmware's sensor stage (its drivers and their figures); null for the devboard's.
+  virtual const qr::SensorStage<SimBoard>* sensor_stage() const { return nullptr; }
 };
 
 // The host build of the firmware, in this process.
@@ -76,6 +81,8 @@ class HostQr final : public FlyingQr {
   }
   const wire::ParameterValues& parameters() const override { return qr_->firmware.parameters(); }
   const char* firmware() const override { return "host"; }
+  qr::SensorSample sensor_sample() override { return qr_->firmware.sample(); }
+  const qr::SensorStage<SimBoard>* sensor_stage() const override { return &qr_->scheduler.sensor_stage(); }
 
  private:
   std::unique_ptr<SimQr> qr_;

@@ -53,6 +53,13 @@ uint32_t SimBoard::wait_kick(uint32_t seen) {
   return kick;
 }
 
+void SimBoard::use_sensor_drivers() {
+  sensor_drivers_ = true;
+  i2c_.attach(mpu6050_);
+  i2c_.attach(ms5611_);
+  world_.use_chips(mpu6050_, ms5611_);
+}
+
 bool SimBoard::serial_read(uint8_t& byte) { return to_qr_.receive(world_.now_us() * 1000, byte); }
 
 uint32_t SimBoard::cycles() const {

@@ -16,7 +16,12 @@
 //   engines     plain 0..1000 commands to the plant, or (qrsim --esc dshot) DShot frames to four
 //               simulated ESCs (sim_esc.hpp) that drive the plant and answer with their eRPM, and
 //               take special commands (the lost-model beacon) while stopped;
-//   log_area    128 KiB of RAM, the size of the IN4073 board's log flash.
+//   log_area    128 KiB of RAM, the size of the IN4073 board's log flash;
+//   i2c         (qrsim --sensors drivers) the MPU-6050 and the MS5611 as register-level chips
+//               (sim/mpu6050_model.hpp, ms5611_model.hpp) on one I2C bus at 400 kHz
+//               (sim_i2c_bus.hpp), read by the firmware's own drivers (qr/core/sensor_stage.hpp);
+//               the world feeds the chips what the plant's sensors sense. Without it (direct, the
+//               default) read_sensors() hands the core the plant's sample itself.
 #pragma once
 
 #include <stddef.h>
@@ -31,6 +36,7 @@
 #include <common/requests.hpp>
 #include <qr/boards/sim/serial_line.hpp>
 #include <qr/boards/sim/sim_esc.hpp>
+#include <qr/boards/sim/sim_i2c_bus.hpp>
 #include <qr/core/board.hpp>
 #include <qr/core/rate.hpp>
 #include <sim/world.hpp>
@@ -71,6 +77,18 @@ class SimBoard {
   // A DShot special command for every engine (with --esc dshot; false without, or while an engine
   // turns): each engine's sequencer sends it in place of its next throttle frames.
   bool esc_command(uint8_t command);
+
+  // ---- qr::I2cBoard ----
+  using I2cBus = SimI2cBus;
+  I2cBus& i2c() { return i2c_; }
+  bool sensors_on_i2c() const { return sensor_drivers_; }
+  uint16_t battery_mv() const { return sample_.battery_mv; }
+
+  // The sensors as chips on the I2C bus, read by the firmware's drivers (set before the first tick).
+  void use_sensor_drivers();
+  bool sensor_drivers() const { return sensor_drivers_; }
+  const sim::Mpu6050Model& mpu6050() const { return mpu6050_; }
+  const sim::Ms5611Model& ms5611() const { return ms5611_; }
 
   // ---- the radio's end of the receiver line ----
   void radio_send(const uint8_t* bytes, size_t size) { radio_.insert(radio_.end(), bytes, bytes + size); }
@@ -117,6 +135,12 @@ class SimBoard {
   uint64_t wall_us() const;
 
   sim::World& world_;
+  // The chips powered with the board, at its first instant.
+  sim::Mpu6050Model mpu6050_{sim::Mpu6050Model::kAddressAd0Low, static_cast<double>(world_.now_us()) * 1e-6};
+  sim::Ms5611Model ms5611_{sim::Ms5611Model::kAddressCsbLow, sim::ms5611_example_prom(),
+                           static_cast<double>(world_.now_us()) * 1e-6};
+  SimI2cBus i2c_{world_};
+  bool sensor_drivers_ = false;
   SerialLine to_qr_{1u << 20};  // the PC side's buffer: a USB serial adapter's, large
   SerialLine to_pc_{kTransmitBuffer};
   qr::SensorSample sample_{};
@@ -138,6 +162,7 @@ class SimBoard {
 };
 
 static_assert(qr::Board<SimBoard>);
+static_assert(qr::I2cBoard<SimBoard>);
 
 // A world sample as the firmware's SensorSample.
 qr::SensorSample to_sensor_sample(const sim::SensorReading& reading);
