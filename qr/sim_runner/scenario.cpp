@@ -415,10 +415,16 @@ double gyro_scale_error_ppm(FlyingQr& qr) {
 // the QR last reported it from the ESC's answer, beside the truth. Special command frames (the
 // lost-model beacon, docs/safety.md rule 18), and those that came while an ESC's motor ran (none
 // may).
-// --sensors drivers: how the drivers read the chips over the board's bus.
+// --sensors drivers: how the drivers read the chips over the board's bus (null when direct).
 void add_sensor_figures(FlyingQr& qr, double sim_s, std::vector<Figure>& f) {
   const qr::SensorStage<SimBoard>* stage = qr.sensor_stage();
-  if (stage == nullptr) return;
+  if (stage == nullptr || !qr.board().sensor_drivers()) {
+    for (const char* name :
+         {"imu_samples", "imu_faults", "baro_readings", "baro_faults", "i2c_busy_pct", "sensor_stage_ns_mean"}) {
+      f.push_back({name, kNotMeasured});
+    }
+    return;
+  }
   f.push_back({"imu_samples", static_cast<double>(stage->imu().samples())});
   f.push_back({"imu_faults", static_cast<double>(stage->imu().total_faults())});
   f.push_back({"baro_readings", static_cast<double>(stage->barometer().readings())});
@@ -647,9 +653,9 @@ void ScenarioFlight::add_figures() {
   add_flight_figures(script_, rec_, end_state(qr_), f);
   add_end_figures(f);
   if (console_ != nullptr) console_->add_figures(f);
+  add_sensor_figures(qr_, static_cast<double>(qr_.world().now_us()) * 1e-6, f);
   if (const auto* devboard = dynamic_cast<const DevboardQr*>(&qr_)) add_instruction_figures(*devboard, f);
   if (options_.dshot) add_esc_figures(qr_, pilot_.view(), f);
-  if (options_.sensor_drivers) add_sensor_figures(qr_, static_cast<double>(qr_.world().now_us()) * 1e-6, f);
   if (options_.radio) f.push_back({"radio_flags", static_cast<double>(pilot_.view().radio_flags)});
 }
 

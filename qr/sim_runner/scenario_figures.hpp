@@ -106,6 +106,14 @@ inline constexpr FigureSpec kFigureTable[] = {
     {"line_answer_ms_max", "the latest answer, measured the same way"},
     {"line_answer_bound_ms", "two control periods plus the QR's 32-byte transmit buffer and the ack's 5 bytes"},
     {"line_answers_late", "answers later than line_answer_bound_ms"},
+    // With the sensors read by the firmware's drivers (qrsim --sensors drivers); null
+    // when direct or on the devboard.
+    {"imu_samples", "MPU-6050 bursts the driver read good"},
+    {"imu_faults", "the MPU-6050 driver's faults, every kind"},
+    {"baro_readings", "MS5611 pressures the driver compensated"},
+    {"baro_faults", "the MS5611 driver's faults, every kind"},
+    {"i2c_busy_pct", "share of the flight's time the I2C wire was busy"},
+    {"sensor_stage_ns_mean", "the sensor stage's mean time a tick on this host, ns"},
 };
 
 constexpr bool is_figure(std::string_view name) {
