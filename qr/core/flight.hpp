@@ -5,10 +5,11 @@
 // pilot's messages, the chain turns the sample into engine wishes, the safety machine has the
 // last word on the engines, and telemetry and the logs report what happened.
 //
-// The jobs around the tick each have a unit of their own: applying requests
-// (flight_requests.hpp), composing telemetry (flight_telemetry.hpp), assembling log lines
-// (flight_log_lines.hpp) and the LED map (led_map.hpp). `Chain` is the signal chain, any type
-// that satisfies SignalChain (signal_chain.hpp): FixedChain in flight, a scripted one in tests.
+// The jobs around the tick each have a unit of their own: the link task (flight_link.hpp),
+// applying requests (flight_requests.hpp), composing telemetry (flight_telemetry.hpp),
+// assembling log lines (flight_log_lines.hpp) and the LED map (led_map.hpp). `Chain` is the
+// signal chain, any type that satisfies SignalChain (signal_chain.hpp): FixedChain in flight, a
+// scripted one in tests.
 #pragma once
 
 #include <stddef.h>
@@ -207,11 +208,11 @@ class Flight {
   // The one door of mode changes (issue 31). Whatever made the safety machine change the mode
   // since the last tick's door (a request, the sticks or the radio's switches read by the link,
   // a finished calibration, a watchdog) takes effect here, once: the mode's sources go to the
-  // chain, and its entry action runs, told the mode the vehicle flew in before. It opens in the
-  // link task, after every request the tick reads (only the link's sending is left) and before the
-  // chain runs, so a tick that reads a lift change already flies the stick (rule 15); what the
-  // calibration or the safety task changes takes effect at the next tick's door, a control period
-  // later (the safety machine's own engine limits apply at once).
+  // chain, and its entry action runs, told the mode the vehicle flew in before. Its one caller is
+  // the link task (run_link, flight_link.hpp), after every request the tick reads (only the link's
+  // sending is left) and before the chain runs, so a tick that reads a lift change already flies
+  // the stick (rule 15); what the calibration or the safety task changes takes effect at the next
+  // tick's door, a control period later (the safety machine's own engine limits apply at once).
   void change_modes() {
     static_assert(modes_in_order<Flight>(), "kFlightModes: row i is mode i");
     static_assert(rows_in_task_order<Flight>(), "kFlightTaskTable: row i is task i");
@@ -306,3 +307,4 @@ const Task<Flight<Chain>> (&Flight<Chain>::kTasks)[kFlightTaskCount] = kFlightTa
 }  // namespace qr
 
 #include <qr/core/flight_impl.hpp>
+#include <qr/core/flight_link.hpp>

@@ -1,6 +1,6 @@
 // Applying the pilot's messages: each decoded message from the console becomes a change to the
 // flight (sticks, a mode request, a parameter, a log command); for a request, `answer` is what
-// its ack or nack says. Included by flight_impl.hpp.
+// its ack or nack says. Included by flight_link.hpp, whose on_frame() dispatches to it.
 #pragma once
 
 #include <common/messages.hpp>
