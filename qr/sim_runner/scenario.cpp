@@ -709,11 +709,11 @@ ScenarioResult run_scenario(const ScenarioScript& script, const RunOptions& opti
     result.error = "--rc crsf flies the host firmware only: the devboard's sensor link carries no radio";
     return result;
   }
-  if (options.sensor_drivers && !options.devboard_elf.empty()) {
+  if (options.sensor_drivers && options.sensors_chosen && !options.devboard_elf.empty()) {
     result.error = "--sensors drivers flies the host firmware only: the devboard's sensor link carries samples";
     return result;
   }
-  if (options.sensor_drivers) qr->board().use_sensor_drivers();
+  if (options.sensor_drivers && options.devboard_elf.empty()) qr->board().use_sensor_drivers();
   // The simulated motors have the pole pairs the QR's motor_poles parameter says by default.
   if (options.dshot) qr->board().use_dshot(static_cast<uint8_t>(qr->parameters().get(wire::ParamId::motor_poles) / 2));
   ScenarioFlight flight(script, options, *qr, result);

@@ -46,10 +46,12 @@ struct RunOptions {
   bool radio = false;
   // --esc dshot: the engines go out as DShot frames to simulated ESCs that answer with their eRPM.
   bool dshot = false;
-  // --sensors drivers: the MPU-6050 and the MS5611 are register-level chips on the sim board's I2C
-  // bus, read by the firmware's drivers (qr/core/sensor_stage.hpp); direct (false): the board hands
-  // the firmware the plant's sample.
-  bool sensor_drivers = false;
+  // --sensors drivers (the default): the MPU-6050 and the MS5611 are register-level chips on the sim
+  // board's I2C bus, read by the firmware's drivers (qr/core/sensor_stage.hpp); direct (false): the
+  // board hands the firmware the plant's sample. The devboard flies direct (its sensor link carries
+  // samples) unless drivers were asked for by name, which is refused.
+  bool sensor_drivers = true;
+  bool sensors_chosen = false;  // --sensors was given
 };
 
 struct Figure {

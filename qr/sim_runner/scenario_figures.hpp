@@ -106,7 +106,7 @@ inline constexpr FigureSpec kFigureTable[] = {
     {"line_answer_ms_max", "the latest answer, measured the same way"},
     {"line_answer_bound_ms", "two control periods plus the QR's 32-byte transmit buffer and the ack's 5 bytes"},
     {"line_answers_late", "answers later than line_answer_bound_ms"},
-    // With the sensors read by the firmware's drivers (qrsim --sensors drivers); null
+    // With the sensors read by the firmware's drivers (qrsim --sensors drivers, the default); null
     // when direct or on the devboard.
     {"imu_samples", "MPU-6050 bursts the driver read good"},
     {"imu_faults", "the MPU-6050 driver's faults, every kind"},
