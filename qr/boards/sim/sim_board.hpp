@@ -17,11 +17,11 @@
 //               simulated ESCs (sim_esc.hpp) that drive the plant and answer with their eRPM, and
 //               take special commands (the lost-model beacon) while stopped;
 //   log_area    128 KiB of RAM, the size of the IN4073 board's log flash;
-//   i2c         (qrsim --sensors drivers) the MPU-6050 and the MS5611 as register-level chips
+//   i2c         (use_sensor_drivers: qrsim --sensors drivers, its default) the MPU-6050 and the MS5611 as register-level chips
 //               (sim/mpu6050_model.hpp, ms5611_model.hpp) on one I2C bus at 400 kHz
 //               (sim_i2c_bus.hpp), read by the firmware's own drivers (qr/core/sensor_stage.hpp);
-//               the world feeds the chips what the plant's sensors sense. Without it (direct, the
-//               default) read_sensors() hands the core the plant's sample itself.
+//               the world feeds the chips what the plant's sensors sense. Without it (--sensors
+//               direct, serve mode, the soak) read_sensors() hands the core the plant's sample.
 #pragma once
 
 #include <stddef.h>

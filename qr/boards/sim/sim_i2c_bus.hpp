@@ -43,7 +43,7 @@ class SimI2cBus {
   bool begin(uint8_t channel, const drivers::I2cTransfer& transfer);
   drivers::I2cResult poll(uint8_t channel, drivers::I2cReply& reply);
 
-  // Figures: the transfers run, and the wire's busy time, in all and in the busiest period.
+  // Figures: the transfers run, the wire's busy time in all, the addresses nobody answered.
   uint64_t transfers() const { return transfers_; }
   uint64_t busy_ns() const { return busy_ns_; }
   uint64_t address_nacks() const { return address_nacks_; }
