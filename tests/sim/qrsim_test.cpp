@@ -317,4 +317,20 @@ TEST(Qrsim, ScenarioNotesGoToStderr) {
       << stderr_only.out;
 }
 
+// --sensors: the host firmware reads the chips through its drivers by default (the JSON's sensor
+// figures are numbers), --sensors direct gives it the plant's sample (they are null), and any
+// other word is refused.
+TEST(Qrsim, SensorsThroughTheDriversByDefaultOrDirect) {
+  const QrsimRun drivers = run_qrsim("--scenario step-roll --json");
+  EXPECT_EQ(drivers.status, 0) << drivers.out;
+  EXPECT_EQ(drivers.out.find("\"imu_samples\": null"), std::string::npos) << drivers.out;
+  EXPECT_NE(drivers.out.find("\"imu_faults\": 1,"), std::string::npos) << drivers.out;
+  const QrsimRun direct = run_qrsim("--scenario step-roll --json --sensors direct");
+  EXPECT_EQ(direct.status, 0) << direct.out;
+  EXPECT_NE(direct.out.find("\"imu_samples\": null"), std::string::npos) << direct.out;
+  const QrsimRun bad = run_qrsim("--scenario step-roll --sensors spi");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.out.find("--sensors is drivers or direct"), std::string::npos) << bad.out;
+}
+
 }  // namespace
