@@ -22,6 +22,7 @@
 #include <common/parameter_table.hpp>
 #include <common/request_dedup.hpp>
 #include <qr/core/board.hpp>
+#include <qr/core/control_rate.hpp>
 #include <qr/core/flight_log.hpp>
 #include <qr/core/flight_tasks.hpp>
 #include <qr/core/flight_telemetry.hpp>
@@ -29,7 +30,6 @@
 #include <qr/core/lost_model_beacon.hpp>
 #include <qr/core/observable_streams.hpp>
 #include <qr/core/radio_receiver.hpp>
-#include <qr/core/rate.hpp>
 #include <qr/core/safety.hpp>
 #include <qr/core/scheduler.hpp>
 #include <qr/core/signal_chain.hpp>

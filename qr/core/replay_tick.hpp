@@ -13,9 +13,9 @@
 
 #include <common/mode.hpp>
 #include <qr/core/board.hpp>
+#include <qr/core/control_rate.hpp>
 #include <qr/core/flight_tasks.hpp>
 #include <qr/core/flight_types.hpp>
-#include <qr/core/rate.hpp>
 #include <qr/core/scheduler.hpp>
 
 namespace qr {

@@ -1,6 +1,6 @@
 #include <stddef.h>
 
-#include <qr/core/rate.hpp>
+#include <qr/core/control_rate.hpp>
 #include <qr/core/safety.hpp>
 
 namespace qr {

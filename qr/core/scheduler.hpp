@@ -29,8 +29,8 @@
 #include <stdint.h>
 
 #include <qr/core/board.hpp>
+#include <qr/core/control_rate.hpp>
 #include <qr/core/cycle_stats.hpp>
-#include <qr/core/rate.hpp>
 #include <qr/core/sensor_stage.hpp>
 #include <qr/core/task.hpp>
 

@@ -26,8 +26,8 @@
 #include <common/drivers/mpu6050.hpp>
 #include <common/drivers/ms5611.hpp>
 #include <qr/core/board.hpp>
+#include <qr/core/control_rate.hpp>
 #include <qr/core/cycle_stats.hpp>
-#include <qr/core/rate.hpp>
 #include <qr/core/sensor_scale.hpp>
 
 namespace qr {

@@ -3,9 +3,9 @@
 #include <algorithm>
 
 #include <common/frame.hpp>
-#include <qr/sim_runner/scoring.hpp>
-#include <qr/core/rate.hpp>
+#include <qr/core/control_rate.hpp>
 #include <qr/core/transmit_queue.hpp>
+#include <qr/sim_runner/scoring.hpp>
 
 namespace qrsim {
 namespace {

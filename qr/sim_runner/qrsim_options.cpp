@@ -10,7 +10,7 @@
 #include <cstring>
 
 #include <common/parameter_table.hpp>
-#include <qr/core/rate.hpp>
+#include <qr/core/control_rate.hpp>
 #include <qr/sim_runner/text_fields.hpp>
 
 namespace qrsim {

@@ -1,6 +1,6 @@
 #include <qr/sim_runner/scenario_score.hpp>
 
-#include <qr/core/rate.hpp>
+#include <qr/core/control_rate.hpp>
 #include <qr/core/safety.hpp>
 
 #include <algorithm>

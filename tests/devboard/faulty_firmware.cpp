@@ -9,7 +9,7 @@
 #include <qr/boards/rv32virt/fail_safe.hpp>
 #include <qr/boards/rv32virt/virt_board.hpp>
 #include <qr/core/chain/fixed_numbers.hpp>
-#include <qr/core/rate.hpp>
+#include <qr/core/control_rate.hpp>
 #include <qr/core/scheduler.hpp>
 
 namespace {

@@ -407,7 +407,7 @@ TEST(Layering, TheChainsUpwardIncludesAreForbiddenByName) {
                              "qr/core/scheduler.hpp", "qr/core/replay_tick.hpp", "qr/core/task.hpp"}) {
     EXPECT_TRUE(chain_may_not_include(header)) << header;
   }
-  for (const char* header : {"qr/core/flight_types.hpp", "qr/core/board.hpp", "qr/core/rate.hpp",
+  for (const char* header : {"qr/core/flight_types.hpp", "qr/core/board.hpp", "qr/core/control_rate.hpp",
                              "qr/core/sensor_scale.hpp", "qr/core/chain/flight_chain.hpp", "common/mode.hpp"}) {
     EXPECT_FALSE(chain_may_not_include(header)) << header;
   }

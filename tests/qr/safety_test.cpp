@@ -3,7 +3,7 @@
 
 #include <cstdio>
 
-#include <qr/core/rate.hpp>
+#include <qr/core/control_rate.hpp>
 #include <qr/core/safety.hpp>
 
 namespace qr {

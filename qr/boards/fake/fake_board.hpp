@@ -8,7 +8,7 @@
 #include <vector>
 
 #include <qr/core/board.hpp>
-#include <qr/core/rate.hpp>
+#include <qr/core/control_rate.hpp>
 
 namespace qr::fake {
 

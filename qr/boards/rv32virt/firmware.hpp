@@ -5,8 +5,8 @@
 #include <common/task_names.hpp>
 #include <qr/boards/rv32virt/fail_safe.hpp>
 #include <qr/boards/rv32virt/virt_board.hpp>
+#include <qr/core/control_rate.hpp>
 #include <qr/core/flight.hpp>
-#include <qr/core/rate.hpp>
 #include <qr/core/scheduler.hpp>
 
 namespace rv32virt {

@@ -38,7 +38,7 @@
 #include <qr/boards/sim/sim_esc.hpp>
 #include <qr/boards/sim/sim_i2c_bus.hpp>
 #include <qr/core/board.hpp>
-#include <qr/core/rate.hpp>
+#include <qr/core/control_rate.hpp>
 #include <sim/world.hpp>
 
 namespace qrsim {

@@ -15,7 +15,7 @@
 
 #include <qr/core/chain/chain_parameters.hpp>
 #include <qr/core/chain/numeric.hpp>
-#include <qr/core/rate.hpp>
+#include <qr/core/control_rate.hpp>
 
 namespace qr::chain {
 

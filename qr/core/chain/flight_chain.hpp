@@ -39,8 +39,8 @@
 #include <qr/core/chain/sensor_calibration.hpp>
 #include <qr/core/chain/sensor_filters.hpp>
 #include <qr/core/chain/vertical_controller.hpp>
+#include <qr/core/control_rate.hpp>
 #include <qr/core/flight_types.hpp>
-#include <qr/core/rate.hpp>
 
 namespace qr {
 
