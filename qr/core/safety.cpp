@@ -193,8 +193,12 @@ NackReason SafetyMachine::radio_switches(bool arm, Mode wanted, const Situation&
     if (rule(mode_).flies) enter_panic(PanicCause::disarmed, s);  // the pilot's emergency stop
     return NackReason::none;
   }
-  if (!arm_seen_off_ || mode_ != Mode::safe) return NackReason::none;
-  arm_seen_off_ = false;  // one movement, one attempt: a refused arming waits for the next
+  if (!arm_seen_off_) return NackReason::none;
+  // One movement, one attempt: a refused arming waits for the next, and so does a movement made
+  // outside safe (the emergency stop's switch put back on while the panic lands the vehicle must
+  // not start the engines once it is down).
+  arm_seen_off_ = false;
+  if (mode_ != Mode::safe) return NackReason::none;
   return request(index(wanted), s);
 }
 

@@ -760,6 +760,31 @@ TEST_F(RadioSafety, TheArmSwitchOffIsAnEmergencyStop) {
   EXPECT_EQ(machine.mode(), Mode::safe);
 }
 
+// The emergency stop's switch put back on while the vehicle comes down is no arming once it is
+// down: the movement came outside safe and is spent, or the engines would start on their own in
+// front of whoever walks up to a landed vehicle.
+TEST_F(RadioSafety, AnArmSwitchBackOnDuringAPanicDoesNotArmAfterIt) {
+  at(1000);
+  frames(false);
+  frames(true, 21000, Mode::full_control);
+  ASSERT_EQ(machine.mode(), Mode::full_control);
+  fly(500);
+  frames(true, 100000, Mode::full_control);
+  frames(false, 7000, Mode::full_control);
+  ASSERT_EQ(machine.mode(), Mode::panic);
+  s.controls = ControlInput{};             // the lift down, the sticks neutral
+  frames(true, 7000, Mode::full_control);  // the switch back on at once, the vehicle still coming down
+  s.landed = true;
+  s.engines = EngineCommand{};  // down: the engines stopped
+  frames(true, limits.panic_hold_us + limits.panic_ramp_us + 1000000, Mode::full_control);
+  ASSERT_EQ(machine.mode(), Mode::safe);
+  frames(true, 1000000, Mode::full_control);  // down, the switch still on, the sticks neutral
+  EXPECT_EQ(machine.mode(), Mode::safe) << "a movement made outside safe arms nothing";
+  frames(false);
+  frames(true, 21000, Mode::full_control);
+  EXPECT_EQ(machine.mode(), Mode::full_control) << "moved off and on again in safe: arms";
+}
+
 TEST_F(RadioSafety, WhileTheRadioFliesThePcCannotArmButKeepsTheAbortKey) {
   at(1000);
   s.requester = Pilot::pc;
