@@ -188,8 +188,7 @@ template <class Chain>
 int fly(const std::vector<Row>& rows, std::ostream& out, const wire::ParameterValues& parameters) {
   Chain chain;
   chain.set_parameters(parameters);
-  ChainReplay<Chain> test_mode(chain,
-                                      rows.empty() ? ChainReplay<Chain>::kPeriodUs : rows.front().time_us);
+  ChainReplay<Chain> test_mode(chain, rows.empty() ? ChainReplay<Chain>::kPeriodUs : rows.front().time_us);
   out << replay_output_header() << "\n";
   std::string line;
   for (const Row& row : rows) {

@@ -21,9 +21,9 @@
 
 #include <common/frame_parser.hpp>
 #include <common/messages.hpp>
+#include <qr/boards/sim/sim_board.hpp>
 #include <qr/sim_runner/pilot.hpp>
 #include <qr/sim_runner/scenario.hpp>
-#include <qr/boards/sim/sim_board.hpp>
 
 namespace qrsim {
 

@@ -11,8 +11,8 @@
 #include <stdint.h>
 
 #include <common/frame_parser.hpp>
-#include <qr/sim_runner/radio_transmitter.hpp>
 #include <qr/boards/sim/sim_board.hpp>
+#include <qr/sim_runner/radio_transmitter.hpp>
 
 namespace qrsim {
 

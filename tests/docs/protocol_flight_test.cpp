@@ -21,8 +21,8 @@
 #include <common/messages.hpp>
 #include <common/observable_table.hpp>
 #include <common/parameter_table.hpp>
-#include <qr/sim_runner/pilot.hpp>
 #include <qr/boards/sim/sim_qr.hpp>
+#include <qr/sim_runner/pilot.hpp>
 #include <sim/vehicle.hpp>
 
 #include "frame_judge.hpp"

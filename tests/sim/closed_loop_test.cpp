@@ -12,8 +12,8 @@
 #include <utility>
 #include <vector>
 
-#include <qr/sim_runner/scenario.hpp>
 #include <qr/host/replay.hpp>
+#include <qr/sim_runner/scenario.hpp>
 #include <sim/random.hpp>
 
 #include "sim_test_support.hpp"

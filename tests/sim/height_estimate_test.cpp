@@ -17,9 +17,9 @@
 #include <sstream>
 #include <string>
 
-#include <qr/sim_runner/pilot.hpp>
 #include <qr/boards/sim/sim_qr.hpp>
 #include <qr/host/replay.hpp>
+#include <qr/sim_runner/pilot.hpp>
 
 namespace {
 

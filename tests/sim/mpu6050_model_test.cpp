@@ -356,11 +356,10 @@ TEST(Mpu6050Model, AFifoNotReadInTimeOverflowsLosingTheOldestBytes) {
   // Records that differ: the gyro's y and z grow with k.
   const auto truth = [](int k) { return sim::ImuSense{{0, 0.5 + 0.01 * k, -0.5 - 0.01 * k}, {0, 0, -kG}}; };
   // 85 records of 12 bytes are 1020 bytes; the 86th makes 1032, and the 8 oldest are lost.
-  std::vector<uint8_t> first;
-  for (int k = 1; k <= 85; ++k) {
-    mpu.sample(kAwake + k * 1e-3, truth(k), 25.0);
-    if (k == 1) first = read_burst(mpu, kAccelXoutH, kDataBytes, kAwake + 1e-3);
-  }
+  mpu.sample(kAwake + 1e-3, truth(1), 25.0);
+  const std::vector<uint8_t> first = read_burst(mpu, kAccelXoutH, kDataBytes, kAwake + 1e-3);
+  ASSERT_EQ(first.size(), size_t{kDataBytes});
+  for (int k = 2; k <= 85; ++k) mpu.sample(kAwake + k * 1e-3, truth(k), 25.0);
   EXPECT_EQ(fifo_count(mpu, 0.19), 1020);
   EXPECT_EQ(read_reg(mpu, kIntStatus, 0.19), 0);
   mpu.sample(kAwake + 0.086, truth(86), 25.0);
