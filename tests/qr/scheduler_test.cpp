@@ -9,6 +9,7 @@
 #include <qr/core/flight.hpp>
 #include <qr/core/scheduler.hpp>
 
+#include "every_call_context.hpp"
 #include "scripted_chain.hpp"
 
 namespace qr {
@@ -84,27 +85,8 @@ constexpr Task<TestContext> TestContext::task(uint8_t id) { return kTestTasks[id
 static_assert(SchedulerContext<TestContext>);
 static_assert(SchedulerContext<Flight<test::ScriptedChain>>);
 
-// Every call the scheduler makes, to take away one at a time (deleted in a derived context).
-template <class Self>
-struct EveryCall {
-  static constexpr uint8_t kTaskCount = 1;
-  static constexpr uint8_t kSetCount = 1;
-  static constexpr uint8_t kSet[] = {0};
-  static constexpr Task<Self> task(uint8_t) {
-    return {"row", [](Self&) {}, 1, 0, 100};
-  }
-  static constexpr TaskSet task_set(uint8_t) { return {kSet, 1}; }
-  void begin_tick(uint32_t, const SensorSample&) {}
-  uint32_t rx_space() const { return 0; }
-  void receive(uint8_t) {}
-  EngineCommand engines() const { return {}; }
-  uint8_t leds() const { return 0; }
-  bool tx_peek(uint8_t&) const { return false; }
-  void tx_pop() {}
-  void account(const TickReport&, const SchedulerStats<kTaskCount>&) {}
-  uint8_t current_set() const { return 0; }
-  bool running() const { return true; }
-};
+// Every call the scheduler makes (every_call_context.hpp), to take away one at a time.
+using test_context::EveryCall;
 struct Whole : EveryCall<Whole> {};
 static_assert(SchedulerContext<Whole>);
 struct WithoutLeds : EveryCall<WithoutLeds> {
@@ -131,24 +113,7 @@ static_assert(!SchedulerContext<AnothersRows>);
 // A context with no members at all, and one missing only its set count (no deletion needed).
 struct Nothing {};
 static_assert(!SchedulerContext<Nothing>);
-struct NoSetCount {
-  static constexpr uint8_t kTaskCount = 1;
-  static constexpr uint8_t kSet[] = {0};
-  static constexpr Task<NoSetCount> task(uint8_t) {
-    return {"row", [](NoSetCount&) {}, 1, 0, 100};
-  }
-  static constexpr TaskSet task_set(uint8_t) { return {kSet, 1}; }
-  void begin_tick(uint32_t, const SensorSample&) {}
-  uint32_t rx_space() const { return 0; }
-  void receive(uint8_t) {}
-  EngineCommand engines() const { return {}; }
-  uint8_t leds() const { return 0; }
-  bool tx_peek(uint8_t&) const { return false; }
-  void tx_pop() {}
-  void account(const TickReport&, const SchedulerStats<kTaskCount>&) {}
-  uint8_t current_set() const { return 0; }
-  bool running() const { return true; }
-};
+struct NoSetCount : test_context::EveryCallButTheSetCount<NoSetCount> {};
 static_assert(!SchedulerContext<NoSetCount>, "a context that does not say how many task sets it has");
 
 struct SchedulerTest : ::testing::Test {

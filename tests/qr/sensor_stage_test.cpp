@@ -8,6 +8,7 @@
 #include <qr/core/scheduler.hpp>
 #include <qr/core/sensor_stage.hpp>
 #include <tests/common/i2c_two_chips.hpp>
+#include <tests/qr/every_call_context.hpp>
 
 #include <vector>
 
@@ -29,24 +30,8 @@ static_assert(I2cBoard<I2cFakeBoard>);
 static_assert(!I2cBoard<fake::FakeBoard>);
 
 // A context that keeps the samples it was given.
-struct Samples {
-  static constexpr uint8_t kTaskCount = 1;
-  static constexpr uint8_t kSetCount = 1;
-  static constexpr uint8_t kSet[] = {0};
-  static constexpr Task<Samples> task(uint8_t) {
-    return {"row", [](Samples&) {}, 1, 0, 100};
-  }
-  static constexpr TaskSet task_set(uint8_t) { return {kSet, 1}; }
+struct Samples : test_context::EveryCall<Samples> {
   void begin_tick(uint32_t, const SensorSample& s) { seen.push_back(s); }
-  uint32_t rx_space() const { return 0; }
-  void receive(uint8_t) {}
-  EngineCommand engines() const { return {}; }
-  uint8_t leds() const { return 0; }
-  bool tx_peek(uint8_t&) const { return false; }
-  void tx_pop() {}
-  void account(const TickReport&, const SchedulerStats<kTaskCount>&) {}
-  uint8_t current_set() const { return 0; }
-  bool running() const { return true; }
 
   std::vector<SensorSample> seen;
 };
