@@ -19,6 +19,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include <common/drivers/i2c.hpp>
 #include <common/payload_codec.hpp>
 
 namespace simlink {
@@ -26,8 +27,10 @@ namespace simlink {
 inline constexpr uint8_t kStart = 'S';
 
 enum class LinkType : uint8_t {
-  sensors = 0x01,  // simulator -> QR: one control period's samples (the kick)
-  engines = 0x81,  // QR -> simulator: the answer to a sensors frame
+  sensors = 0x01,    // simulator -> QR: one control period's samples (the kick)
+  i2c_done = 0x02,   // simulator -> QR: a transfer on the sensors' I2C bus ended (before a kick)
+  engines = 0x81,    // QR -> simulator: the answer to a sensors frame
+  i2c_begin = 0x82,  // QR -> simulator: a driver began a transfer on the sensors' I2C bus
 };
 
 // Who listens: the QR reads the simulator's types (below 0x80), the simulator the QR's.
@@ -42,12 +45,53 @@ struct SensorFrame {
   uint16_t battery_mv = 0;
   int32_t pressure_pa = 0;
   uint32_t ground_bytes = 0;  // bytes the simulator has put on the QR's ground line so far (wraps)
+  // 1: the sensors are chips on an I2C bus the link carries (the frames below), read by the
+  // firmware's own drivers; gyro, accel and pressure above are then 0 and unused. 0: the samples.
+  uint8_t sensors_on_i2c = 0;
 
   template <class Self, class V>
   static constexpr void fields(Self& s, V& v) {
     v(s.kick), v(s.time_us), v(s.gyro), v(s.accel), v(s.battery_mv), v(s.pressure_pa), v(s.ground_bytes);
+    v(s.sensors_on_i2c);
   }
-  constexpr bool valid() const { return true; }
+  constexpr bool valid() const { return sensors_on_i2c <= 1; }
+};
+
+// The sensors' I2C bus carried over the link (docs/devboard.md, "The sensors' bus"): the board's
+// bus sends each transfer a driver begins (common/drivers/i2c.hpp, a channel per driver) as it is
+// begun; the simulator plays it on its chip models at the tick's time, as the host build's bus
+// does, and sends its end before the first kick at which the wire has finished it. In lock-step
+// the tick's transfers reach the chips at the same simulated instants as on the host, so the
+// drivers read the same bytes.
+struct I2cBeginFrame {
+  static constexpr LinkType kType = LinkType::i2c_begin;
+  uint8_t channel = 0;
+  uint8_t address = 0;
+  uint8_t write[drivers::kI2cMaxWrite] = {};
+  uint8_t write_count = 0;
+  uint8_t read_count = 0;
+
+  template <class Self, class V>
+  static constexpr void fields(Self& s, V& v) {
+    v(s.channel), v(s.address), v(s.write), v(s.write_count), v(s.read_count);
+  }
+  constexpr bool valid() const { return write_count <= drivers::kI2cMaxWrite && read_count <= drivers::kI2cMaxRead; }
+};
+
+struct I2cDoneFrame {
+  static constexpr LinkType kType = LinkType::i2c_done;
+  uint8_t channel = 0;
+  uint8_t result = 0;  // drivers::I2cResult
+  uint8_t count = 0;   // bytes read
+  uint8_t data[drivers::kI2cMaxRead] = {};
+
+  template <class Self, class V>
+  static constexpr void fields(Self& s, V& v) {
+    v(s.channel), v(s.result), v(s.count), v(s.data);
+  }
+  constexpr bool valid() const {
+    return result <= static_cast<uint8_t>(drivers::I2cResult::bus_stuck) && count <= drivers::kI2cMaxRead;
+  }
 };
 
 // What the host build's scorer reads from the firmware's memory, the devboard sends: the engines,
@@ -83,17 +127,20 @@ struct EngineFrame {
 };
 
 // Payload bytes of a type; 0 for a type this end does not listen to (nothing has an empty payload).
+template <class Msg>
+constexpr size_t payload_if(uint8_t type) {
+  return type == static_cast<uint8_t>(Msg::kType) ? wire::wire_size<Msg>() : 0;
+}
 constexpr size_t payload_length(LinkEnd listener, uint8_t type) {
-  if (listener == LinkEnd::qr && type == static_cast<uint8_t>(LinkType::sensors)) return wire::wire_size<SensorFrame>();
-  if (listener == LinkEnd::simulator && type == static_cast<uint8_t>(LinkType::engines))
-    return wire::wire_size<EngineFrame>();
-  return 0;
+  if (listener == LinkEnd::qr) return payload_if<SensorFrame>(type) + payload_if<I2cDoneFrame>(type);
+  return payload_if<EngineFrame>(type) + payload_if<I2cBeginFrame>(type);
 }
 
 inline constexpr size_t kMaxLinkPayload = 64;
 inline constexpr size_t kLinkOverhead = 3;  // start, type, check
 inline constexpr size_t kMaxLinkFrame = kMaxLinkPayload + kLinkOverhead;
 static_assert(wire::wire_size<EngineFrame>() <= kMaxLinkPayload && wire::wire_size<SensorFrame>() <= kMaxLinkPayload);
+static_assert(wire::wire_size<I2cBeginFrame>() <= kMaxLinkPayload && wire::wire_size<I2cDoneFrame>() <= kMaxLinkPayload);
 
 // CRC-8 of the wire (crc8.hpp) over a frame's type and payload.
 uint8_t check(const uint8_t* type_and_payload, size_t length);

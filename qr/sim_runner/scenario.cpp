@@ -411,28 +411,33 @@ double gyro_scale_error_ppm(FlyingQr& qr) {
   return worst;
 }
 
-// The ESCs' side (frames taken, frames dropped for their check) and the front engine's speed as
-// the QR last reported it from the ESC's answer, beside the truth. Special command frames (the
-// lost-model beacon, docs/safety.md rule 18), and those that came while an ESC's motor ran (none
-// may).
 // --sensors drivers: how the drivers read the chips over the board's bus (null when direct).
+double i2c_busy_pct(FlyingQr& qr, double sim_s) {
+  return sim_s > 0 ? 100.0 * 1e-9 * static_cast<double>(qr.board().i2c().busy_ns()) / sim_s : 0;
+}
+
+// The devboard's drivers run on the board, out of the simulator's sight: only the bus is measured.
 void add_sensor_figures(FlyingQr& qr, double sim_s, std::vector<Figure>& f) {
   const qr::SensorStage<SimBoard>* stage = qr.sensor_stage();
-  if (stage == nullptr || !qr.board().sensor_drivers()) {
-    for (const char* name :
-         {"imu_samples", "imu_faults", "baro_readings", "baro_faults", "i2c_busy_pct", "sensor_stage_ns_mean"}) {
-      f.push_back({name, kNotMeasured});
-    }
+  const bool drivers = qr.board().sensor_drivers();
+  if (stage == nullptr || !drivers) {
+    for (const char* name : {"imu_samples", "imu_faults", "baro_readings", "baro_faults"}) f.push_back({name, kNotMeasured});
+    f.push_back({"i2c_busy_pct", drivers ? i2c_busy_pct(qr, sim_s) : kNotMeasured});
+    f.push_back({"sensor_stage_ns_mean", kNotMeasured});
     return;
   }
   f.push_back({"imu_samples", static_cast<double>(stage->imu().samples())});
   f.push_back({"imu_faults", static_cast<double>(stage->imu().total_faults())});
   f.push_back({"baro_readings", static_cast<double>(stage->barometer().readings())});
   f.push_back({"baro_faults", static_cast<double>(stage->barometer().total_faults())});
-  f.push_back({"i2c_busy_pct", sim_s > 0 ? 100.0 * 1e-9 * static_cast<double>(qr.board().i2c().busy_ns()) / sim_s : 0});
+  f.push_back({"i2c_busy_pct", i2c_busy_pct(qr, sim_s)});
   f.push_back({"sensor_stage_ns_mean", static_cast<double>(stage->stats().mean())});
 }
 
+// The ESCs' side (frames taken, frames dropped for their check) and the front engine's speed as
+// the QR last reported it from the ESC's answer, beside the truth. Special command frames (the
+// lost-model beacon, docs/safety.md rule 18), and those that came while an ESC's motor ran (none
+// may).
 void add_esc_figures(FlyingQr& qr, const ConsoleView& heard, std::vector<Figure>& f) {
   uint64_t accepted = 0, rejected = 0, commands = 0, commands_turning = 0;
   for (const SimEsc& esc : qr.board().escs()) {
@@ -709,11 +714,7 @@ ScenarioResult run_scenario(const ScenarioScript& script, const RunOptions& opti
     result.error = "--rc crsf flies the host firmware only: the devboard's sensor link carries no radio";
     return result;
   }
-  if (options.sensor_drivers && options.sensors_chosen && !options.devboard_elf.empty()) {
-    result.error = "--sensors drivers flies the host firmware only: the devboard's sensor link carries samples";
-    return result;
-  }
-  if (options.sensor_drivers && options.devboard_elf.empty()) qr->board().use_sensor_drivers();
+  if (options.sensor_drivers) qr->board().use_sensor_drivers();
   // The simulated motors have the pole pairs the QR's motor_poles parameter says by default.
   if (options.dshot) qr->board().use_dshot(static_cast<uint8_t>(qr->parameters().get(wire::ParamId::motor_poles) / 2));
   ScenarioFlight flight(script, options, *qr, result);

@@ -48,10 +48,9 @@ struct RunOptions {
   bool dshot = false;
   // --sensors drivers (the default): the MPU-6050 and the MS5611 are register-level chips on the sim
   // board's I2C bus, read by the firmware's drivers (qr/core/sensor_stage.hpp); direct (false): the
-  // board hands the firmware the plant's sample. The devboard flies direct (its sensor link carries
-  // samples) unless drivers were asked for by name, which is refused.
+  // board hands the firmware the plant's sample. On the devboard the sensor link carries the bus
+  // (qr/boards/sim/devboard_qr.hpp) or the samples.
   bool sensor_drivers = true;
-  bool sensors_chosen = false;  // --sensors was given
 };
 
 struct Figure {

@@ -40,7 +40,7 @@ TEST(SensorLink, SensorsFrameRoundTrips) {
   simlink::LinkParser parser(simlink::LinkEnd::qr);
   std::vector<uint8_t> bytes;
   append(bytes, simlink::encode(a_sample(7)));
-  EXPECT_EQ(bytes.size(), 33u);  // 'S', type, 30 payload bytes, check
+  EXPECT_EQ(bytes.size(), 34u);  // 'S', type, 31 payload bytes, check
   const auto frames = parse(parser, bytes);
   ASSERT_EQ(frames.size(), 1u);
   EXPECT_EQ(frames[0].kick, 7u);
@@ -69,6 +69,42 @@ TEST(SensorLink, EngineFrameRoundTripsAtTheSimulatorsEnd) {
   EXPECT_EQ(got.engines[3], 1000);
   EXPECT_EQ(got.angles_e4[simlink::EngineFrame::pitch_setpoint], -1745);
   EXPECT_EQ(got.stats[simlink::EngineFrame::sum_high], 3u);
+}
+
+// The sensors' I2C bus on the link: a transfer begun goes to the simulator, its end to the QR,
+// each heard by its own end only, and a field out of its range is refused.
+TEST(SensorLink, I2cTransfersCrossTheLinkEachToItsEnd) {
+  simlink::I2cBeginFrame begin;
+  begin.channel = 1, begin.address = 0x77, begin.write[0] = 0x48, begin.write_count = 1;
+  simlink::I2cDoneFrame done;
+  done.channel = 1, done.result = static_cast<uint8_t>(drivers::I2cResult::ok), done.count = 3;
+  done.data[0] = 0x8A, done.data[2] = 0x1A;
+  simlink::LinkParser qr_end(simlink::LinkEnd::qr), sim_end(simlink::LinkEnd::simulator);
+  int at_qr = 0, at_sim = 0;
+  simlink::I2cBeginFrame got_begin;
+  simlink::I2cDoneFrame got_done;
+  const simlink::LinkFrameBytes frames[2] = {simlink::encode(begin), simlink::encode(done)};
+  for (const simlink::LinkFrameBytes& f : frames) {
+    for (uint8_t i = 0; i < f.size; ++i) {
+      qr_end.push(f.bytes[i], [&](const simlink::LinkFrame& frame) { at_qr += frame.decode(got_done) ? 1 : 0; });
+      sim_end.push(f.bytes[i], [&](const simlink::LinkFrame& frame) { at_sim += frame.decode(got_begin) ? 1 : 0; });
+    }
+  }
+  EXPECT_EQ(at_qr, 1);
+  EXPECT_EQ(at_sim, 1);
+  EXPECT_EQ(got_begin.address, 0x77);
+  EXPECT_EQ(got_begin.write[0], 0x48);
+  EXPECT_EQ(got_begin.write_count, 1);
+  EXPECT_EQ(got_done.count, 3);
+  EXPECT_EQ(got_done.data[0], 0x8A);
+  EXPECT_EQ(got_done.data[2], 0x1A);
+
+  done.result = static_cast<uint8_t>(drivers::I2cResult::bus_stuck) + 1;  // no such result
+  const simlink::LinkFrameBytes bad = simlink::encode(done);
+  int refused = 0;
+  for (uint8_t i = 0; i < bad.size; ++i)
+    qr_end.push(bad.bytes[i], [&](const simlink::LinkFrame& frame) { refused += frame.decode(got_done) ? 0 : 1; });
+  EXPECT_EQ(refused, 1);
 }
 
 TEST(SensorLink, ParserFindsFramesAfterGarbageAndDamage) {

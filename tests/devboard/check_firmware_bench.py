@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Reads the firmware bench's output on stdin: every line a JSON object, one per mode with its
-figures, the summary last. Fails on malformed output or a mode that could not be armed. The
+figures, the drivers, the sensor stage and the scheduler lines, the summary last. Fails on
+malformed output, a mode that could not be armed or a sensor stage that did not stream. The
 figures themselves are reported, not asserted, with one exception: with --budgets, it fails when
 a task's largest run in a fixed-point mode took more instructions than its budget (the task
 table's, qr/core/flight_tasks.hpp): the budgets are the contract a student changes deliberately.
@@ -29,6 +30,11 @@ def main():
     drivers = [o for o in objects[:-1] if "drivers" in o]
     if len(drivers) != 1 or any(drivers[0].get(k, 0) <= 0 for k in ("dshot4_instr_mean", "crsf_rc_instr_mean")):
         sys.exit("no drivers line with dshot4_instr_mean and crsf_rc_instr_mean")
+    stages = [o for o in objects[:-1] if "sensor_stage" in o]
+    if len(stages) != 1 or any(stages[0].get(k, 0) <= 0 for k in ("instr_mean", "bus_us_per_tick_mean", "imu_samples")):
+        sys.exit("no sensor_stage line with instr_mean, bus_us_per_tick_mean and imu_samples")
+    if stages[0].get("faults", 1) != 0 or stages[0]["imu_samples"] != stages[0].get("ticks"):
+        sys.exit(f"the sensor stage did not stream a sample a tick without faults: {stages[0]}")
     floors = [o for o in objects[:-1] if "scheduler" in o]
     if len(floors) != 1 or any(floors[0].get(k, 0) <= 0 for k in ("bare_tick_instr_mean", "row_instr_mean")):
         sys.exit("no scheduler line with bare_tick_instr_mean and row_instr_mean")

@@ -231,6 +231,7 @@ uint32_t VirtBoard::wait_kick([[maybe_unused]] uint32_t seen) {
         }
         sample_.battery_mv = frame->battery_mv;
         sample_.pressure_pa = frame->pressure_pa;
+        sensors_on_i2c_ = frame->sensors_on_i2c != 0;
         // The watchdog for this tick, on the virtual clock (instructions under -icount).
         write_mtimecmp(read_mtime() + static_cast<uint64_t>(kStallPeriods) * g_period_ticks);
         kick_instret_ = instret();
@@ -294,6 +295,8 @@ qr::SensorSample VirtBoard::read_sensors() const {
   const uint32_t tick = g_kicks - first_kick_;
   return recording_.at(tick % recording_.count()).sample;
 }
+
+LinkI2cBus& VirtBoard::i2c() { return g_link.i2c(); }
 
 qr::ControlInput VirtBoard::recorded_sticks() const {
   if (!recording_.valid()) return {};
@@ -375,5 +378,6 @@ void read_engines(uint16_t out[4]) {
 }
 
 static_assert(qr::Board<VirtBoard>);
+static_assert(qr::I2cBoard<VirtBoard>);
 
 }  // namespace rv32virt

@@ -4,7 +4,10 @@
 //     memory (or a vehicle resting level when there is none);
 //   on the sensor link (a virtio console, docs/devboard.md): the simulator's sensors frame is
 //     the kick, its time stamp the clock and its samples the sensors, and the board answers each
-//     tick with its engines (answer()): lock-step with the simulated plant.
+//     tick with its engines (answer()): lock-step with the simulated plant. When the simulator
+//     says so (its frames' sensors_on_i2c) the gyro, accelerometer and barometer are its chip
+//     models instead, on an I2C bus the link carries (LinkI2cBus), read by the firmware's drivers
+//     (qr/core/sensor_stage.hpp) as on a board with the chips.
 // Either way the ground link is the 16550 UART: received by interrupt into a ring, transmitted a
 // bounded number of bytes per tick (on the link, at the line's pace, PacedTransmitter).
 // Either way a watchdog on the timer interrupt cuts the engines when a tick stalls (fail_safe.hpp).
@@ -15,6 +18,7 @@
 #include <common/sensor_link.hpp>
 #include <qr/boards/rv32virt/devboard.hpp>
 #include <qr/boards/rv32virt/recording.hpp>
+#include <qr/boards/rv32virt/sensor_link_port.hpp>
 #include <qr/core/board.hpp>
 #include <qr/core/cycle_stats.hpp>
 #include <qr/core/observable_readers.hpp>
@@ -33,6 +37,11 @@ class VirtBoard {
   qr::SensorSample read_sensors() const;
   qr::ControlInput recorded_sticks() const;
   bool recording_ended() const;
+  // ---- qr::I2cBoard: the sensors' bus, on the link ----
+  using I2cBus = LinkI2cBus;
+  I2cBus& i2c();
+  bool sensors_on_i2c() const { return sensors_on_i2c_; }
+  uint16_t battery_mv() const { return sample_.battery_mv; }
   void set_engines(qr::EngineCommand engines) { engines_ = engines; }
   qr::EngineCommand engines() const { return engines_; }
   // The fail-safe's cut (fail_safe.hpp): zero to every engine, and to the plant on the link.
@@ -99,6 +108,7 @@ class VirtBoard {
   uint32_t time_us_ = 0;      // its time stamp
   uint64_t time_ns_ = 0;      // the same, not wrapping, for the paced transmitter
   qr::SensorSample sample_;   // its samples
+  bool sensors_on_i2c_ = false;  // its sensors_on_i2c: the chips on the link's I2C bus
   uint32_t ground_sent_ = 0;  // bytes written to the UART
   const qr::CycleStats* task_stats_ = nullptr;
   const qr::CycleStats* tick_stats_ = nullptr;

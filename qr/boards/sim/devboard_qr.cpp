@@ -44,9 +44,12 @@ bool DevboardQr::await_engines(uint32_t kick, simlink::EngineFrame& out) {
     for (long i = 0; i < n; ++i) {
       from_board_.push(buffer[i], [&](const simlink::LinkFrame& frame) {
         simlink::EngineFrame engines;
+        simlink::I2cBeginFrame transfer;
         if (frame.decode(engines) && engines.kick == kick) {
           out = engines;
           got = true;
+        } else if (frame.decode(transfer)) {
+          begin_transfer(transfer);
         }
       });
     }
@@ -54,6 +57,74 @@ bool DevboardQr::await_engines(uint32_t kick, simlink::EngineFrame& out) {
     // what was read.
     if (got) return true;
   }
+}
+
+// A transfer the board's driver began during the tick: on the sim board's bus now, in the
+// simulated instant the tick runs in, as the host build's driver begins it (sim_i2c_bus.hpp).
+void DevboardQr::begin_transfer(const simlink::I2cBeginFrame& f) {
+  drivers::I2cTransfer t;
+  t.address = f.address;
+  for (uint8_t i = 0; i < drivers::kI2cMaxWrite; ++i) t.write[i] = f.write[i];
+  t.write_count = f.write_count;
+  t.read_count = f.read_count;
+  if (board_.i2c().begin(f.channel, t)) return;
+  // Refused (a channel still busy, which the board's own book would have refused first): the
+  // board is told at the next kick, so its channel is not held for ever.
+  refused_.push_back(f.channel);
+}
+
+// Before a kick: the end of every transfer the wire has finished by now, so that the board's
+// drivers collect in this tick what the host build's would.
+bool DevboardQr::send_transfer_ends() {
+  for (uint8_t channel = 0; channel < SimI2cBus::kChannels; ++channel) {
+    drivers::I2cReply reply;
+    const drivers::I2cResult result = board_.i2c().poll(channel, reply);
+    if (result == drivers::I2cResult::pending || result == drivers::I2cResult::idle) continue;
+    simlink::I2cDoneFrame done;
+    done.channel = channel;
+    done.result = static_cast<uint8_t>(result);
+    done.count = reply.count;
+    for (uint8_t i = 0; i < drivers::kI2cMaxRead; ++i) done.data[i] = reply.data[i];
+    if (!send(done)) return false;
+  }
+  for (const uint8_t channel : refused_) {
+    simlink::I2cDoneFrame done;
+    done.channel = channel;
+    done.result = static_cast<uint8_t>(drivers::I2cResult::idle);
+    if (!send(done)) return false;
+  }
+  refused_.clear();
+  return true;
+}
+
+// The kick: the sensors frame, after the ends of the transfers the board's drivers will collect
+// (with the sensor drivers), or with the plant's sample.
+bool DevboardQr::send_kick() {
+  const qr::SensorSample sample = board_.read_sensors();
+  simlink::SensorFrame sensors;
+  sensors.kick = kick_;
+  sensors.time_us = board_.now_us();
+  sensors.battery_mv = sample.battery_mv;
+  sensors.ground_bytes = ground_to_qr_;
+  if (board_.sensor_drivers()) {
+    sensors.sensors_on_i2c = 1;
+    if (!send_transfer_ends()) return false;
+  } else {
+    for (int axis = 0; axis < 3; ++axis) {
+      sensors.gyro[axis] = sample.gyro[axis];
+      sensors.accel[axis] = sample.accel[axis];
+    }
+    sensors.pressure_pa = sample.pressure_pa;
+  }
+  return send(sensors);
+}
+
+template <class Msg>
+bool DevboardQr::send(const Msg& message) {
+  const simlink::LinkFrameBytes frame = simlink::encode(message);
+  if (write_all(process_.link(), frame.bytes, frame.size)) return true;
+  stopped_ = true;  // the firmware has ended
+  return false;
 }
 
 void DevboardQr::follow_pilot(uint8_t byte) {
@@ -94,25 +165,8 @@ bool DevboardQr::tick() {
     return false;
   }
 
-  const qr::SensorSample sample = board_.read_sensors();
-  simlink::SensorFrame sensors;
-  sensors.kick = kick_;
-  sensors.time_us = board_.now_us();
-  for (int axis = 0; axis < 3; ++axis) {
-    sensors.gyro[axis] = sample.gyro[axis];
-    sensors.accel[axis] = sample.accel[axis];
-  }
-  sensors.battery_mv = sample.battery_mv;
-  sensors.pressure_pa = sample.pressure_pa;
-  sensors.ground_bytes = ground_to_qr_;
-  const simlink::LinkFrameBytes frame = simlink::encode(sensors);
-  if (!write_all(process_.link(), frame.bytes, frame.size)) {
-    stopped_ = true;  // the firmware has ended
-    return false;
-  }
-
   simlink::EngineFrame answer;
-  if (!await_engines(kick_, answer)) return false;
+  if (!send_kick() || !await_engines(kick_, answer)) return false;
 
   // What the board wrote to its UART during the tick: on the line to the pilot from this tick on.
   uint32_t owed = answer.ground_bytes - ground_from_qr_;

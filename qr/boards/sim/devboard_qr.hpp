@@ -5,6 +5,8 @@
 // down the link, stamped with the simulated time and counting those bytes; the board answers with
 // its engines and the count of bytes it wrote to its UART, which are read and put on the line to
 // the pilot in that tick. Nothing waits on a wall clock, so a flight is the same on any host.
+// With the sensor drivers (SimBoard::use_sensor_drivers) the kick carries no sample: the board's
+// drivers read the sim board's chips over the link (common/sensor_link.hpp, I2cBeginFrame).
 #pragma once
 
 #include <stdint.h>
@@ -52,6 +54,13 @@ class DevboardQr final : public FlyingQr {
 
  private:
   bool await_engines(uint32_t kick, simlink::EngineFrame& out);
+  // The sensors' bus on the link (SimBoard::use_sensor_drivers): the board's transfers onto the
+  // sim board's bus, their ends back before the kick that collects them.
+  void begin_transfer(const simlink::I2cBeginFrame& frame);
+  bool send_transfer_ends();
+  bool send_kick();
+  template <class Msg>
+  bool send(const Msg& message);
   void fail(const std::string& why);
   // What the firmware will make of the pilot's bytes: its parameter table, its sticks.
   void follow_pilot(uint8_t byte);
@@ -68,6 +77,7 @@ class DevboardQr final : public FlyingQr {
   FirmwareView view_;
   std::vector<InstructionStats> instructions_;
   uint32_t kick_ = 0;
+  std::vector<uint8_t> refused_;  // channels whose transfer the sim board's bus refused
   uint32_t ground_to_qr_ = 0;    // bytes put on the board's UART so far
   uint32_t ground_from_qr_ = 0;  // bytes the board wrote to it so far
   uint64_t ground_refused_ = 0;
