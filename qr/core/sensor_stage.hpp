@@ -88,8 +88,25 @@ class SensorStage<B> {
     }
     s.battery_mv = board.battery_mv();
     s.pressure_pa = pressure_pa_;
+    s.health = health();
     stats_.add(board.cycles() - before);
     return s;
+  }
+
+  // What the drivers say of themselves (board.hpp's SensorHealth). The IMU is healthy while it
+  // streams: a failed read holds the last sample and counts, and only the driver's verdict (lost
+  // after kLostAfterFailures in a row, then starting over) ends it. So the address NACK of the
+  // MPU's first 100 ms, counted before it ever streamed, is a start-up like any other, no fault
+  // the flight reacts to: the IMU is simply not healthy yet, as it is not until its first burst.
+  SensorHealth health() const {
+    SensorHealth h;
+    h.imu = imu_.phase() == drivers::Mpu6050Phase::streaming;
+    h.barometer = barometer_.healthy();
+    h.imu_faults = imu_.total_faults();
+    h.barometer_faults = barometer_.total_faults();
+    if (h.imu_faults > 0) h.imu_fault = static_cast<uint8_t>(imu_.last_fault());
+    if (h.barometer_faults > 0) h.barometer_fault = static_cast<uint8_t>(barometer_.last_fault());
+    return h;
   }
 
   const drivers::Mpu6050& imu() const { return imu_; }
