@@ -288,7 +288,7 @@ class Flight {
   uint32_t last_byte_us_ = 0;
   Mode announced_mode_ = Mode::safe;
   SensorFaultReport fault_report_;  // the sensors' faults on the debug text, rate-limited
-  Mode door_mode_ = Mode::safe;  // the mode the last door opened into (change_modes)
+  Mode door_mode_ = Mode::safe;     // the mode the last door opened into (change_modes)
   uint32_t last_busy_us_ = 0;
   uint32_t tx_dropped_ = 0;
   const SchedulerStats<kTaskCount>* task_stats_ = nullptr;  // the scheduler's, once it ran

@@ -380,8 +380,12 @@ class Reader {
     e.action = Action::imu_identity;
     char* end = nullptr;
     const unsigned long v = std::strtoul(w[4].c_str(), &end, 0);
-    if (w[4].empty() || *end != '\0' || v > 0xFF) return fail("imu identity is a byte (0 .. 255 or 0x00 .. 0xff), not '" + w[4] + "'");
-    if (v == drivers::mpu6050::kIdentity) return fail("imu identity 0x68 is the MPU-6050's own: a wrong one is any other");
+    if (w[4].empty() || *end != '\0' || v > 0xFF) {
+      return fail("imu identity is a byte (0 .. 255 or 0x00 .. 0xff), not '" + w[4] + "'");
+    }
+    if (v == drivers::mpu6050::kIdentity) {
+      return fail("imu identity 0x68 is the MPU-6050's own: a wrong one is any other");
+    }
     e.value = static_cast<double>(v);
     return true;
   }
@@ -445,7 +449,7 @@ const EventKeyword Reader::kEventKeywords[] = {
     {"roll", &Reader::roll}, {"pitch", &Reader::pitch}, {"yaw", &Reader::yaw},       {"lift", &Reader::lift},
     {"mode", &Reader::mode}, {"param", &Reader::param}, {"torque", &Reader::torque}, {"force", &Reader::force},
     {"wind", &Reader::wind}, {"turn", &Reader::turn},   {"link", &Reader::link},     {"console", &Reader::console},
-    {"log", &Reader::log},   {"nack", &Reader::nack}, {"sda", &Reader::sda},       {"imu", &Reader::imu},
+    {"log", &Reader::log},   {"nack", &Reader::nack},   {"sda", &Reader::sda},       {"imu", &Reader::imu},
     {"baro", &Reader::baro},
 };
 
