@@ -93,6 +93,9 @@ inline constexpr FigureSpec kFigureTable[] = {
     {"speed_m_s_end", "speed at the end"},
     {"requests_given_up", "pilot requests never answered"},
     {"nacks", "pilot requests refused"},
+    {"sensor_fault_lines", "debug text lines the QR said about sensor faults (imu fault:, barometer fault:)"},
+    {"imu_lost_panic", "1 when the first panic after t0 was the IMU lost, else 0"},
+    {"last_nack_reason", "the reason of the last request the QR refused (docs/protocol.md), 0 for none"},
     // With a console event (full_line_console.hpp); null without one.
     {"line_full_s", "seconds the console sent at the line's full rate"},
     {"line_idle_ms", "time the line towards the QR stood idle while the console sent at the full rate"},
@@ -118,9 +121,6 @@ inline constexpr FigureSpec kFigureTable[] = {
     {"baro_adc_zero", "MS5611 ADC reads of 0 (read too early) the driver discarded"},
     {"imu_healthy_at_end", "1 when the IMU streams at the end of the flight, else 0"},
     {"baro_healthy_at_end", "1 when the barometer measures at the end of the flight, else 0"},
-    {"sensor_fault_lines", "debug text lines the QR said about sensor faults (imu fault:, barometer fault:)"},
-    {"imu_lost_panic", "1 when the first panic after t0 was the IMU lost, else 0"},
-    {"last_nack_reason", "the reason of the last request the QR refused (docs/protocol.md), 0 for none"},
 };
 
 constexpr bool is_figure(std::string_view name) {
