@@ -21,6 +21,8 @@ enum class NackReason : uint8_t {
   not_flying = 11,        // height hold asked for on the ground: there is no height to hold
   over_budget = 12,       // a stream the line cannot carry beside telemetry (stream_budget.hpp)
   radio_is_pilot = 13,    // a flight mode asked for by the PC while the radio flies: its arm switch arms
+  imu_fault = 14,         // leaving safe while the IMU's driver does not stream (docs/safety.md rule 20)
+  barometer_fault = 15,   // height hold while the barometer's driver does not measure (rule 20)
 };
 
 struct NackReasonSpec {
@@ -43,6 +45,8 @@ inline constexpr NackReasonSpec kNackReasons[] = {
     {NackReason::not_flying, "not_flying", "not flying: nothing to hold"},
     {NackReason::over_budget, "over_budget", "the line cannot carry it beside control and telemetry"},
     {NackReason::radio_is_pilot, "radio_is_pilot", "the radio is the pilot: arm with its switch"},
+    {NackReason::imu_fault, "imu_fault", "the IMU is not healthy (its faults are in the debug text)"},
+    {NackReason::barometer_fault, "barometer_fault", "the barometer is not healthy: no height to hold"},
 };
 
 constexpr const NackReasonSpec* find_nack_reason(NackReason reason) {

@@ -117,11 +117,16 @@ struct EngineFrame {
   // ticks old, and the board needs no request and no second kind of frame to report them.
   uint8_t stats_row = 0;
   uint32_t stats[kStats] = {};
+  // With the sensors on the link's I2C bus: the drivers' verdicts (bit 0 the IMU streams, bit 1
+  // the barometer measures) and counts since power-up, in qr::SensorCounts order (imu samples,
+  // faults, lost; barometer readings, faults, ADC reads of 0). All 0 otherwise.
+  uint8_t sensors_healthy = 0;
+  uint32_t sensor_counts[6] = {};
 
   template <class Self, class V>
   static constexpr void fields(Self& s, V& v) {
     v(s.kick), v(s.engines), v(s.mode), v(s.flags), v(s.ground_bytes), v(s.deadline_misses), v(s.angles_e4);
-    v(s.yaw_rate_setpoint_e3), v(s.stats_row), v(s.stats);
+    v(s.yaw_rate_setpoint_e3), v(s.stats_row), v(s.stats), v(s.sensors_healthy), v(s.sensor_counts);
   }
   constexpr bool valid() const { return true; }
 };
@@ -136,7 +141,7 @@ constexpr size_t payload_length(LinkEnd listener, uint8_t type) {
   return payload_if<EngineFrame>(type) + payload_if<I2cBeginFrame>(type);
 }
 
-inline constexpr size_t kMaxLinkPayload = 64;
+inline constexpr size_t kMaxLinkPayload = 80;
 inline constexpr size_t kLinkOverhead = 3;  // start, type, check
 inline constexpr size_t kMaxLinkFrame = kMaxLinkPayload + kLinkOverhead;
 static_assert(wire::wire_size<EngineFrame>() <= kMaxLinkPayload && wire::wire_size<SensorFrame>() <= kMaxLinkPayload);

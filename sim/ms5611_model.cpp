@@ -107,9 +107,9 @@ bool Ms5611Model::command(uint8_t byte, double t_s) {
     answer_bytes_ = 0;
     ready_s_ = t_s + kResetS;
   } else if (even && osr < kConversionS.size() && (byte & 0xF0) == (kConvertD1 & 0xF0)) {
-    conversion_ = Conversion{true, osr, t_s, t_s + kConversionS[osr], converting(t_s)};
+    conversion_ = Conversion{true, osr, t_s, t_s + kConversionS[osr] + faults_.slow_conversion_s, converting(t_s)};
   } else if (even && osr < kConversionS.size() && (byte & 0xF0) == (kConvertD2 & 0xF0)) {
-    conversion_ = Conversion{false, osr, t_s, t_s + kConversionS[osr], converting(t_s)};
+    conversion_ = Conversion{false, osr, t_s, t_s + kConversionS[osr] + faults_.slow_conversion_s, converting(t_s)};
   } else if (byte == kAdcRead) {
     if (conversion_ && converting(t_s)) {
       conversion_->wrong = true;  // "the conversion will not stop and the final result will be wrong"

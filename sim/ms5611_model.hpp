@@ -71,6 +71,10 @@ Ms5611Codes ms5611_codes(const Ms5611Prom& prom, double pressure_pa, double temp
 
 struct Ms5611Faults {
   bool bad_prom_crc = false;  // word 7's CRC bit 0 read inverted: the PROM fails its check
+  // Each conversion commanded takes this much longer than the datasheet's maximum (a part out of
+  // its specification, or one too cold): a driver that reads after the datasheet's time reads
+  // too early, and gets 0 ([DS] "Conversion sequence").
+  double slow_conversion_s = 0;
 };
 
 class Ms5611Model final : public I2cDevice {

@@ -92,6 +92,7 @@ void Ms5611::start_over(Ms5611State state, uint32_t now_us) {
 
 void Ms5611::fault(Ms5611Fault kind, uint32_t now_us) {
   ++faults_[static_cast<size_t>(kind)];
+  last_fault_ = kind;
   if (state_ != Ms5611State::measuring) {
     // Before the PROM is known good the chip cannot be trusted with a conversion: start over.
     start_over(kind == Ms5611Fault::prom_crc ? Ms5611State::prom_bad : Ms5611State::restarting, now_us);

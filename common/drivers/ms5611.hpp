@@ -262,6 +262,12 @@ class Ms5611 {
 
   uint32_t faults(Ms5611Fault fault) const { return faults_[static_cast<size_t>(fault)]; }
   uint32_t total_faults() const;
+  // The kind of the last fault counted (Ms5611Fault::count_ before the first).
+  Ms5611Fault last_fault() const { return last_fault_; }
+  // Measuring: the PROM passed its CRC and the driver is not starting over. A fault while
+  // measuring (an ADC read of 0, a NACK) keeps it healthy: the reading is discarded, the last one
+  // held, and the same conversion made again; kMs5611FaultsBeforeRestart in a row end it.
+  bool healthy() const { return state_ == Ms5611State::measuring; }
   uint32_t bus_busy() const { return bus_busy_; }        // begin() refused: the bus was in use
   uint64_t bus_time_ns() const { return bus_time_ns_; }  // every transfer begun, at 400 kHz
   uint32_t resets() const { return resets_; }            // reset commands begun
@@ -298,6 +304,7 @@ class Ms5611 {
   uint32_t taken_ = 0;
   uint32_t reading_time_us_ = 0;
   uint32_t faults_[static_cast<size_t>(Ms5611Fault::count_)] = {};
+  Ms5611Fault last_fault_ = Ms5611Fault::count_;
   uint32_t bus_busy_ = 0;
   uint64_t bus_time_ns_ = 0;
   uint32_t resets_ = 0;

@@ -27,11 +27,32 @@ namespace qr {
 // y (right), z (down); the accelerometer reads specific force, so (0, 0, -1 g) at rest and
 // level. Scales in sensor_scale.hpp, signs in docs/conventions.md. Battery in mV. The
 // barometer is optional (0 when absent).
+//
+// `health`: what the sensors' drivers say of themselves, on a board whose sensors are on a bus the
+// core drives (sensor_stage.hpp). A board that hands over finished samples has no drivers to
+// doubt and reports its sensors healthy. The safety machine reads it (docs/safety.md rule 20).
+inline constexpr uint8_t kNoSensorFault = 0xFF;  // no fault seen yet (a fault kind's place)
+
+struct SensorHealth {
+  // The IMU streams: its driver has its burst each tick, or holds the last good one for fewer
+  // failed reads in a row than it takes to call the chip lost (mpu6050.hpp kLostAfterFailures).
+  bool imu = true;
+  // The barometer measures: its PROM passed its CRC and the driver is not starting over.
+  bool barometer = true;
+  // The last fault's kind (drivers::Mpu6050Fault, drivers::Ms5611Fault), kNoSensorFault before
+  // the first, and the faults counted since power-up: what the console is told.
+  uint8_t imu_fault = kNoSensorFault;
+  uint8_t barometer_fault = kNoSensorFault;
+  uint32_t imu_faults = 0;
+  uint32_t barometer_faults = 0;
+};
+
 struct SensorSample {
   int16_t gyro[3] = {0, 0, 0};
   int16_t accel[3] = {0, 0, 0};
   uint16_t battery_mv = 0;
   int32_t pressure_pa = 0;
+  SensorHealth health;
 };
 
 using wire::kEngineMax;  // engine commands 0..kEngineMax (common/units.hpp)

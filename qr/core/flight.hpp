@@ -32,6 +32,7 @@
 #include <qr/core/radio_receiver.hpp>
 #include <qr/core/safety.hpp>
 #include <qr/core/scheduler.hpp>
+#include <qr/core/sensor_fault_report.hpp>
 #include <qr/core/signal_chain.hpp>
 #include <qr/core/task.hpp>
 #include <qr/core/transmit_queue.hpp>
@@ -230,6 +231,8 @@ class Flight {
     door_mode_ = to;
   }
   void announce_mode();
+  void report_sensor_faults();
+  void say_sensor_faults();
   void send(const wire::FrameBytes& frame) {
     if (!tx_.push(frame)) ++tx_dropped_;
   }
@@ -252,6 +255,8 @@ class Flight {
     s.height_valid = chain_.height_valid();
     s.height_mm = chain_.height_mm();
     s.landed = chain_.landed();
+    s.imu_healthy = sample_.health.imu;
+    s.barometer_healthy = sample_.health.barometer;
     return s;
   }
 
@@ -282,7 +287,8 @@ class Flight {
   uint32_t last_frame_us_ = 0;
   uint32_t last_byte_us_ = 0;
   Mode announced_mode_ = Mode::safe;
-  Mode door_mode_ = Mode::safe;  // the mode the last door opened into (change_modes)
+  SensorFaultReport fault_report_;  // the sensors' faults on the debug text, rate-limited
+  Mode door_mode_ = Mode::safe;     // the mode the last door opened into (change_modes)
   uint32_t last_busy_us_ = 0;
   uint32_t tx_dropped_ = 0;
   const SchedulerStats<kTaskCount>* task_stats_ = nullptr;  // the scheduler's, once it ran

@@ -14,6 +14,21 @@ void Flight<Chain>::run_safety() {
   safety_.supervise(s);
   engines_ = safety_.limit_engines(wanted_, s);
   if (safety_.mode() != announced_mode_) announce_mode();
+  report_sensor_faults();
+}
+
+// Which sensor and which fault, when its drivers count new ones (sensor_fault_report.hpp: at most
+// a line a second per sensor). Boards without drivers report none: their counts stay 0.
+template <SignalChain Chain>
+void Flight<Chain>::report_sensor_faults() {
+  if ((sample_.health.imu_faults | sample_.health.barometer_faults) == 0) return;
+  say_sensor_faults();
+}
+
+template <SignalChain Chain>
+[[gnu::noinline]] void Flight<Chain>::say_sensor_faults() {
+  char line[kSensorReportChars];
+  if (fault_report_.due(sample_.health, tick_us_, line)) say(line);
 }
 
 // A new mode on the debug text.

@@ -33,6 +33,10 @@ constexpr Guard kGuards[] = {
     {NackReason::not_from_this_mode,
      [](Mode from, Mode to, const Situation&, const SafetyLimits&) { return from != rule(to).entered_from; }},
     // Leaving safe: the pilot's hands and the engines at rest (height hold is entered in flight).
+    // Leaving safe needs an IMU that streams (rule 20): calibration would average a held or
+    // missing signal, and every mode but manual flies on it.
+    {NackReason::imu_fault,
+     [](Mode from, Mode, const Situation& s, const SafetyLimits&) { return from == Mode::safe && !s.imu_healthy; }},
     {NackReason::controls_not_neutral, [](Mode from, Mode, const Situation& s,
                                           const SafetyLimits&) { return from == Mode::safe && !s.controls.neutral(); }},
     {NackReason::engines_running, [](Mode from, Mode, const Situation& s,
@@ -44,6 +48,9 @@ constexpr Guard kGuards[] = {
      [](Mode, Mode to, const Situation& s, const SafetyLimits&) { return rule(to).holds_height && !s.height_valid; }},
     {NackReason::not_flying,
      [](Mode, Mode to, const Situation& s, const SafetyLimits&) { return rule(to).holds_height && s.landed; }},
+    // The height to hold is the barometer's (rule 20); full control does without it.
+    {NackReason::barometer_fault, [](Mode, Mode to, const Situation& s,
+                                     const SafetyLimits&) { return rule(to).holds_height && !s.barometer_healthy; }},
     {NackReason::battery_low,
      [](Mode, Mode, const Situation& s, const SafetyLimits& l) { return s.battery_mv < l.battery_panic_mv; }},
 };
@@ -61,6 +68,10 @@ constexpr LandingNeed kLandingNeeds[] = {
     {[](Mode, PanicCause, const Situation& s, uint16_t, const SafetyLimits&) { return s.calibrated; }},
     // The descent is flown on the height estimate's vertical speed.
     {[](Mode, PanicCause, const Situation& s, uint16_t, const SafetyLimits&) { return s.height_valid; }},
+    // Both fly on the sensors: the level on the IMU, the descent on the barometer (rule 20).
+    {[](Mode, PanicCause, const Situation& s, uint16_t, const SafetyLimits&) {
+      return s.imu_healthy && s.barometer_healthy;
+    }},
     // It was flying: some lift above idle in the last quarter second (a lift stick let go an
     // instant before the panic still counts; a vehicle resting with its engines still does not).
     {[](Mode, PanicCause, const Situation&, uint16_t flying_lift, const SafetyLimits& l) {
@@ -88,6 +99,11 @@ constexpr Watchdog kWatchdogs[] = {
      [](const Situation&, const SafetyLimits&, Mode, const Lasting& lasting) { return lasting.battery_low; }},
     {PanicCause::tilt, [](const Situation&, const SafetyLimits&, Mode m,
                           const Lasting& lasting) { return rule(m).needs_attitude && lasting.tilt; }},
+    // The IMU lost in a mode that flies on it (rule 20). Its time is the driver's: lost after
+    // kLostAfterFailures failed reads in a row (10 ms at 1 kHz), the last sample held till then.
+    // Manual flies the sticks open loop and needs no sensor: it flies on.
+    {PanicCause::imu_lost, [](const Situation& s, const SafetyLimits&, Mode m,
+                              const Lasting&) { return rule(m).needs_calibration && !s.imu_healthy; }},
 };
 
 constexpr size_t kWatchdogCount = sizeof(kWatchdogs) / sizeof(kWatchdogs[0]);
@@ -247,6 +263,9 @@ void SafetyMachine::supervise(const Situation& s) {
     const PanicCause cause = first_tripped(s, limits_, mode_, lasting);
     if (cause != PanicCause::none) enter_panic(cause, s);
   }
+
+  // Height hold without its barometer: back to full control, where the pilot's lift flies (rule 20).
+  if (mode_ == Mode::height_hold && !s.barometer_healthy) enter(Mode::full_control);
 
   if (mode_ == Mode::panic) {
     const uint32_t elapsed = s.now_us - panic_start_us_;

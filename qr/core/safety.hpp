@@ -11,11 +11,11 @@
 
 namespace qr {
 
-enum class PanicCause : uint8_t { none = 0, requested, link_lost, battery_low, tilt, disarmed, count };
+enum class PanicCause : uint8_t { none = 0, requested, link_lost, battery_low, tilt, disarmed, imu_lost, count };
 
 // As the debug text says them ("mode: panic (link lost)").
-inline constexpr const char* kPanicCauseNames[] = {"",     "requested",     "link lost", "battery low",
-                                                   "tilt", "arm switch off"};
+inline constexpr const char* kPanicCauseNames[] = {"",     "requested",      "link lost", "battery low",
+                                                   "tilt", "arm switch off", "IMU lost"};
 static_assert(sizeof(kPanicCauseNames) / sizeof(kPanicCauseNames[0]) == static_cast<uint8_t>(PanicCause::count),
               "one name per panic cause");
 
@@ -54,6 +54,9 @@ struct Situation {
   bool landed = false;          // the chain's landed detector: on the ground (in a landing: touched down)
   Pilot pilot = Pilot::pc;      // who flies; last_frame_us is the time of that link's last valid frame
   Pilot requester = Pilot::pc;  // who asks for the mode: the radio's arm switch or the PC link
+  // The sensors' drivers' verdicts (board.hpp SensorHealth; boards without drivers: healthy).
+  bool imu_healthy = true;
+  bool barometer_healthy = true;
 };
 
 class SafetyMachine {

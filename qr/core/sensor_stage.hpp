@@ -52,6 +52,15 @@ static_assert(drivers::mpu6050_sample_rate_hz(kSensorMpuConfig) == kControlHz, "
 inline constexpr uint8_t kImuChannel = 0;
 inline constexpr uint8_t kBarometerChannel = 1;
 
+// What the drivers have counted since power-up, and their verdicts: the figures a flight is
+// judged on beside the truth (qrsim's imu_samples, imu_lost, ...), in a form a board can send.
+struct SensorCounts {
+  enum Count : uint8_t { imu_samples, imu_faults, imu_lost, baro_readings, baro_faults, baro_adc_zero, kCounts };
+  static constexpr uint8_t kImuHealthy = 1, kBarometerHealthy = 2;
+  uint32_t value[kCounts] = {};
+  uint8_t healthy = 0;  // kImuHealthy | kBarometerHealthy
+};
+
 // A board without a sensor bus: nothing to keep.
 template <class B>
 class SensorStage {};
@@ -88,8 +97,40 @@ class SensorStage<B> {
     }
     s.battery_mv = board.battery_mv();
     s.pressure_pa = pressure_pa_;
+    s.health = health();
     stats_.add(board.cycles() - before);
     return s;
+  }
+
+  // What the drivers say of themselves (board.hpp's SensorHealth). The IMU is healthy while it
+  // streams: a failed read holds the last sample and counts, and only the driver's verdict (lost
+  // after kLostAfterFailures in a row, then starting over) ends it. So the address NACK of the
+  // MPU's first 100 ms, counted before it ever streamed, is a start-up like any other, no fault
+  // the flight reacts to: the IMU is simply not healthy yet, as it is not until its first burst.
+  SensorHealth health() const {
+    SensorHealth h;
+    h.imu = imu_.phase() == drivers::Mpu6050Phase::streaming;
+    h.barometer = barometer_.healthy();
+    h.imu_faults = imu_.total_faults();
+    h.barometer_faults = barometer_.total_faults();
+    if (h.imu_faults > 0) h.imu_fault = static_cast<uint8_t>(imu_.last_fault());
+    if (h.barometer_faults > 0) h.barometer_fault = static_cast<uint8_t>(barometer_.last_fault());
+    return h;
+  }
+
+  // The drivers' counts as a board reports them (the devboard's sensor link, EngineFrame).
+  SensorCounts counts() const {
+    SensorCounts c;
+    c.value[SensorCounts::imu_samples] = imu_.samples();
+    c.value[SensorCounts::imu_faults] = imu_.total_faults();
+    c.value[SensorCounts::imu_lost] = imu_.lost_count();
+    c.value[SensorCounts::baro_readings] = barometer_.readings();
+    c.value[SensorCounts::baro_faults] = barometer_.total_faults();
+    c.value[SensorCounts::baro_adc_zero] = barometer_.faults(drivers::Ms5611Fault::adc_zero);
+    const SensorHealth h = health();
+    c.healthy = static_cast<uint8_t>((h.imu ? SensorCounts::kImuHealthy : 0) |
+                                     (h.barometer ? SensorCounts::kBarometerHealthy : 0));
+    return c;
   }
 
   const drivers::Mpu6050& imu() const { return imu_; }

@@ -22,6 +22,7 @@
 #include <qr/sim_runner/pilot.hpp>
 #include <qr/sim_runner/preflight.hpp>
 #include <qr/sim_runner/scenario_score.hpp>
+#include <qr/sim_runner/sensor_faults.hpp>
 
 namespace qrsim {
 namespace {
@@ -172,6 +173,12 @@ void apply(const Event& e, Hands& hands, Pilot& pilot, FullLineConsole* console,
     case Action::download:
       pilot.request(wire::LogDownload{0, e.value == 0 ? wire::LogKind::sensor : wire::LogKind::telemetry, 0, 0});
       break;
+    case Action::nack:
+    case Action::sda_stuck:
+    case Action::imu_identity:
+    case Action::prom_bad:
+    case Action::baro_slow:
+    case Action::fifo_overflow: break;  // on the board: inject_sensor_fault, apply_chip_faults
   }
 }
 
@@ -333,6 +340,21 @@ std::string first_panic_cause(const std::string& text, size_t from) {
   return end == std::string::npos ? std::string() : text.substr(begin, end - begin);
 }
 
+// What the QR told the pilot of its sensors: its fault lines (sensor_fault_report.hpp), whether
+// the first panic was the IMU lost (docs/safety.md rule 20), the last refusal's reason.
+void add_sensor_report_figures(const ConsoleView& view, const FlightRecord& rec, std::vector<Figure>& f) {
+  double lines = 0;
+  for (const char* prefix : {"imu fault: ", "barometer fault: "}) {
+    for (size_t at = view.debug_text.find(prefix); at != std::string::npos; at = view.debug_text.find(prefix, at + 1)) {
+      ++lines;
+    }
+  }
+  f.push_back({"sensor_fault_lines", lines});
+  const char* lost = qr::kPanicCauseNames[static_cast<uint8_t>(qr::PanicCause::imu_lost)];
+  f.push_back({"imu_lost_panic", rec.entered_panic && rec.panic_cause == lost ? 1.0 : 0.0});
+  f.push_back({"last_nack_reason", static_cast<double>(view.last_nack)});
+}
+
 // The binary's own cost in this flight, from the scheduler's statistics the board reported (RV32
 // instructions, exact under QEMU's -icount): the tick, then each task that ran.
 void add_instruction_figures(const DevboardQr& devboard, std::vector<Figure>& f) {
@@ -416,22 +438,27 @@ double i2c_busy_pct(FlyingQr& qr, double sim_s) {
   return sim_s > 0 ? 100.0 * 1e-9 * static_cast<double>(qr.board().i2c().busy_ns()) / sim_s : 0;
 }
 
-// The devboard's drivers run on the board, out of the simulator's sight: only the bus is measured.
+// Where the drivers run: the host build's stage, or the devboard's counts over its sensor link
+// (its stage's time on this host is not the board's: null there).
 void add_sensor_figures(FlyingQr& qr, double sim_s, std::vector<Figure>& f) {
+  const std::optional<qr::SensorCounts> counts = qr.sensor_counts();
   const qr::SensorStage<SimBoard>* stage = qr.sensor_stage();
-  const bool drivers = qr.board().sensor_drivers();
-  if (stage == nullptr || !drivers) {
-    for (const char* name : {"imu_samples", "imu_faults", "baro_readings", "baro_faults"}) f.push_back({name, kNotMeasured});
-    f.push_back({"i2c_busy_pct", drivers ? i2c_busy_pct(qr, sim_s) : kNotMeasured});
-    f.push_back({"sensor_stage_ns_mean", kNotMeasured});
-    return;
-  }
-  f.push_back({"imu_samples", static_cast<double>(stage->imu().samples())});
-  f.push_back({"imu_faults", static_cast<double>(stage->imu().total_faults())});
-  f.push_back({"baro_readings", static_cast<double>(stage->barometer().readings())});
-  f.push_back({"baro_faults", static_cast<double>(stage->barometer().total_faults())});
-  f.push_back({"i2c_busy_pct", i2c_busy_pct(qr, sim_s)});
-  f.push_back({"sensor_stage_ns_mean", static_cast<double>(stage->stats().mean())});
+  const auto count = [&](qr::SensorCounts::Count c) {
+    return counts ? static_cast<double>(counts->value[c]) : kNotMeasured;
+  };
+  const auto healthy = [&](uint8_t bit) { return counts ? ((counts->healthy & bit) != 0 ? 1.0 : 0.0) : kNotMeasured; };
+  using C = qr::SensorCounts;
+  f.push_back({"imu_samples", count(C::imu_samples)});
+  f.push_back({"imu_faults", count(C::imu_faults)});
+  f.push_back({"baro_readings", count(C::baro_readings)});
+  f.push_back({"baro_faults", count(C::baro_faults)});
+  f.push_back({"i2c_busy_pct", counts ? i2c_busy_pct(qr, sim_s) : kNotMeasured});
+  f.push_back({"sensor_stage_ns_mean",
+               counts && stage != nullptr ? static_cast<double>(stage->stats().mean()) : kNotMeasured});
+  f.push_back({"imu_lost", count(C::imu_lost)});
+  f.push_back({"baro_adc_zero", count(C::baro_adc_zero)});
+  f.push_back({"imu_healthy_at_end", healthy(C::kImuHealthy)});
+  f.push_back({"baro_healthy_at_end", healthy(C::kBarometerHealthy)});
 }
 
 // The ESCs' side (frames taken, frames dropped for their check) and the front engine's speed as
@@ -623,6 +650,11 @@ bool ScenarioFlight::play_events(double t) {
     apply(e, hands_, pilot_, console_.get(), plant_);
     if (e.action == Action::param) uploaded_.set(static_cast<uint8_t>(e.param), e.raw);
     if (std::string note = beyond_full_stick(e, uploaded_); !note.empty()) result_.notes.push_back(std::move(note));
+    if (is_sensor_fault(e.action)) {
+      if (std::string note = inject_sensor_fault(e, qr_.board(), qr_.world().now_us()); !note.empty()) {
+        result_.notes.push_back(std::move(note));
+      }
+    }
     const std::string refused = e.action == Action::turn ? qr_.world().start_hand_turn(e.turn) : "";
     if (!refused.empty()) {
       result_.error = script_.origin + ":" + std::to_string(e.line) + ": the turn was refused: " + refused;
@@ -630,6 +662,7 @@ bool ScenarioFlight::play_events(double t) {
     }
   }
   apply_pushes(script_, since, plant_);
+  apply_chip_faults(script_, since, qr_.board());
   pilot_.set_sticks(hands_.sticks(plant_, qr_.parameters()));
   return true;
 }
@@ -685,6 +718,7 @@ void ScenarioFlight::add_end_figures(std::vector<Figure>& f) {
   f.push_back({"speed_m_s_end", sim::norm(s.velocity)});
   f.push_back({"requests_given_up", static_cast<double>(pilot_.view().requests_given_up)});
   f.push_back({"nacks", static_cast<double>(pilot_.view().nacks)});
+  add_sensor_report_figures(pilot_.view(), rec_, f);
 }
 
 }  // namespace

@@ -93,6 +93,9 @@ inline constexpr FigureSpec kFigureTable[] = {
     {"speed_m_s_end", "speed at the end"},
     {"requests_given_up", "pilot requests never answered"},
     {"nacks", "pilot requests refused"},
+    {"sensor_fault_lines", "debug text lines the QR said about sensor faults (imu fault:, barometer fault:)"},
+    {"imu_lost_panic", "1 when the first panic after t0 was the IMU lost, else 0"},
+    {"last_nack_reason", "the reason of the last request the QR refused (docs/protocol.md), 0 for none"},
     // With a console event (full_line_console.hpp); null without one.
     {"line_full_s", "seconds the console sent at the line's full rate"},
     {"line_idle_ms", "time the line towards the QR stood idle while the console sent at the full rate"},
@@ -114,6 +117,10 @@ inline constexpr FigureSpec kFigureTable[] = {
     {"baro_faults", "the MS5611 driver's faults, every kind"},
     {"i2c_busy_pct", "share of the flight's time the I2C wire was busy"},
     {"sensor_stage_ns_mean", "the sensor stage's mean time a tick on this host, ns"},
+    {"imu_lost", "times the MPU-6050 driver declared the chip lost (10 failed reads in a row)"},
+    {"baro_adc_zero", "MS5611 ADC reads of 0 (read too early) the driver discarded"},
+    {"imu_healthy_at_end", "1 when the IMU streams at the end of the flight, else 0"},
+    {"baro_healthy_at_end", "1 when the barometer measures at the end of the flight, else 0"},
 };
 
 constexpr bool is_figure(std::string_view name) {

@@ -11,9 +11,12 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 #include <utility>
 
+#include <common/drivers/mpu6050.hpp>
+#include <common/drivers/ms5611.hpp>
 #include <qr/sim_runner/scenario_figures.hpp>
 #include <qr/sim_runner/text_fields.hpp>
 
@@ -344,6 +347,67 @@ class Reader {
     return fail("log is 'start', 'stop' or 'download sensor|telemetry'");
   }
 
+  // ---- faults on the sensors' bus and chips ----
+
+  // at T nack imu|baro for S: the chip's address NACKs for S seconds.
+  bool nack(const std::vector<std::string>& w, Event& e) {
+    e.action = Action::nack;
+    if (w.size() != 6 || w[4] != "for" || (w[3] != "imu" && w[3] != "baro")) {
+      return fail("nack needs imu|baro for SECONDS");
+    }
+    e.value = w[3] == "imu" ? drivers::mpu6050::kAddressAd0Low : drivers::kMs5611AddressCsbLow;
+    return fault_duration(w[5], e);
+  }
+
+  // at T sda stuck [for S]: the bus answers bus_stuck for S seconds, or for ever.
+  bool sda(const std::vector<std::string>& w, Event& e) {
+    e.action = Action::sda_stuck;
+    if (w.size() == 4 && w[3] == "stuck") {
+      e.duration_s = std::numeric_limits<double>::infinity();
+      return true;
+    }
+    if (w.size() != 6 || w[3] != "stuck" || w[4] != "for") return fail("sda needs 'stuck' or 'stuck for SECONDS'");
+    return fault_duration(w[5], e);
+  }
+
+  // at T imu identity BYTE / at T imu fifo overflow
+  bool imu(const std::vector<std::string>& w, Event& e) {
+    if (w.size() == 5 && w[3] == "fifo" && w[4] == "overflow") {
+      e.action = Action::fifo_overflow;
+      return true;
+    }
+    if (w.size() != 5 || w[3] != "identity") return fail("imu needs 'identity BYTE' or 'fifo overflow'");
+    e.action = Action::imu_identity;
+    char* end = nullptr;
+    const unsigned long v = std::strtoul(w[4].c_str(), &end, 0);
+    if (w[4].empty() || *end != '\0' || v > 0xFF) {
+      return fail("imu identity is a byte (0 .. 255 or 0x00 .. 0xff), not '" + w[4] + "'");
+    }
+    if (v == drivers::mpu6050::kIdentity) {
+      return fail("imu identity 0x68 is the MPU-6050's own: a wrong one is any other");
+    }
+    e.value = static_cast<double>(v);
+    return true;
+  }
+
+  // at T baro prom bad / at T baro slow MS for S
+  bool baro(const std::vector<std::string>& w, Event& e) {
+    if (w.size() == 5 && w[3] == "prom" && w[4] == "bad") {
+      e.action = Action::prom_bad;
+      return true;
+    }
+    if (w.size() != 7 || w[3] != "slow" || w[5] != "for") return fail("baro needs 'prom bad' or 'slow MS for SECONDS'");
+    e.action = Action::baro_slow;
+    if (!get_number(w[4], e.value, "the milliseconds of the slow conversion")) return false;
+    if (e.value <= 0 || e.value > 100) return fail("baro slow must be > 0 and at most 100 ms");
+    return fault_duration(w[6], e);
+  }
+
+  bool fault_duration(const std::string& text, Event& e) {
+    if (!get_number(text, e.duration_s, "the duration")) return false;
+    return (e.duration_s > 0 && e.duration_s <= 3600) || fail("the duration must be > 0 and at most 3600 s");
+  }
+
   bool band(const std::vector<std::string>& w) {
     if (w.size() != 4) return fail("a band is 'band FIGURE OP LIMIT'");
     Band b;
@@ -385,7 +449,8 @@ const EventKeyword Reader::kEventKeywords[] = {
     {"roll", &Reader::roll}, {"pitch", &Reader::pitch}, {"yaw", &Reader::yaw},       {"lift", &Reader::lift},
     {"mode", &Reader::mode}, {"param", &Reader::param}, {"torque", &Reader::torque}, {"force", &Reader::force},
     {"wind", &Reader::wind}, {"turn", &Reader::turn},   {"link", &Reader::link},     {"console", &Reader::console},
-    {"log", &Reader::log},
+    {"log", &Reader::log},   {"nack", &Reader::nack},   {"sda", &Reader::sda},       {"imu", &Reader::imu},
+    {"baro", &Reader::baro},
 };
 
 std::string Reader::event_actions() {

@@ -58,6 +58,13 @@ enum class Action : uint8_t {
   log_stop,     // the pilot stops them
   download,     // value 0: the pilot downloads the whole sensor log, 1: the telemetry log
   turn,         // turn: a hand turns the vehicle about a body axis (sim/hand_turn.hpp)
+  // Faults on the sensors' bus and chips (--sensors drivers; docs/drivers.md section 7, "Faults"):
+  nack,           // value: the 7-bit address that NACKs, for duration_s
+  sda_stuck,      // the bus answers bus_stuck for duration_s (infinity: for ever)
+  imu_identity,   // value: what the MPU's WHO_AM_I reads from now on
+  prom_bad,       // the MS5611's PROM reads with a bad CRC from now on
+  baro_slow,      // value: ms each MS5611 conversion commanded takes beyond its time, for duration_s
+  fifo_overflow,  // the MPU's FIFO overflowed (the driver does not use it)
 };
 
 struct Event {

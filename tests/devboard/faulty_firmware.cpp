@@ -101,6 +101,6 @@ int main() {
   static qr::Scheduler<rv32virt::VirtBoard, FaultyFlight> scheduler(board, flight);
   rv32virt::watch_running_task(scheduler.running_task_cell(), kNames, FaultyFlight::kTaskCount);
   // On the sensor link (qrsim --devboard) every tick is answered, as the flight firmware does.
-  while (scheduler.tick()) board.answer(flight, scheduler.stats().deadline_misses);
+  while (scheduler.tick()) board.answer(flight, scheduler.stats().deadline_misses, scheduler.sensor_stage());
   return 0;  // never: running() stays true
 }

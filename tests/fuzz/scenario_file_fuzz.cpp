@@ -2,7 +2,8 @@
 // Checks, beyond what ASan and UBSan catch: a refused text says where (the origin, then a line
 // number within the text, or the origin alone for what is missing at the end); an accepted one
 // is consistent: events in time order inside the window, at least one band, every band on a
-// known figure, every number finite, every hand turn within its limits and after the last one.
+// known figure, every number finite (a stuck bus's duration may be "for ever"), every hand turn
+// within its limits and after the last one.
 #include <stddef.h>
 #include <stdint.h>
 
@@ -37,7 +38,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   double previous = 0, turned_until = 0;
   for (const qrsim::Event& e : script.events) {
     require(std::isfinite(e.at_s) && e.at_s >= previous && e.at_s < script.seconds);
-    require(std::isfinite(e.value) && std::isfinite(e.duration_s));
+    // A duration is finite, but a stuck bus's "for ever" (infinity).
+    require(std::isfinite(e.value) && !std::isnan(e.duration_s) && e.duration_s >= 0);
+    require(std::isfinite(e.duration_s) || e.action == qrsim::Action::sda_stuck);
     previous = e.at_s;
     if (e.action != qrsim::Action::turn) continue;
     require(sim::hand_turn_problem(e.turn).empty() && e.at_s >= turned_until);

@@ -268,6 +268,24 @@ TEST(Console, QrRefusalIsShownWithItsReason) {
   EXPECT_NE(line->text.find("sensors not calibrated"), std::string::npos);
 }
 
+// A sensor fault as the firmware tells it (qr/core/sensor_fault_report.hpp: which sensor, which
+// kind, how many) is a QR line in the log, and the refusal it causes shows its reason.
+TEST(Console, ASensorFaultAndTheRefusalItCausesAreShown) {
+  Bench b;
+  b.connect();
+  b.qr.say("imu fault: wrong identity (19 since power-up)\n");
+  b.qr.refuse_leaving_safe = wire::NackReason::imu_fault;
+  b.key('3');  // calibration
+  b.run(100);
+  const qrterm::LogLine* fault = b.log.find_last("imu fault:");
+  ASSERT_NE(fault, nullptr);
+  EXPECT_EQ(fault->text, "imu fault: wrong identity (19 since power-up)");
+  EXPECT_EQ(fault->severity, Severity::qr);
+  const qrterm::LogLine* refusal = b.log.find_last("QR refused mode calibration");
+  ASSERT_NE(refusal, nullptr);
+  EXPECT_NE(refusal->text.find("the IMU is not healthy"), std::string::npos) << refusal->text;
+}
+
 TEST(Console, CalibrationThenYawControl) {
   Bench b;
   b.connect();

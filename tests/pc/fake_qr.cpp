@@ -76,6 +76,7 @@ wire::NackReason FakeQr::change_mode(wire::Mode wanted) {
     return wire::NackReason::none;
   }
   if (mode != wire::Mode::safe) return wire::NackReason::not_from_this_mode;
+  if (refuse_leaving_safe != wire::NackReason::none) return refuse_leaving_safe;
   if (!neutral(control)) return wire::NackReason::controls_not_neutral;
   if ((wanted == wire::Mode::yaw_control || wanted == wire::Mode::full_control) && !calibrated) {
     return wire::NackReason::not_calibrated;

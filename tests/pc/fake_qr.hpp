@@ -50,6 +50,9 @@ class FakeQr {
   bool logging = false;
   bool flying_flag = false;                     // the flying/landed verdict's telemetry flag
   std::optional<wire::TelemetryHeight> height;  // sent every telemetry period when set
+  // Not none: every request to leave safe is refused with it (as the firmware's sensor faults,
+  // docs/safety.md rule 20, refuse with imu_fault).
+  wire::NackReason refuse_leaving_safe = wire::NackReason::none;
 
   // --- what it has seen and what it is
   wire::Mode mode = wire::Mode::safe;

@@ -141,6 +141,57 @@ TEST_F(FlightTest, RefusedModeChangeIsNackedWithTheSafetyReason) {
   EXPECT_EQ(nacks[0].reason, wire::NackReason::controls_not_neutral);
 }
 
+// Sensor faults reach the console (qr/core/sensor_fault_report.hpp): which sensor, which kind, how
+// many, at most a line a second per sensor however fast they are counted.
+TEST_F(FlightTest, SensorFaultsAreToldToTheConsoleAtMostOnceASecond) {
+  board.sensors.health.imu_fault = static_cast<uint8_t>(drivers::Mpu6050Fault::bus_stuck);
+  for (uint32_t ms = 0; ms < 3500; ++ms) {
+    board.sensors.health.imu_faults = ms;  // a fault every tick: a stuck bus
+    run_ms(1);
+  }
+  run_ms(30);
+  const std::string text = debug_text();
+  EXPECT_NE(text.find("imu fault: bus stuck ("), std::string::npos) << text;
+  size_t lines = 0;
+  for (size_t at = text.find("imu fault:"); at != std::string::npos; at = text.find("imu fault:", at + 1)) ++lines;
+  EXPECT_GE(lines, 3u);
+  EXPECT_LE(lines, 4u) << "one a second: " << text;
+  EXPECT_EQ(text.find("barometer fault:"), std::string::npos);
+  EXPECT_EQ(flight.tx_dropped_frames(), 0u);
+}
+
+// The MPU's address NACK while it starts (its first 100 ms) is start-up's: counted by the driver,
+// not reported, no refusal once it streams.
+TEST_F(FlightTest, TheImusStartUpNackIsNeitherReportedNorARefusal) {
+  board.sensors.health.imu = false;
+  board.sensors.health.imu_faults = 1;
+  board.sensors.health.imu_fault = static_cast<uint8_t>(drivers::Mpu6050Fault::address_nack);
+  run_ms(240);
+  board.sensors.health.imu = true;
+  run_ms(2000);
+  EXPECT_EQ(debug_text().find("imu fault:"), std::string::npos) << debug_text();
+  calibrate();
+  EXPECT_TRUE(got<wire::Nack>().empty());
+}
+
+// An IMU that never streams (a wrong identity): calibration is refused with imu_fault, and once the
+// start-up's second has passed its faults are told, the kind named.
+TEST_F(FlightTest, AnUnhealthyImuRefusesCalibrationAndSaysWhy) {
+  board.sensors.health.imu = false;
+  board.sensors.health.imu_fault = static_cast<uint8_t>(drivers::Mpu6050Fault::wrong_identity);
+  for (uint32_t ms = 0; ms < 1500; ++ms) {
+    board.sensors.health.imu_faults = ms / 100;  // one each 100 ms, the driver's retry
+    run_ms(1);
+  }
+  request_mode(Mode::calibration);
+  run_ms(30);
+  EXPECT_EQ(flight.mode(), Mode::safe);
+  const auto nacks = got<wire::Nack>();
+  ASSERT_EQ(nacks.size(), 1u);
+  EXPECT_EQ(nacks[0].reason, wire::NackReason::imu_fault);
+  EXPECT_NE(debug_text().find("imu fault: wrong identity ("), std::string::npos) << debug_text();
+}
+
 TEST_F(FlightTest, FullControlNeedsCalibrationThroughTheLink) {
   request_mode(Mode::full_control);
   run_ms(5);

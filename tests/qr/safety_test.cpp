@@ -626,6 +626,82 @@ TEST_F(Safety, TiltDoesNotPanicManual) {
   EXPECT_EQ(machine.mode(), Mode::manual);
 }
 
+// Rule 20: the IMU lost (its driver's verdict: 10 failed reads in a row) in a mode that flies on
+// it is a panic, and the cut (no level to fly a landing by). Manual flies the sticks and needs no
+// sensor: it flies on. Healthy again a tick later changes nothing: the panic is committed.
+TEST_F(Safety, AnImuLostInFlightPanicsAndCuts) {
+  for (Mode mode : {Mode::yaw_control, Mode::full_control, Mode::height_hold, Mode::acro}) {
+    restart();
+    at(1000);
+    enter(mode);
+    s.height_valid = true;
+    s.height_mm = 1500;
+    fly_a_while(550);
+    ASSERT_EQ(machine.mode(), mode);
+    // Healthy for a second: nothing.
+    run_for(1000000);
+    ASSERT_EQ(machine.mode(), mode);
+    s.imu_healthy = false;
+    run_for(kPeriodUs);
+    EXPECT_EQ(machine.mode(), Mode::panic) << wire::mode_name(mode);
+    EXPECT_EQ(machine.panic_cause(), PanicCause::imu_lost);
+    EXPECT_FALSE(machine.landing()) << "without the IMU there is no level to land by: the cut";
+    s.imu_healthy = true;
+    run_for(100000);
+    EXPECT_EQ(machine.mode(), Mode::panic) << "the panic is committed";
+  }
+  // Manual: the IMU lost for twice the driver's 10 ms (and for a second) changes nothing.
+  restart();
+  at(1000);
+  enter(Mode::manual);
+  fly_a_while(550);
+  s.imu_healthy = false;
+  run_for(1000000);
+  EXPECT_EQ(machine.mode(), Mode::manual);
+}
+
+// Rule 20: an IMU that does not stream (a wrong identity, a chip lost on the ground) refuses
+// leaving safe, calibration too, with its reason; the stops are obeyed as ever.
+TEST_F(Safety, AnUnhealthyImuRefusesToLeaveSafe) {
+  at(1000);
+  s.imu_healthy = false;
+  for (Mode mode : {Mode::manual, Mode::calibration, Mode::yaw_control, Mode::full_control, Mode::acro}) {
+    EXPECT_EQ(machine.request(m(mode), s), NackReason::imu_fault) << wire::mode_name(mode);
+    EXPECT_EQ(machine.mode(), Mode::safe);
+  }
+  EXPECT_EQ(machine.request(m(Mode::panic), s), NackReason::none);
+  EXPECT_EQ(machine.request(m(Mode::safe), s), NackReason::none);
+  s.imu_healthy = true;
+  EXPECT_EQ(machine.request(m(Mode::calibration), s), NackReason::none);
+}
+
+// Rule 20: the barometer is needed for height hold alone. Unhealthy, height hold is refused with
+// its reason and left for full control, where the pilot's lift flies; full control arms without
+// it; a panic without it is the cut (its descent flies on the barometer).
+TEST_F(Safety, AnUnhealthyBarometerRefusesHeightHoldAndLeavesIt) {
+  at(1000);
+  s.barometer_healthy = false;
+  enter(Mode::full_control);
+  s.height_valid = true;
+  s.height_mm = 1500;
+  fly_a_while(550);
+  EXPECT_EQ(machine.request(m(Mode::height_hold), s), NackReason::barometer_fault);
+  EXPECT_EQ(machine.mode(), Mode::full_control);
+  run_for(1000000);
+  EXPECT_EQ(machine.mode(), Mode::full_control) << "full control flies on without the barometer";
+  s.barometer_healthy = true;
+  ASSERT_EQ(machine.request(m(Mode::height_hold), s), NackReason::none);
+  run_for(1000000);
+  ASSERT_EQ(machine.mode(), Mode::height_hold);
+  s.barometer_healthy = false;
+  run_for(kPeriodUs);
+  EXPECT_EQ(machine.mode(), Mode::full_control);
+  run_for(1000000);
+  EXPECT_EQ(machine.mode(), Mode::full_control);
+  ASSERT_EQ(machine.request(m(Mode::panic), s), NackReason::none);
+  EXPECT_FALSE(machine.landing()) << "the landing's descent flies on the barometer";
+}
+
 // Rule 10
 TEST_F(Safety, NoEngineStallsWhileLiftIsAboveZero) {
   for (Mode mode : {Mode::manual, Mode::yaw_control, Mode::full_control}) {

@@ -162,6 +162,31 @@ TEST(ScenarioFile, ReadsTurns) {
   EXPECT_EQ(p.script.events[1].turn.axis, sim::BodyAxis::x);
 }
 
+// The sensors' faults: each keyword, its target and its time.
+TEST(ScenarioFile, ReadsSensorFaults) {
+  const Parsed p = parse(
+      "seconds: 9\nat 1 nack imu for 0.05\nat 1 nack baro for 0.2\nat 2 sda stuck for 0.5\nat 3 sda stuck\n"
+      "at 4 imu identity 0x70\nat 4 imu fifo overflow\nat 5 baro prom bad\nat 6 baro slow 5 for 0.05\n"
+      "band final_mode == safe\n");
+  ASSERT_TRUE(p.ok) << p.error;
+  const std::vector<qrsim::Event>& e = p.script.events;
+  ASSERT_EQ(e.size(), 8u);
+  EXPECT_EQ(e[0].action, qrsim::Action::nack);
+  EXPECT_EQ(e[0].value, 0x68);
+  EXPECT_EQ(e[0].duration_s, 0.05);
+  EXPECT_EQ(e[1].value, 0x77);
+  EXPECT_EQ(e[2].action, qrsim::Action::sda_stuck);
+  EXPECT_EQ(e[2].duration_s, 0.5);
+  EXPECT_TRUE(std::isinf(e[3].duration_s)) << "for ever";
+  EXPECT_EQ(e[4].action, qrsim::Action::imu_identity);
+  EXPECT_EQ(e[4].value, 0x70);
+  EXPECT_EQ(e[5].action, qrsim::Action::fifo_overflow);
+  EXPECT_EQ(e[6].action, qrsim::Action::prom_bad);
+  EXPECT_EQ(e[7].action, qrsim::Action::baro_slow);
+  EXPECT_EQ(e[7].value, 5);
+  EXPECT_EQ(e[7].duration_s, 0.05);
+}
+
 TEST(ScenarioFile, DefaultsAreTheVehicleAsWritten) {
   const Parsed p = parse("seconds: 3\nband final_mode == full\n");
   ASSERT_TRUE(p.ok) << p.error;
@@ -252,6 +277,19 @@ const Mistake kMistakes[] = {
      "mine.txt:4: ", "mode height with the pilot's lift hand moving"},
     {"seconds: 3\nat 0 lift still\nat 0 lift 1.02\nat 0.5 mode height\n", "mine.txt:4: ", "lift still"},
     {"seconds: 3\nat 0.5 mode height\nat 0.5 lift still\n", "mine.txt:2: ", "lift still"},
+    // The sensors' faults (docs/drivers.md section 7, "Faults").
+    {"seconds: 3\nat 0 nack gps for 1\n", "mine.txt:2: ", "nack needs imu|baro for SECONDS"},
+    {"seconds: 3\nat 0 nack imu 1\n", "mine.txt:2: ", "nack needs imu|baro for SECONDS"},
+    {"seconds: 3\nat 0 nack imu for 0\n", "mine.txt:2: ", "the duration must be > 0"},
+    {"seconds: 3\nat 0 nack baro for soon\n", "mine.txt:2: ", "bad number 'soon'"},
+    {"seconds: 3\nat 0 sda low\n", "mine.txt:2: ", "sda needs 'stuck' or 'stuck for SECONDS'"},
+    {"seconds: 3\nat 0 sda stuck for -1\n", "mine.txt:2: ", "the duration must be > 0"},
+    {"seconds: 3\nat 0 imu identity 0x100\n", "mine.txt:2: ", "imu identity is a byte"},
+    {"seconds: 3\nat 0 imu identity seventy\n", "mine.txt:2: ", "imu identity is a byte"},
+    {"seconds: 3\nat 0 imu identity 0x68\n", "mine.txt:2: ", "the MPU-6050's own"},
+    {"seconds: 3\nat 0 imu fifo full\n", "mine.txt:2: ", "imu needs 'identity BYTE' or 'fifo overflow'"},
+    {"seconds: 3\nat 0 baro prom good\n", "mine.txt:2: ", "baro needs 'prom bad' or 'slow MS for SECONDS'"},
+    {"seconds: 3\nat 0 baro slow 500 for 1\n", "mine.txt:2: ", "baro slow must be > 0 and at most 100 ms"},
     {"seconds: 3\nstart: sky\n", "mine.txt:2: ", "start: is 'hover', 'ground' or 'safe'"},
     {"seconds: 3\nseconds: 4\n", "mine.txt:2: ", "given twice"},
     {"seconds: 3\nmass: 0\n", "mine.txt:2: ", "outside"},

@@ -21,7 +21,7 @@ int run_firmware() {
   watch_running_task(scheduler.running_task_cell(), wire::kTaskNames, wire::kTaskCount);
   board.attach_statistics(scheduler.stats().task, qr::Flight<Chain>::kTaskCount, &scheduler.stats().tick);
   // On the sensor link every tick is answered with its engines (lock-step with the simulator).
-  while (scheduler.tick()) board.answer(flight, scheduler.stats().deadline_misses);
+  while (scheduler.tick()) board.answer(flight, scheduler.stats().deadline_misses, scheduler.sensor_stage());
   return 0;
 }
 

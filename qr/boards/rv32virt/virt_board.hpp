@@ -22,8 +22,12 @@
 #include <qr/core/board.hpp>
 #include <qr/core/cycle_stats.hpp>
 #include <qr/core/observable_readers.hpp>
+#include <qr/core/sensor_stage.hpp>
 
 namespace rv32virt {
+
+static_assert(sizeof(simlink::EngineFrame::sensor_counts) / sizeof(uint32_t) == qr::SensorCounts::kCounts,
+              "the engines frame carries every count of the sensor stage");
 
 class VirtBoard {
  public:
@@ -69,8 +73,9 @@ class VirtBoard {
   // simulator scores the flight on (the mode, estimate and set-points); else nothing.
   // Out of line and small: it runs after the tick, outside what the scheduler measures, and the
   // image has little room.
-  template <class Flight>
-  [[gnu::noinline, gnu::optimize("Os")]] void answer(const Flight& flight, uint32_t deadline_misses) {
+  template <class Flight, class Stage>
+  [[gnu::noinline, gnu::optimize("Os")]] void answer(const Flight& flight, uint32_t deadline_misses,
+                                                     const Stage& sensors) {
     if (!linked_) return;
     simlink::EngineFrame f;
     f.kick = kick_;
@@ -85,6 +90,11 @@ class VirtBoard {
     f.angles_e4[f.roll_setpoint] = qr::observe<Id::phi_sp>(flight);
     f.angles_e4[f.pitch_setpoint] = qr::observe<Id::theta_sp>(flight);
     f.yaw_rate_setpoint_e3 = qr::observe<Id::r_sp>(flight);
+    if (sensors_on_i2c_) {
+      const qr::SensorCounts c = sensors.counts();
+      f.sensors_healthy = c.healthy;
+      for (int i = 0; i < qr::SensorCounts::kCounts; ++i) f.sensor_counts[i] = c.value[i];
+    }
     send_engines(f);
   }
 

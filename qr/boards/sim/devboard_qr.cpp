@@ -196,6 +196,8 @@ bool DevboardQr::tick() {
   view_.pitch_setpoint_e4 = answer.angles_e4[simlink::EngineFrame::pitch_setpoint];
   view_.yaw_rate_setpoint_e3 = answer.yaw_rate_setpoint_e3;
   view_.deadline_misses = answer.deadline_misses + late_kicks_;
+  sensor_counts_.healthy = answer.sensors_healthy;
+  for (int i = 0; i < qr::SensorCounts::kCounts; ++i) sensor_counts_.value[i] = answer.sensor_counts[i];
   if (answer.stats_row < instructions_.size()) {
     InstructionStats& s = instructions_[answer.stats_row];
     s.reported = true;

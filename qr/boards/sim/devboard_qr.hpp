@@ -43,6 +43,11 @@ class DevboardQr final : public FlyingQr {
   FirmwareView view() const override { return view_; }
   const wire::ParameterValues& parameters() const override { return parameters_; }
   const char* firmware() const override { return "rv32"; }
+  // As the board last reported them in its engines frame.
+  std::optional<qr::SensorCounts> sensor_counts() const override {
+    if (!board_.sensor_drivers()) return std::nullopt;
+    return sensor_counts_;
+  }
   std::string error() const override { return error_; }
 
   // Rows 0 .. task count - 1: the task table's; the last: the whole tick.
@@ -77,6 +82,7 @@ class DevboardQr final : public FlyingQr {
   FirmwareView view_;
   std::vector<InstructionStats> instructions_;
   uint32_t kick_ = 0;
+  qr::SensorCounts sensor_counts_;
   std::vector<uint8_t> refused_;  // channels whose transfer the sim board's bus refused
   uint32_t ground_to_qr_ = 0;    // bytes put on the board's UART so far
   uint32_t ground_from_qr_ = 0;  // bytes the board wrote to it so far

@@ -7,6 +7,7 @@
 #include <stdint.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <common/parameter_table.hpp>
@@ -51,6 +52,8 @@ class FlyingQr {
   virtual qr::SensorSample sensor_sample() { return board().read_sensors(); }
   // The host firmware's sensor stage (its drivers and their figures); null for the devboard's.
   virtual const qr::SensorStage<SimBoard>* sensor_stage() const { return nullptr; }
+  // The sensor drivers' counts and verdicts, where the drivers run (none with the sensors direct).
+  virtual std::optional<qr::SensorCounts> sensor_counts() const = 0;
 };
 
 // The host build of the firmware, in this process.
@@ -83,6 +86,10 @@ class HostQr final : public FlyingQr {
   const char* firmware() const override { return "host"; }
   qr::SensorSample sensor_sample() override { return qr_->firmware.sample(); }
   const qr::SensorStage<SimBoard>* sensor_stage() const override { return &qr_->scheduler.sensor_stage(); }
+  std::optional<qr::SensorCounts> sensor_counts() const override {
+    if (!qr_->board.sensor_drivers()) return std::nullopt;
+    return qr_->scheduler.sensor_stage().counts();
+  }
 
  private:
   std::unique_ptr<SimQr> qr_;

@@ -89,6 +89,9 @@ class SimBoard {
   bool sensor_drivers() const { return sensor_drivers_; }
   const sim::Mpu6050Model& mpu6050() const { return mpu6050_; }
   const sim::Ms5611Model& ms5611() const { return ms5611_; }
+  // The chips themselves, for the faults a scenario injects (set_faults, overflow_fifo).
+  sim::Mpu6050Model& mpu6050_chip() { return mpu6050_; }
+  sim::Ms5611Model& ms5611_chip() { return ms5611_; }
 
   // ---- the radio's end of the receiver line ----
   void radio_send(const uint8_t* bytes, size_t size) { radio_.insert(radio_.end(), bytes, bytes + size); }

@@ -52,8 +52,24 @@ sim::I2cDevice* SimI2cBus::chip(uint8_t address) const {
   return nullptr;
 }
 
+const SimI2cBus::WireWindow* SimI2cBus::fault_at(uint8_t address, uint64_t start_ns) const {
+  for (const WireWindow& w : faults_) {
+    if (start_ns < w.from_ns || start_ns >= w.until_ns) continue;
+    if (w.kind == WireFault::stuck || w.address == address) return &w;
+  }
+  return nullptr;
+}
+
 drivers::I2cResult SimI2cBus::run(const drivers::I2cTransfer& t, uint64_t start_ns, drivers::I2cReply& reply) {
   reply = drivers::I2cReply{};
+  // A wire fault answers before any chip: the chip never sees the transfer.
+  if (const WireWindow* fault = fault_at(t.address, start_ns)) {
+    ++fault_answers_;
+    if (fault->kind == WireFault::stuck) return drivers::I2cResult::bus_stuck;
+    ++address_nacks_;
+    std::fill(reply.data, reply.data + drivers::kI2cMaxRead, static_cast<uint8_t>(0xFF));
+    return drivers::I2cResult::address_nack;
+  }
   sim::I2cDevice* device = chip(t.address);
   if (device == nullptr) {
     ++address_nacks_;

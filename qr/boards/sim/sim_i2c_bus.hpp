@@ -48,11 +48,33 @@ class SimI2cBus {
   uint64_t busy_ns() const { return busy_ns_; }
   uint64_t address_nacks() const { return address_nacks_; }
 
+  // ---- the wire's faults (scenario events, docs/simulator.md section 6.2) ----
+  // A transfer that starts on the wire within [from_us, until_us) of the world's clock: to
+  // `address`, answered with an address NACK and nothing read (the chip browned out, a loose
+  // connector); for a stuck SDA, to any address, `bus_stuck` (a device holds SDA low: no START can
+  // be made; the reply's bytes read 0x00). kForever: to the end of the flight.
+  static constexpr uint64_t kForever = UINT64_MAX;
+  void nack_address(uint8_t address, uint64_t from_us, uint64_t until_us) {
+    faults_.push_back({WireFault::nack, address, from_us * 1000, until_us == kForever ? kForever : until_us * 1000});
+  }
+  void stick_sda(uint64_t from_us, uint64_t until_us) {
+    faults_.push_back({WireFault::stuck, 0, from_us * 1000, until_us == kForever ? kForever : until_us * 1000});
+  }
+  uint64_t fault_answers() const { return fault_answers_; }  // transfers a wire fault answered
+
  private:
   uint64_t now_ns() const { return world_.now_us() * 1000; }
   // The transfer on the wire from `start_ns`, answered by its chip.
   drivers::I2cResult run(const drivers::I2cTransfer& transfer, uint64_t start_ns, drivers::I2cReply& reply);
   sim::I2cDevice* chip(uint8_t address) const;
+  // The wire fault acting on a transfer to `address` starting at `start_ns`, if any.
+  enum class WireFault : uint8_t { nack, stuck };
+  struct WireWindow {
+    WireFault kind;
+    uint8_t address;  // the NACK's; any for a stuck SDA
+    uint64_t from_ns, until_ns;
+  };
+  const WireWindow* fault_at(uint8_t address, uint64_t start_ns) const;
 
   const sim::World& world_;
   std::vector<sim::I2cDevice*> chips_;
@@ -62,6 +84,8 @@ class SimI2cBus {
   uint64_t transfers_ = 0;
   uint64_t busy_ns_ = 0;
   uint64_t address_nacks_ = 0;
+  std::vector<WireWindow> faults_;
+  uint64_t fault_answers_ = 0;
 };
 
 static_assert(drivers::I2cSharedBus<SimI2cBus>);
