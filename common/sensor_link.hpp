@@ -57,7 +57,7 @@ struct SensorFrame {
   constexpr bool valid() const { return sensors_on_i2c <= 1; }
 };
 
-// The sensors' I2C bus carried over the link (docs/devboard.md, "The sensors' bus"): the board's
+// The sensors' I2C bus carried over the link (docs/devboard.md, "The sensor link"): the board's
 // bus sends each transfer a driver begins (common/drivers/i2c.hpp, a channel per driver) as it is
 // begun; the simulator plays it on its chip models at the tick's time, as the host build's bus
 // does, and sends its end before the first kick at which the wire has finished it. In lock-step

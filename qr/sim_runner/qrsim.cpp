@@ -70,6 +70,7 @@ int serve(CommandLine& line) {
   serve.seed = line.seed;
   serve.devboard_elf = flight.devboard_elf;
   serve.devboard_core_mhz = flight.devboard_core_mhz;
+  serve.sensor_drivers = line.sensors_given && flight.sensor_drivers;
   serve.vehicle = line.vehicle ? *line.vehicle : sim::default_vehicle();
   return qrsim::serve(serve);
 }

@@ -18,7 +18,7 @@ namespace {
 
 constexpr const char* kUsage = R"(usage:
   qrsim --serve [--stdio] [--seed N] [--vehicle FILE] [--seconds S] [--status] [--truth-fd N]
-        [--devboard [ELF] [--core-mhz N] | --rc crsf] [--esc dshot]
+        [--devboard [ELF] [--core-mhz N] | --rc crsf] [--esc dshot] [--sensors drivers|direct]
   qrsim --scenario NAME|FILE [--seconds S] [--seed N] [--vehicle FILE] [--param NAME=VALUE]...
         [--no-noise] [--trace FILE.csv] [--record FILE.csv] [--json] [--devboard [ELF] [--core-mhz N]]
         [--rc crsf] [--esc dshot] [--sensors drivers|direct]
@@ -86,11 +86,11 @@ rate) flying in a simulated IN4073-class quadrotor.
   --esc dshot      scenario, sweep, serve: the engines go out as bidirectional DShot frames to
                    simulated ESCs (a bad check keeps the last good value) that answer with the
                    rotor speed's eRPM, reported in telemetry as RPM
-  --sensors WHICH  scenario, sweep: drivers (the default): the MPU-6050 and the MS5611 are
-                   register-level chips on the board's I2C bus (400 kHz, in simulated time),
-                   read by the firmware's own drivers, a sample one tick old (with --devboard
-                   the bus is carried over the sensor link); direct: the board hands the
-                   firmware the plant's sample (docs/drivers.md)
+  --sensors WHICH  scenario, sweep, serve: drivers (the default, but for serve): the MPU-6050
+                   and the MS5611 are register-level chips on the board's I2C bus (400 kHz, in
+                   simulated time), read by the firmware's own drivers, a sample one tick old
+                   (with --devboard the bus is carried over the sensor link); direct (serve's
+                   default): the board hands the firmware the plant's sample (docs/drivers.md)
   --replay IN      run a recording through the flight chain tick by tick (test mode) and write
                    every tick's estimates, controller outputs and engines to --out OUT
                    (docs/replay.md); --double runs the double-precision reference chain
@@ -278,6 +278,7 @@ bool sensors(Arguments& args, CommandLine& line) {
   if (v == nullptr || (std::strcmp(v, "drivers") != 0 && std::strcmp(v, "direct") != 0))
     return refuse("--sensors is drivers or direct");
   line.flight.sensor_drivers = std::strcmp(v, "drivers") == 0;
+  line.sensors_given = true;
   return true;
 }
 

@@ -28,6 +28,7 @@ struct CommandLine {
   bool stdio = false;     // serve
   bool status = false;    // serve
   int truth_fd = -1;      // serve
+  bool sensors_given = false;  // --sensors: serve flies direct unless told drivers
   double seconds = 0;     // 0: the command's own
   uint64_t seed = 1;
   std::optional<sim::VehicleParams> vehicle;

@@ -236,6 +236,7 @@ std::unique_ptr<FlyingQr> make_flying_qr(const ServeOptions& options) {
       return nullptr;
     }
   }
+  if (options.sensor_drivers) qr->board().use_sensor_drivers();
   // The simulated motors have the pole pairs the QR's motor_poles parameter says by default.
   if (options.dshot) qr->board().use_dshot(static_cast<uint8_t>(qr->parameters().get(wire::ParamId::motor_poles) / 2));
   return qr;

@@ -29,6 +29,11 @@ struct ServeOptions {
   // The QR's receiver line carries a radio (--rc crsf, host build only): the console's sticks go
   // through it as CRSF frames at 150 Hz and the side channel moves its switches (serve_radio.hpp).
   bool radio = false;
+  // --sensors drivers: the firmware's drivers read the chip models over the board's I2C bus, as in
+  // a scenario (scenario.hpp). Not the default here: the MPU answers nothing for its first 100 ms
+  // and streams from about 0.24 s, and until then the QR refuses to leave safe (safety.md rule
+  // 20), which a console that asks at once (the tests', a script's) would have to wait out.
+  bool sensor_drivers = false;
 };
 
 // Runs until the firmware stops (the console sent exit), SIGINT or SIGTERM (within a second,

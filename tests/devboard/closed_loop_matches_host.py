@@ -33,7 +33,7 @@ HOST_ONLY = {"sensor_stage_ns_mean"}
 
 def fly(qrsim, scenario, trace, seconds, elf=None):
     # Both through the sensor drivers (the default): on the devboard the sensor link carries the
-    # I2C bus to the simulator's chip models (docs/devboard.md, "The sensors' bus").
+    # I2C bus to the simulator's chip models (docs/devboard.md, "The sensor link").
     cmd = [qrsim, "--scenario", scenario, "--json", "--trace", trace]
     cmd += ["--devboard", elf] if elf else []
     cmd += ["--seconds", str(seconds)] if seconds else []

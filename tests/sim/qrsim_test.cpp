@@ -30,17 +30,22 @@ struct Heard {
 };
 
 // Talks to the QR on (in_fd, out_fd) for `seconds`: control at 50 Hz, one request for
-// calibration; collects what comes back.
-Heard converse(int to_qr, int from_qr, double seconds) {
+// calibration after `ask_after_s`; collects what comes back.
+Heard converse(int to_qr, int from_qr, double seconds, double ask_after_s = 0) {
   Heard heard;
   wire::FrameParser parser(wire::Listen::qr_to_pc);
   const auto write_frame = [&](const wire::FrameBytes& f) {
     ASSERT_EQ(write(to_qr, f.bytes, f.size), static_cast<ssize_t>(f.size));
   };
-  write_frame(wire::encode(wire::ModeChange{5, wire::Mode::calibration}));
   const auto end = Clock::now() + std::chrono::duration<double>(seconds);
+  const auto ask = Clock::now() + std::chrono::duration<double>(ask_after_s);
+  bool asked = false;
   auto next_control = Clock::now();
   while (Clock::now() < end) {
+    if (!asked && Clock::now() >= ask) {
+      write_frame(wire::encode(wire::ModeChange{5, wire::Mode::calibration}));
+      asked = true;
+    }
     if (Clock::now() >= next_control) {
       write_frame(wire::encode(wire::Control{}));
       next_control += std::chrono::milliseconds(20);
@@ -92,25 +97,60 @@ TEST(Qrsim, ServesAPseudoTerminalLikeTheHardware) {
   expect_a_live_qr(heard, 2.0);
 }
 
-TEST(Qrsim, ServesStdio) {
+// The child qrsim with its line on a pipe pair: (to it, from it).
+pid_t serve_on_pipes(std::vector<const char*> args, int& to_qr, int& from_qr) {
   int to_child[2], from_child[2];
-  ASSERT_EQ(pipe(to_child), 0);
-  ASSERT_EQ(pipe(from_child), 0);
+  if (pipe(to_child) != 0 || pipe(from_child) != 0) return -1;
   const pid_t pid = fork();
-  ASSERT_GE(pid, 0);
   if (pid == 0) {
     dup2(to_child[0], STDIN_FILENO);
     dup2(from_child[1], STDOUT_FILENO);
     close(to_child[1]);
     close(from_child[0]);
-    execl(QRSIM_PATH, "qrsim", "--serve", "--stdio", "--seconds", "3", static_cast<char*>(nullptr));
+    args.insert(args.begin(), "qrsim");
+    args.push_back(nullptr);
+    execv(QRSIM_PATH, const_cast<char* const*>(args.data()));
     _exit(127);
   }
   close(to_child[0]);
   close(from_child[1]);
-  const Heard heard = converse(to_child[1], from_child[0], 2.0);
-  close(to_child[1]);
-  close(from_child[0]);
+  to_qr = to_child[1];
+  from_qr = from_child[0];
+  return pid;
+}
+
+// Serve mode through the sensor drivers (--sensors drivers; direct is its default): asked at once,
+// before the IMU streams, the QR refuses calibration (safety.md rule 20: why serve's default is
+// direct); asked at 0.5 s (it streams from about 0.24 s), it calibrates.
+TEST(Qrsim, ServesThroughTheSensorDriversWhenAsked) {
+  int to_qr = -1, from_qr = -1;
+  const pid_t early = serve_on_pipes({"--serve", "--stdio", "--sensors", "drivers", "--seconds", "1"}, to_qr, from_qr);
+  ASSERT_GT(early, 0);
+  const Heard refused = converse(to_qr, from_qr, 0.8);
+  close(to_qr);
+  close(from_qr);
+  waitpid(early, nullptr, 0);
+  EXPECT_FALSE(refused.mode_change_acked);
+  EXPECT_EQ(refused.text.find("mode: calibration\n"), std::string::npos) << refused.text;
+
+  const pid_t pid = serve_on_pipes({"--serve", "--stdio", "--sensors", "drivers", "--seconds", "3"}, to_qr, from_qr);
+  ASSERT_GT(pid, 0);
+  const Heard heard = converse(to_qr, from_qr, 2.0, 0.5);
+  close(to_qr);
+  close(from_qr);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+  expect_a_live_qr(heard, 2.0);
+}
+
+TEST(Qrsim, ServesStdio) {
+  int to_qr = -1, from_qr = -1;
+  const pid_t pid = serve_on_pipes({"--serve", "--stdio", "--seconds", "3"}, to_qr, from_qr);
+  ASSERT_GT(pid, 0);
+  const Heard heard = converse(to_qr, from_qr, 2.0);
+  close(to_qr);
+  close(from_qr);
   int status = 0;
   waitpid(pid, &status, 0);
   EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
