@@ -145,7 +145,8 @@ inline constexpr size_t kMaxLinkPayload = 80;
 inline constexpr size_t kLinkOverhead = 3;  // start, type, check
 inline constexpr size_t kMaxLinkFrame = kMaxLinkPayload + kLinkOverhead;
 static_assert(wire::wire_size<EngineFrame>() <= kMaxLinkPayload && wire::wire_size<SensorFrame>() <= kMaxLinkPayload);
-static_assert(wire::wire_size<I2cBeginFrame>() <= kMaxLinkPayload && wire::wire_size<I2cDoneFrame>() <= kMaxLinkPayload);
+static_assert(wire::wire_size<I2cBeginFrame>() <= kMaxLinkPayload &&
+              wire::wire_size<I2cDoneFrame>() <= kMaxLinkPayload);
 
 // CRC-8 of the wire (crc8.hpp) over a frame's type and payload.
 uint8_t check(const uint8_t* type_and_payload, size_t length);

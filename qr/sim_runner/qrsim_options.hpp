@@ -21,15 +21,15 @@ struct CommandLine {
   Command command = Command::none;
   // scenario, sweep; serve takes the devboard, the radio and the ESCs from it too.
   RunOptions flight;
-  ScenarioScript script;  // --scenario, --sweep: read as soon as it is named
-  int seeds = 30;         // sweep
-  bool draw = true;       // sweep: each run on a vehicle drawn around the scenario's
-  bool json = false;      // scenario
-  bool stdio = false;     // serve
-  bool status = false;    // serve
-  int truth_fd = -1;      // serve
+  ScenarioScript script;       // --scenario, --sweep: read as soon as it is named
+  int seeds = 30;              // sweep
+  bool draw = true;            // sweep: each run on a vehicle drawn around the scenario's
+  bool json = false;           // scenario
+  bool stdio = false;          // serve
+  bool status = false;         // serve
+  int truth_fd = -1;           // serve
   bool sensors_given = false;  // --sensors: serve flies direct unless told drivers
-  double seconds = 0;     // 0: the command's own
+  double seconds = 0;          // 0: the command's own
   uint64_t seed = 1;
   std::optional<sim::VehicleParams> vehicle;
   std::string vehicle_name;

@@ -453,8 +453,8 @@ void add_sensor_figures(FlyingQr& qr, double sim_s, std::vector<Figure>& f) {
   f.push_back({"baro_readings", count(C::baro_readings)});
   f.push_back({"baro_faults", count(C::baro_faults)});
   f.push_back({"i2c_busy_pct", counts ? i2c_busy_pct(qr, sim_s) : kNotMeasured});
-  f.push_back({"sensor_stage_ns_mean",
-               counts && stage != nullptr ? static_cast<double>(stage->stats().mean()) : kNotMeasured});
+  f.push_back(
+      {"sensor_stage_ns_mean", counts && stage != nullptr ? static_cast<double>(stage->stats().mean()) : kNotMeasured});
   f.push_back({"imu_lost", count(C::imu_lost)});
   f.push_back({"baro_adc_zero", count(C::baro_adc_zero)});
   f.push_back({"imu_healthy_at_end", healthy(C::kImuHealthy)});

@@ -21,8 +21,7 @@ std::string inject_sensor_fault(const Event& e, SimBoard& board, uint64_t now_us
   char note[200];
   if (!board.sensor_drivers()) {
     std::snprintf(note, sizeof note,
-                  "at %g s: a sensor fault with the sensors off the bus (--sensors direct): no effect",
-                  e.at_s);
+                  "at %g s: a sensor fault with the sensors off the bus (--sensors direct): no effect", e.at_s);
     return note;
   }
   const uint64_t until_us = std::isinf(e.duration_s) ? SimI2cBus::kForever

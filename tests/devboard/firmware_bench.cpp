@@ -431,8 +431,8 @@ int main() {
   rv32virt::puts(",\"float_over_fixed\":");
   rv32virt::put_ratio(full_float.tick_mean, full.tick_mean == 0 ? 1 : full.tick_mean);
   rv32virt::puts("}\n");
-  return full.tick_mean == 0 || full_float.tick_mean == 0 || full_radio.tick_mean == 0 || drivers_cost.dshot4_mean == 0 ||
-                 sensors.imu_samples != kMeasuredTicks || sensors.faults != 0
+  return full.tick_mean == 0 || full_float.tick_mean == 0 || full_radio.tick_mean == 0 ||
+                 drivers_cost.dshot4_mean == 0 || sensors.imu_samples != kMeasuredTicks || sensors.faults != 0
              ? 1
              : 0;
 }

@@ -83,8 +83,8 @@ class ChipsAtOnce {
 
   // The MS5611 datasheet's example (MEAS MS5611-01BA03, "Pressure and temperature calculation").
   static constexpr uint32_t kD1 = 9085466, kD2 = 8569150;
-  static constexpr drivers::Ms5611Prom kProm =
-      drivers::ms5611_prom_with_crc(drivers::Ms5611Prom{{0, 40127, 36924, 23317, 23282, 33464, 28312, 0}});
+  static constexpr drivers::Ms5611Prom kProm = drivers::ms5611_prom_with_crc(
+      drivers::Ms5611Prom{{0, 40127, 36924, 23317, 23282, 33464, 28312, 0}});
 
   drivers::I2cQueue<kChannels> queue_;
   uint8_t mpu_regs_[128] = {};

@@ -114,12 +114,12 @@ class VirtBoard {
   uint8_t leds_ = 0;
 
   bool linked_ = false;
-  uint32_t kick_ = 0;         // on the link: the kick of the sensors frame flown now
-  uint32_t time_us_ = 0;      // its time stamp
-  uint64_t time_ns_ = 0;      // the same, not wrapping, for the paced transmitter
-  qr::SensorSample sample_;   // its samples
+  uint32_t kick_ = 0;            // on the link: the kick of the sensors frame flown now
+  uint32_t time_us_ = 0;         // its time stamp
+  uint64_t time_ns_ = 0;         // the same, not wrapping, for the paced transmitter
+  qr::SensorSample sample_;      // its samples
   bool sensors_on_i2c_ = false;  // its sensors_on_i2c: the chips on the link's I2C bus
-  uint32_t ground_sent_ = 0;  // bytes written to the UART
+  uint32_t ground_sent_ = 0;     // bytes written to the UART
   const qr::CycleStats* task_stats_ = nullptr;
   const qr::CycleStats* tick_stats_ = nullptr;
   uint8_t task_count_ = 0;

@@ -84,8 +84,8 @@ class DevboardQr final : public FlyingQr {
   uint32_t kick_ = 0;
   qr::SensorCounts sensor_counts_;
   std::vector<uint8_t> refused_;  // channels whose transfer the sim board's bus refused
-  uint32_t ground_to_qr_ = 0;    // bytes put on the board's UART so far
-  uint32_t ground_from_qr_ = 0;  // bytes the board wrote to it so far
+  uint32_t ground_to_qr_ = 0;     // bytes put on the board's UART so far
+  uint32_t ground_from_qr_ = 0;   // bytes the board wrote to it so far
   uint64_t ground_refused_ = 0;
   uint32_t late_kicks_ = 0;  // real time only: periods the round trip ran past
   uint32_t core_mhz_ = 0;
