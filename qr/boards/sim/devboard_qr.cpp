@@ -74,7 +74,9 @@ void DevboardQr::begin_transfer(const simlink::I2cBeginFrame& f) {
 }
 
 // Before a kick: the end of every transfer the wire has finished by now, so that the board's
-// drivers collect in this tick what the host build's would.
+// drivers collect in this tick what the host build's would. In channel order, which is the order
+// they were begun, as the board's bus expects (LinkI2cBus::done): a tick's transfers all end within
+// its period (532.5 us at most of 1000), and the sensor stage begins the IMU's (channel 0) first.
 bool DevboardQr::send_transfer_ends() {
   for (uint8_t channel = 0; channel < SimI2cBus::kChannels; ++channel) {
     drivers::I2cReply reply;
