@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <common/frame_parser.hpp>
@@ -119,42 +120,44 @@ pid_t serve_on_pipes(std::vector<const char*> args, int& to_qr, int& from_qr) {
   return pid;
 }
 
+// A served qrsim on pipes, talked to as converse() does; what it said and how it ended (-1: it
+// could not be started, or did not exit).
+struct Served {
+  Heard heard;
+  int exit_status = -1;
+};
+Served serve_and_converse(std::vector<const char*> args, double seconds, double ask_after_s = 0) {
+  Served out;
+  int to_qr = -1, from_qr = -1;
+  const pid_t pid = serve_on_pipes(std::move(args), to_qr, from_qr);
+  if (pid <= 0) return out;
+  out.heard = converse(to_qr, from_qr, seconds, ask_after_s);
+  close(to_qr);
+  close(from_qr);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  if (WIFEXITED(status)) out.exit_status = WEXITSTATUS(status);
+  return out;
+}
+
 // Serve mode through the sensor drivers (--sensors drivers; direct is its default): asked at once,
 // before the IMU streams, the QR refuses calibration (safety.md rule 20: why serve's default is
 // direct); asked at 0.5 s (it streams from about 0.24 s), it calibrates.
 TEST(Qrsim, ServesThroughTheSensorDriversWhenAsked) {
-  int to_qr = -1, from_qr = -1;
-  const pid_t early = serve_on_pipes({"--serve", "--stdio", "--sensors", "drivers", "--seconds", "1"}, to_qr, from_qr);
-  ASSERT_GT(early, 0);
-  const Heard refused = converse(to_qr, from_qr, 0.8);
-  close(to_qr);
-  close(from_qr);
-  waitpid(early, nullptr, 0);
-  EXPECT_FALSE(refused.mode_change_acked);
-  EXPECT_EQ(refused.text.find("mode: calibration\n"), std::string::npos) << refused.text;
+  const Served refused = serve_and_converse({"--serve", "--stdio", "--sensors", "drivers", "--seconds", "1"}, 0.8);
+  EXPECT_GT(refused.heard.attitude_frames, 0);  // it was there, and refused
+  EXPECT_FALSE(refused.heard.mode_change_acked);
+  EXPECT_EQ(refused.heard.text.find("mode: calibration\n"), std::string::npos) << refused.heard.text;
 
-  const pid_t pid = serve_on_pipes({"--serve", "--stdio", "--sensors", "drivers", "--seconds", "3"}, to_qr, from_qr);
-  ASSERT_GT(pid, 0);
-  const Heard heard = converse(to_qr, from_qr, 2.0, 0.5);
-  close(to_qr);
-  close(from_qr);
-  int status = 0;
-  waitpid(pid, &status, 0);
-  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
-  expect_a_live_qr(heard, 2.0);
+  const Served asked = serve_and_converse({"--serve", "--stdio", "--sensors", "drivers", "--seconds", "3"}, 2.0, 0.5);
+  EXPECT_EQ(asked.exit_status, 0);
+  expect_a_live_qr(asked.heard, 2.0);
 }
 
 TEST(Qrsim, ServesStdio) {
-  int to_qr = -1, from_qr = -1;
-  const pid_t pid = serve_on_pipes({"--serve", "--stdio", "--seconds", "3"}, to_qr, from_qr);
-  ASSERT_GT(pid, 0);
-  const Heard heard = converse(to_qr, from_qr, 2.0);
-  close(to_qr);
-  close(from_qr);
-  int status = 0;
-  waitpid(pid, &status, 0);
-  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
-  expect_a_live_qr(heard, 2.0);
+  const Served served = serve_and_converse({"--serve", "--stdio", "--seconds", "3"}, 2.0);
+  EXPECT_EQ(served.exit_status, 0);
+  expect_a_live_qr(served.heard, 2.0);
 }
 
 // qrsim --serve with the side channel (--truth-fd) on a socket, for `seconds`: command lines in,
