@@ -136,6 +136,19 @@ TEST_F(RadioFlightTest, ThePilotChangesInSafeOnly) {
   EXPECT_EQ(flight.mode(), Mode::manual);
 }
 
+// How the IMU sits in the frame changes in safe only too: in flight it would turn the attitude
+// under the loops (qr/core/chain/imu_mounting.hpp).
+TEST_F(RadioFlightTest, TheImuOrientationChangesInSafeOnly) {
+  run_ms(50);
+  ASSERT_EQ(request_mode(Mode::manual), NackReason::none);
+  EXPECT_EQ(set_param(wire::ParamId::imu_orientation, 1), NackReason::not_from_this_mode);
+  EXPECT_EQ(set_param(wire::ParamId::imu_orientation, 0), NackReason::none) << "the value in force: no change";
+  ASSERT_EQ(request_mode(Mode::safe), NackReason::none);
+  run_ms(3000);
+  ASSERT_EQ(flight.mode(), Mode::safe);
+  EXPECT_EQ(set_param(wire::ParamId::imu_orientation, 1), NackReason::none);
+}
+
 TEST_F(RadioFlightTest, AnArmSwitchOnWhenTheRadioBecomesThePilotDoesNotArm) {
   arm(true);
   make_radio_the_pilot();
