@@ -42,6 +42,8 @@ constexpr OptionSpec kOptions[] = {
      [](Options& o, const std::string&) { return o.no_joystick = true, std::string(); }},
     {"--joystick-map", "FILE", "axes, deadband, abort button (default ./qrterm-joystick.txt)",
      [](Options& o, const std::string& v) { return o.joystick_map = v, std::string(); }},
+    {"--joystick-wizard", nullptr, "find the joystick's axes and fire button step by step, write --joystick-map",
+     [](Options& o, const std::string&) { return o.joystick_wizard = true, std::string(); }},
     {"--params", "FILE", "parameter file, read at start, written at exit (default ./qrterm-params.txt)",
      [](Options& o, const std::string& v) { return o.params = v, std::string(); }},
     {"--log-dir", "DIR", "where the session's files go (default ./logs/<date>-<time>)",
@@ -86,6 +88,8 @@ ParsedCommandLine parse_command_line(const std::vector<std::string>& arguments) 
   }
   if (out.options.port && !out.options.sim.empty())
     out.error = "--port and --sim exclude each other: fly a QR or the simulator";
+  if (out.options.joystick_wizard && out.options.no_joystick)
+    out.error = "--joystick-wizard and --no-joystick exclude each other: the wizard maps a joystick";
   return out;
 }
 
