@@ -19,7 +19,8 @@ struct Options {
   bool no_joystick = false;
   std::string joystick_map = "./qrterm-joystick.txt";
   std::string params = "./qrterm-params.txt";
-  std::string log_dir;  // empty: ./logs/<date>-<time>
+  std::string log_dir;    // empty: ./logs/<date>-<time>
+  int battery_cells = 0;  // 0: counted from the voltage at connection
   bool help = false;
 };
 
