@@ -2,6 +2,8 @@
 
 #include <charconv>
 
+#include <pc/core/battery_gauge.hpp>
+
 namespace qrterm {
 namespace {
 
@@ -48,6 +50,13 @@ constexpr OptionSpec kOptions[] = {
      [](Options& o, const std::string& v) { return o.params = v, std::string(); }},
     {"--log-dir", "DIR", "where the session's files go (default ./logs/<date>-<time>)",
      [](Options& o, const std::string& v) { return o.log_dir = v, std::string(); }},
+    {"--cells", "N", "LiPo cells of the QR's pack, 1..8 (default: counted from its voltage at connection)",
+     [](Options& o, const std::string& v) {
+       const auto [end, error] = std::from_chars(v.data(), v.data() + v.size(), o.battery_cells);
+       if (error != std::errc{} || end != v.data() + v.size() || o.battery_cells < 1 || o.battery_cells > kMaxCells)
+         return "--cells: \"" + v + "\" is not a number of cells, 1.." + std::to_string(kMaxCells);
+       return std::string();
+     }},
     {"--help", nullptr, "this text", [](Options& o, const std::string&) { return o.help = true, std::string(); }},
 };
 

@@ -46,7 +46,7 @@ struct Console::Receiver {
   void operator()(const wire::TelemetryRates& m) { console.telemetry_.on(m); }
   void operator()(const wire::TelemetryEngines& m) { console.telemetry_.on(m); }
   void operator()(const wire::TelemetrySetpoints& m) { console.telemetry_.on(m); }
-  void operator()(const wire::TelemetrySystem& m) { console.telemetry_.on(m); }
+  void operator()(const wire::TelemetrySystem& m) { console.on_system(m); }
   void operator()(const wire::TelemetryLink& m) { console.telemetry_.on(m); }
   void operator()(const wire::TelemetryTask& m) { console.telemetry_.on(m); }
   void operator()(const wire::LogStatus& m) { console.on_log_status(m); }
@@ -62,7 +62,8 @@ struct Console::Receiver {
 
 Console::Console(ConsoleLog& log, ConsoleFiles files, const Setup& setup, uint32_t now_ms)
     : log_(log), recordings_(std::move(files), setup.rx_hex_part_bytes, note_hook()), start_ms_(now_ms),
-      now_ms_(now_ms), link_(now_ms, setup.first_seq), parameters_(setup.params, note_hook()),
+      now_ms_(now_ms), link_(now_ms, setup.first_seq), battery_(setup.battery_cells),
+      parameters_(setup.params, note_hook()),
       downloader_(LogDownloader::Hooks{
           [this](const wire::LogDownload& request) { link_.request(request, now_ms_); },
           [this](const wire::LogResend& request) { link_.request(request, now_ms_); },
@@ -222,6 +223,20 @@ void Console::on_height(const wire::TelemetryHeight& height) {
   if (!warning.empty()) note(Severity::error, warning);
 }
 
+void Console::on_system(const wire::TelemetrySystem& system) {
+  telemetry_.on(system);
+  const wire::ParameterValues& p = parameters_.wanted();
+  const wire::TelemetryEngines engines = telemetry_.engines.value_or(wire::TelemetryEngines{});
+  battery_.on_report(system.battery_mv, engines.engine, static_cast<uint16_t>(p.get(wire::ParamId::battery_sag_mv)),
+                     uptime_ms() / 1000.0);
+  const std::string warning = battery_.notice(static_cast<uint16_t>(p.get(wire::ParamId::battery_panic_mv)));
+  if (!warning.empty()) note(Severity::warning, warning);
+}
+
+std::optional<BatteryReading> Console::battery() const {
+  return battery_.reading(static_cast<uint16_t>(parameters_.wanted().get(wire::ParamId::battery_panic_mv)));
+}
+
 std::optional<double> Console::sinking_m_s() const {
   if (link_state_ != LinkState::up) return std::nullopt;
   return descent_.speed_m_s();
@@ -264,6 +279,7 @@ void Console::on_gave_up(const wire::ResendEvent& event) {
   // quiet; it gives up by itself when nothing comes.
   if (event.type == wire::MessageType::log_download || event.type == wire::MessageType::log_resend) return;
   if (event.type == wire::MessageType::observable_get) return streams_.table_unanswered();
+  if (event.type == wire::MessageType::stream_request) streams_.stream_unanswered();
   note(Severity::error, std::string("no answer from the QR to the ") + request_what(event.type) + " request (" +
                             std::to_string(wire::kMaxSends) + " sends)");
 }
@@ -277,6 +293,7 @@ void Console::on_link_state(LinkState state) {
     // observable table and the plot's stream are asked for again.
     parameters_.send_all();
     streams_.link_up();
+    battery_.link_up();
   } else if (state == LinkState::lost) {
     note(Severity::error,
          "LINK LOST: no valid frame from the QR for " + std::to_string(kLinkLostAfterMs / 1000) + " s");

@@ -8,7 +8,8 @@
 //                          (screens, help, prompt, the plot and parameter screens' keys)
 //   asking the QR          PilotRequests (modes, abort, control), ParameterSync, StreamSession,
 //                          LogDownloader, ExitHandshake
-//   what the QR reports    TelemetryModel, qr_reports (notices), DescentWatch, the Receiver below
+//   what the QR reports    TelemetryModel, qr_reports (notices), DescentWatch, BatteryGauge, the
+//                          Receiver below
 //   the log folder         Recordings (rx.hex, telemetry.csv; files for the others)
 //   the simulator          SimulatorControls (truth channel), radio_pilot (the radio as the pilot)
 #pragma once
@@ -26,6 +27,7 @@
 
 #include <common/messages.hpp>
 #include <common/parameter_table.hpp>
+#include <pc/core/battery_gauge.hpp>
 #include <pc/core/console_log.hpp>
 #include <pc/core/debug_text.hpp>
 #include <pc/core/descent_warning.hpp>
@@ -58,6 +60,7 @@ class Console {
     bool simulator = false;        // the console started qrsim and has its truth channel
     std::string params_file;       // where `params` came from: the parameter screen's "file" column
     size_t rx_hex_part_bytes = kRxHexPartBytes;
+    int battery_cells = 0;  // the pack's LiPo cells (--cells); 0: counted at connection
   };
 
   Console(ConsoleLog& log, ConsoleFiles files, const Setup& setup, uint32_t now_ms);
@@ -99,6 +102,9 @@ class Console {
   LinkState link_state() const { return link_.state(now_ms_); }
   const LinkSession& link() const { return link_; }
   const TelemetryModel& telemetry() const { return telemetry_; }
+  // The battery's charge and time left against the QR's panic threshold (the console's
+  // battery_panic_mv); empty before the first telemetry_system report.
+  std::optional<BatteryReading> battery() const;
   const PilotControls& controls() const { return controls_; }
   const wire::Control& last_control() const { return requests_.last_control(); }
   const wire::ParameterValues& params() const { return parameters_.wanted(); }
@@ -146,6 +152,7 @@ class Console {
   void on_gave_up(const wire::ResendEvent& event);
   void on_attitude(const wire::TelemetryAttitude& attitude);
   void on_height(const wire::TelemetryHeight& height);
+  void on_system(const wire::TelemetrySystem& system);
   void on_log_status(const wire::LogStatus& status);
   void on_link_state(LinkState state);
 
@@ -157,6 +164,7 @@ class Console {
   LinkState link_state_ = LinkState::waiting;
   std::string closed_because_;  // why the line closed, as first said
   TelemetryModel telemetry_;
+  BatteryGauge battery_;
   DebugTextAssembler debug_text_;
   PilotControls controls_;
   ParameterSync parameters_;

@@ -1,4 +1,4 @@
-// The keys of the plot and parameter screens, as one table. They are looked up before the
+// The keys of the plot, parameter and radio screens, as one table. They are looked up before the
 // cockpit's key map, and only on their screen; every other key (the abort keys, modes, lift and the
 // trims, exit) still does what the cockpit's map says, so the pilot flies from any screen. Tab
 // cycles the screens.
@@ -11,9 +11,9 @@
 
 namespace qrterm {
 
-enum class Screen : uint8_t { cockpit, plot, parameters };
-inline constexpr size_t kScreenCount = 3;
-inline constexpr const char* kScreenNames[kScreenCount] = {"cockpit", "plot", "parameters"};
+enum class Screen : uint8_t { cockpit, plot, parameters, radio };
+inline constexpr size_t kScreenCount = 4;
+inline constexpr const char* kScreenNames[kScreenCount] = {"cockpit", "plot", "parameters", "radio"};
 
 enum class ScreenAction : uint8_t {
   none,
@@ -35,6 +35,7 @@ enum class ScreenAction : uint8_t {
   param_all_defaults,
   param_save,  // opens the prompt: a file name
   param_load,
+  radio_ends_again,
 };
 
 struct ScreenKey {
@@ -66,6 +67,7 @@ inline constexpr ScreenKey kScreenKeys[] = {
     {Screen::parameters, '!', ScreenAction::param_all_defaults, "every parameter to its default"},
     {Screen::parameters, kKeyCtrlS, ScreenAction::param_save, "save to a named file"},
     {Screen::parameters, kKeyCtrlO, ScreenAction::param_load, "load a named file"},
+    {Screen::radio, ' ', ScreenAction::radio_ends_again, "count the sticks' ends again from now"},
 };
 
 constexpr ScreenAction screen_action(Screen screen, Key key) {

@@ -12,7 +12,11 @@ ScreenState::Taken ScreenState::key(Key key, double now_s) {
   prompt_.reset();
   if (key == kKeyTab) {
     help_ = false;
+    const Screen left = screen_;
     screen_ = static_cast<Screen>((static_cast<size_t>(screen_) + 1) % kScreenCount);
+    // The radio screen has the QR's streams while it is shown (docs/protocol.md section 13.5).
+    if (screen_ == Screen::radio) streams_.open_radio();
+    if (left == Screen::radio) streams_.close_radio();
     return Taken::by_screen;
   }
   if (screen_key(key, now_s)) {
@@ -49,6 +53,7 @@ bool ScreenState::screen_key(Key key, double now_s) {
     }
     case ScreenAction::param_save: prompt_ = Prompt{PromptKind::save, editor_.file_name()}; break;
     case ScreenAction::param_load: prompt_ = Prompt{PromptKind::load, ""}; break;
+    case ScreenAction::radio_ends_again: streams_.radio().restart_ends(); break;
   }
   return true;
 }

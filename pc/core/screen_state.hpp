@@ -1,7 +1,8 @@
 // What the pilot looks at (docs/console.md "The screen"): which screen, the help over it, and the
 // line being typed on the plot or parameter screen. The keys those screens own (screen_keys.hpp)
-// act here, on the plot's streams and on the parameter editor; every other key is the cockpit's,
-// so the pilot flies from any screen.
+// act here, on the plot's streams, the parameter editor and the radio screen's ends; every other
+// key is the cockpit's, so the pilot flies from any screen. Showing the radio screen gives it the
+// QR's streams, leaving it gives them back to the plot.
 #pragma once
 
 #include <stdint.h>

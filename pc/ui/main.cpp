@@ -291,6 +291,7 @@ int run(int argc, char** argv) {
   setup.first_seq = static_cast<uint8_t>(::time(nullptr));
   setup.simulator = line.sim != nullptr;
   setup.params_file = options.params;
+  setup.battery_cells = options.battery_cells;
   Console console(log, files.for_console(), setup, monotonic_ms());
   note_start(console, line, files.folder(), params, joystick.get(), options);
 

@@ -9,6 +9,8 @@
 #include <common/drivers/erpm.hpp>
 #include <common/drivers/rc_sticks.hpp>
 #include <common/messages.hpp>
+#include <common/observable_table.hpp>
+#include <qr/core/observable_readers.hpp>
 
 #include "fake_flight.hpp"
 
@@ -221,6 +223,20 @@ TEST_F(RadioFlightTest, LinkStatisticsAndThePilotGoToTelemetry) {
   EXPECT_EQ(r.uplink_lq, 97u);
   EXPECT_EQ(r.uplink_snr, -3);
   EXPECT_EQ(r.downlink_lq, 88u);
+}
+
+// The radio screen's channels (docs/console.md): all sixteen as the transmitter sent them, before
+// the channel map and whoever the pilot is; 0 until an RC frame came.
+TEST_F(RadioFlightTest, AllSixteenChannelsReachTheirObservablesAsSent) {
+  const auto rc_ch = [this](uint8_t ch) { return read_observable(flight, wire::kFirstRcChannelObservable + ch); };
+  for (uint8_t ch = 0; ch < drivers::kCrsfChannelCount; ++ch) EXPECT_EQ(rc_ch(ch), 0) << "channel " << ch + 1;
+  for (uint8_t ch = 0; ch < drivers::kCrsfChannelCount; ++ch)
+    radio.value[ch] = static_cast<uint16_t>(drivers::kCrsfChannelMin + 100 * ch + ch);
+  radio.value[15] = drivers::kCrsfChannelMax;
+  run_ms(30);
+  for (uint8_t ch = 0; ch < drivers::kCrsfChannelCount; ++ch)
+    EXPECT_EQ(rc_ch(ch), radio.value[ch]) << "channel " << ch + 1;
+  EXPECT_EQ(flight.pilot(), Pilot::pc) << "the PC flies: the channels are read all the same";
 }
 
 TEST_F(RadioFlightTest, NoRadioNoRadioTelemetry) {
