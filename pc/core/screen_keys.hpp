@@ -1,7 +1,8 @@
-// The keys of the plot and parameter screens, as one table. They are looked up before the
-// cockpit's key map, and only on their screen; every other key (the abort keys, modes, lift and the
-// trims, exit) still does what the cockpit's map says, so the pilot flies from any screen. Tab
-// cycles the screens.
+// The keys of the plot, parameter and orientation check screens, as one table. They are looked up
+// before the cockpit's key map, and only on their screen; every other key (the abort keys, modes,
+// lift and the trims, exit) still does what the cockpit's map says, so the pilot flies from any
+// screen. Tab cycles the cockpit, plot and parameter screens; the orientation check is entered by
+// its key in safe (key_map.hpp) and left by Tab, to the cockpit.
 #pragma once
 
 #include <stddef.h>
@@ -11,9 +12,10 @@
 
 namespace qrterm {
 
-enum class Screen : uint8_t { cockpit, plot, parameters };
-inline constexpr size_t kScreenCount = 3;
-inline constexpr const char* kScreenNames[kScreenCount] = {"cockpit", "plot", "parameters"};
+enum class Screen : uint8_t { cockpit, plot, parameters, orientation };
+inline constexpr size_t kScreenCount = 4;
+inline constexpr size_t kTabScreens = 3;  // the screens Tab goes round, the first three
+inline constexpr const char* kScreenNames[kScreenCount] = {"cockpit", "plot", "parameters", "orientation check"};
 
 enum class ScreenAction : uint8_t {
   none,
@@ -35,6 +37,8 @@ enum class ScreenAction : uint8_t {
   param_all_defaults,
   param_save,  // opens the prompt: a file name
   param_load,
+  orientation_enter,    // start the step; on the verdict, set it or check again
+  orientation_restart,  // from the first step again
 };
 
 struct ScreenKey {
@@ -66,6 +70,8 @@ inline constexpr ScreenKey kScreenKeys[] = {
     {Screen::parameters, '!', ScreenAction::param_all_defaults, "every parameter to its default"},
     {Screen::parameters, kKeyCtrlS, ScreenAction::param_save, "save to a named file"},
     {Screen::parameters, kKeyCtrlO, ScreenAction::param_load, "load a named file"},
+    {Screen::orientation, kKeyEnter, ScreenAction::orientation_enter, "start the step / set it"},
+    {Screen::orientation, kKeyBackspace, ScreenAction::orientation_restart, "from step 1 again"},
 };
 
 constexpr ScreenAction screen_action(Screen screen, Key key) {

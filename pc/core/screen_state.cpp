@@ -12,7 +12,9 @@ ScreenState::Taken ScreenState::key(Key key, double now_s) {
   prompt_.reset();
   if (key == kKeyTab) {
     help_ = false;
-    screen_ = static_cast<Screen>((static_cast<size_t>(screen_) + 1) % kScreenCount);
+    // The orientation check is off the round: Tab leaves it for the cockpit.
+    const size_t next = static_cast<size_t>(screen_) + 1;
+    screen_ = static_cast<Screen>(next >= kTabScreens ? 0 : next);
     return Taken::by_screen;
   }
   if (screen_key(key, now_s)) {
@@ -49,6 +51,8 @@ bool ScreenState::screen_key(Key key, double now_s) {
     }
     case ScreenAction::param_save: prompt_ = Prompt{PromptKind::save, editor_.file_name()}; break;
     case ScreenAction::param_load: prompt_ = Prompt{PromptKind::load, ""}; break;
+    case ScreenAction::orientation_enter: check_.enter(); break;
+    case ScreenAction::orientation_restart: check_.start(); break;
   }
   return true;
 }
