@@ -11,11 +11,21 @@
 
 namespace qr {
 
-enum class PanicCause : uint8_t { none = 0, requested, link_lost, battery_low, tilt, disarmed, imu_lost, count };
+enum class PanicCause : uint8_t {
+  none = 0,
+  requested,
+  link_lost,
+  battery_low,
+  tilt,
+  disarmed,
+  imu_lost,
+  wrong_sign,
+  count
+};
 
 // As the debug text says them ("mode: panic (link lost)").
 inline constexpr const char* kPanicCauseNames[] = {"",     "requested",      "link lost", "battery low",
-                                                   "tilt", "arm switch off", "IMU lost"};
+                                                   "tilt", "arm switch off", "IMU lost",  "wrong sign"};
 static_assert(sizeof(kPanicCauseNames) / sizeof(kPanicCauseNames[0]) == static_cast<uint8_t>(PanicCause::count),
               "one name per panic cause");
 
@@ -57,6 +67,9 @@ struct Situation {
   // The sensors' drivers' verdicts (board.hpp SensorHealth; boards without drivers: healthy).
   bool imu_healthy = true;
   bool barometer_healthy = true;
+  // The sign check's verdict (chain/sign_check.hpp, rule 21): 0, or the axis (1 roll, 2 pitch,
+  // 3 yaw) whose loop the vehicle answers the wrong way.
+  uint8_t wrong_sign = 0;
 };
 
 class SafetyMachine {
