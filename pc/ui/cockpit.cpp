@@ -473,6 +473,8 @@ void Cockpit::compose(const Console& console) {
     draw_plot_screen(console, 4, rows - 4, width, braille_);
   } else if (console.screen() == Screen::parameters) {
     draw_parameter_screen(console, 4, rows - 4, width);
+  } else if (console.screen() == Screen::orientation) {
+    draw_orientation_screen(console, 4, rows - 4, width);
   } else {
     draw_engines_and_attitude(console, width);
     draw_pilot(console, width);
