@@ -25,7 +25,8 @@ std::string hand_tilt_problem(const HandTiltSpec& spec) {
   }
   if (hand_tilt_peak_rate(spec) > kMaxHandTurnRate) {
     char text[120];
-    std::snprintf(text, sizeof text, "peak rate 3 pi |A| / (2 S) = %.2f rad/s is beyond the gyro's 8 rad/s: take longer",
+    std::snprintf(text, sizeof text,
+                  "peak rate 3 pi |A| / (2 S) = %.2f rad/s is beyond the gyro's 8 rad/s: take longer",
                   hand_tilt_peak_rate(spec));
     return text;
   }

@@ -17,7 +17,7 @@ namespace sim {
 
 struct HandTiltSpec {
   BodyAxis axis = BodyAxis::x;
-  double degrees = 45;  // to this angle, negative the other way
+  double degrees = 45;   // to this angle, negative the other way
   double seconds = 1.5;  // out, hold and back, a third each
 };
 

@@ -76,8 +76,10 @@ Console::Console(ConsoleLog& log, ConsoleFiles files, const Setup& setup, uint32
       check_(OrientationCheck::Hooks{
           note_hook(),
           [this] {
+            // What the QR reports, unless a change is on its way to it.
             const wire::ParamId id = wire::ParamId::imu_orientation;
-            return static_cast<int>(parameters_.reported(id).value_or(parameters_.wanted().get(id)));
+            const int32_t wanted = parameters_.wanted().get(id);
+            return static_cast<int>(parameters_.pending(id) ? wanted : parameters_.reported(id).value_or(wanted));
           },
           [this](size_t axis) { return simulator_.hand_tilt(axis); },
           [this](int orientation) { return set_imu_orientation(orientation); }}),
@@ -238,14 +240,16 @@ void Console::open_orientation_check() {
     return note(Severity::warning, "the orientation check runs in safe with the link up: 0 first");
   }
   screens_.show_orientation_check();
-  note(Severity::info, std::string("orientation check: imu_orientation ") + std::to_string(check_.in_force()) +
-                           " in force; Enter starts each step" +
-                           (simulator_.present() ? " (the simulator's hand tilts the QR)" : ", then move the QR by hand"));
+  note(Severity::info,
+       std::string("orientation check: imu_orientation ") + std::to_string(check_.in_force()) +
+           " in force; Enter starts each step" +
+           (simulator_.present() ? " (the simulator's hand tilts the QR)" : ", then move the QR by hand"));
 }
 
 std::string Console::set_imu_orientation(int orientation) {
   const wire::ParamId id = wire::ParamId::imu_orientation;
-  if (parameters_.set(id, orientation) != wire::NackReason::none) return "imu_orientation " + std::to_string(orientation) + " refused";
+  if (parameters_.set(id, orientation) != wire::NackReason::none)
+    return "imu_orientation " + std::to_string(orientation) + " refused";
   const std::string failed = write_param_to_file(params_file_, id, orientation);
   if (!failed.empty()) return "imu_orientation = " + std::to_string(orientation) + " sent, but not kept: " + failed;
   editor_.file_written(params_file_, id, orientation);

@@ -25,6 +25,7 @@ void OrientationCheck::start() {
   step_ = 0;
   results_ = {};
   turned_deg_ = {};
+  rest_.clear();  // a rest from before a new orientation or calibration is no zero for this check
 }
 
 void OrientationCheck::enter() {
@@ -111,7 +112,8 @@ void OrientationCheck::finish_step() {
   verdict_ = infer_mounting(answers, in_force_);
   phase_ = Phase::result;
   const bool explained = verdict_.kind == MountingVerdict::Kind::mounting;
-  hooks_.note(explained ? Severity::info : Severity::warning, "orientation check: " + verdict_text(verdict_, in_force_));
+  hooks_.note(explained ? Severity::info : Severity::warning,
+              "orientation check: " + verdict_text(verdict_, in_force_));
 }
 
 void OrientationCheck::on_mode(wire::Mode mode) {

@@ -61,7 +61,7 @@ class OrientationCheck {
  public:
   struct Hooks {
     std::function<void(Severity, const std::string&)> note;
-    std::function<int()> in_force;         // imu_orientation as the QR has it now
+    std::function<int()> in_force;          // imu_orientation as the QR has it now
     std::function<bool(size_t axis)> hand;  // the simulator's hand tilts the QR the step's way; false: no simulator
     // Sends imu_orientation and writes it into the parameter file: what went wrong, or empty.
     std::function<std::string(int orientation)> set;

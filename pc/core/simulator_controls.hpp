@@ -34,8 +34,8 @@ class SimulatorControls {
   bool act(Action action);
 
   // The orientation check's hand (orientation_check.hpp): it tilts the QR 45 deg the positive
-  // way about body axis `axis` (0 x, 1 y, 2 z), holds it and sets it down as it was, in 1.5 s
-  // (`tilt x 45 1.5`). False, and nothing sent, without a simulator: a person's hand does it.
+  // way about body axis `axis` (0 x, 1 y, 2 z), holds it and sets it down as it was, in 1 s
+  // (`tilt x 45 1`). False, and nothing sent, without a simulator: a person's hand does it.
   bool hand_tilt(size_t axis);
 
   // A mode request while the simulator's radio flies (radio_pilot.hpp): the pilot's hand on the

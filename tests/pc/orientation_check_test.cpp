@@ -6,7 +6,10 @@
 
 #include <array>
 #include <cmath>
+#include <fstream>
 #include <numbers>
+#include <regex>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -117,6 +120,36 @@ TEST(ImuMounting, ABoardOnItsSideOrTwoStepsOnOneAxisAreNoMounting) {
   EXPECT_EQ(qrterm::verdict_text(twice, 0), "two steps moved roll: no mounting does that; check again");
 }
 
+// docs/console.md's table of the eight mountings, what each reads with 0 in force, is the
+// console's: names and readings.
+TEST(ImuMounting, TheManualsTableIsTheConsoles) {
+  std::ifstream in(QR_CONSOLE_DOC);
+  ASSERT_TRUE(in) << QR_CONSOLE_DOC;
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string doc = text.str();
+  const size_t start = doc.find("### The orientation check");
+  ASSERT_NE(start, std::string::npos);
+  const std::string section = doc.substr(start, doc.find("\n## ", start) - start);
+  const std::regex row(R"(\n\| ([0-7]) \| ([^|]+) \| (\w+) ([+-]) \| (\w+) ([+-]) \| (\w+) ([+-]) \|)");
+  constexpr const char* kAxisNames[] = {"roll", "pitch", "yaw"};
+  int rows = 0;
+  for (std::sregex_iterator it(section.begin(), section.end(), row), stop; it != stop; ++it, ++rows) {
+    const std::smatch& m = *it;
+    const int orientation = std::stoi(m[1]);
+    EXPECT_EQ(orientation, rows) << "in order";
+    EXPECT_EQ(m[2].str(), qrterm::mounting_name(orientation));
+    const qrterm::AxisMatrix reads = qrterm::reported_axes(orientation, 0);
+    for (size_t step = 0; step < 3; ++step) {
+      const size_t axis = reads[0][step] != 0 ? 0 : reads[1][step] != 0 ? 1 : 2;
+      EXPECT_EQ(m[3 + 2 * step].str(), kAxisNames[axis]) << "imu_orientation " << orientation << ", step " << step + 1;
+      EXPECT_EQ(m[4 + 2 * step].str(), reads[axis][step] > 0 ? "+" : "-")
+          << "imu_orientation " << orientation << ", step " << step + 1;
+    }
+  }
+  EXPECT_EQ(rows, qrterm::kImuOrientations);
+}
+
 // The check itself, fed telemetry_rates at 50 Hz as the QR sends them while a hand moves it.
 class Bench {
  public:
@@ -124,8 +157,7 @@ class Bench {
 
   Bench()
       : check(qrterm::OrientationCheck::Hooks{
-            [this](qrterm::Severity, const std::string& text) { notes.push_back(text); },
-            [this] { return in_force; },
+            [this](qrterm::Severity, const std::string& text) { notes.push_back(text); }, [this] { return in_force; },
             [this](size_t axis) {
               hands.push_back(axis);
               return simulator;

@@ -43,8 +43,8 @@ TEST_P(HandTiltAbout, HoldsAtTheAngleAndPutsTheVehicleBack) {
     const sim::ImuReading r = world.sample().imu;
     const sim::Vec3 rate = hand.rate(t);
     for (int a = 0; a < 3; ++a) {
-      ASSERT_EQ(r.gyro[static_cast<size_t>(a)], sim::to_counts(rate[a], kGyroCountsPerRadS)) << "axis " << a << " at "
-                                                                                               << t << " us";
+      ASSERT_EQ(r.gyro[static_cast<size_t>(a)], sim::to_counts(rate[a], kGyroCountsPerRadS))
+          << "axis " << a << " at " << t << " us";
     }
     most_deg = std::max(most_deg, euler_of(sim::to_euler(world.plant().state().attitude), axis) * kDegPerRad);
   }
