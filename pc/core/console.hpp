@@ -12,6 +12,7 @@
 //                          Receiver below
 //   the log folder         Recordings (rx.hex, telemetry.csv; files for the others)
 //   the simulator          SimulatorControls (truth channel), radio_pilot (the radio as the pilot)
+//   before the first flight OrientationCheck (is the IMU mounted as the QR takes it?)
 #pragma once
 
 #include <stddef.h>
@@ -35,6 +36,7 @@
 #include <pc/core/key.hpp>
 #include <pc/core/link_session.hpp>
 #include <pc/core/log_downloader.hpp>
+#include <pc/core/orientation_check.hpp>
 #include <pc/core/parameter_editor.hpp>
 #include <pc/core/parameter_sync.hpp>
 #include <pc/core/pilot_controls.hpp>
@@ -117,6 +119,8 @@ class Console {
   const StreamSession& streams() const { return streams_; }
   const ParameterEditor& parameter_editor() const { return editor_; }
   const ParameterSync& parameter_sync() const { return parameters_; }
+  const OrientationCheck& orientation_check() const { return check_; }
+  const std::string& params_file() const { return params_file_; }  // the parameter file the console keeps
   uint32_t telemetry_hz() const;
   uint32_t log_divider() const;  // the parameter the console holds
   uint32_t control_hz() const;
@@ -151,6 +155,11 @@ class Console {
   void on_answer(wire::MessageType type, wire::NackReason reason, const Answer& answer);
   void on_gave_up(const wire::ResendEvent& event);
   void on_attitude(const wire::TelemetryAttitude& attitude);
+  void on_rates(const wire::TelemetryRates& rates);
+  // The orientation check's key: its screen, in safe with the link up.
+  void open_orientation_check();
+  // The orientation check's verdict: imu_orientation sent and written into the parameter file.
+  std::string set_imu_orientation(int orientation);
   void on_height(const wire::TelemetryHeight& height);
   void on_system(const wire::TelemetrySystem& system);
   void on_log_status(const wire::LogStatus& status);
@@ -178,6 +187,8 @@ class Console {
   std::set<uint8_t> unhandled_types_;
   StreamSession streams_;
   ParameterEditor editor_;
+  std::string params_file_;  // the parameter file the console keeps (--params)
+  OrientationCheck check_;
   ScreenState screens_;
   PilotRequests requests_;
 };

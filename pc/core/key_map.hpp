@@ -1,6 +1,7 @@
 // The keyboard, as one table: key -> action. The IN4073 map (ESC, 0-5, 7, a/z, arrows, q/w, u/j,
 // i/k, o/l) plus our keys for the coarse lift and the hover, the filter constants, logs,
-// parameters, the simulator's push, reset, turn and radio arm switch, and help.
+// parameters, the simulator's push, reset, turn and radio arm switch, the orientation check, and
+// help.
 #pragma once
 
 #include <stddef.h>
@@ -61,6 +62,7 @@ inline constexpr KeyBinding kKeyMap[] = {
     {'v', Action::sim_reset},
     {'y', Action::sim_turn},
     {'m', Action::sim_radio_off},
+    {'9', Action::orientation_check},  // beside the mode keys: a step before the first flight, in safe
     {'h', Action::help},
     {'?', Action::help},
 };
@@ -79,7 +81,7 @@ struct HelpEntry {
 };
 std::vector<HelpEntry> help_entries();
 
-// The help overlay at 80x24 holds three columns of 14 entries under the engine rows.
-inline constexpr size_t kHelpEntriesAt80x24 = 3 * 14;
+// The help overlay at 80x24 holds three columns of 15 entries under the engine rows.
+inline constexpr size_t kHelpEntriesAt80x24 = 3 * 15;
 
 }  // namespace qrterm

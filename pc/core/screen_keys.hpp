@@ -1,7 +1,8 @@
-// The keys of the plot, parameter and radio screens, as one table. They are looked up before the
-// cockpit's key map, and only on their screen; every other key (the abort keys, modes, lift and the
-// trims, exit) still does what the cockpit's map says, so the pilot flies from any screen. Tab
-// cycles the screens.
+// The keys of the plot, parameter, radio and orientation check screens, as one table. They are
+// looked up before the cockpit's key map, and only on their screen; every other key (the abort
+// keys, modes, lift and the trims, exit) still does what the cockpit's map says, so the pilot flies
+// from any screen. Tab cycles the cockpit, plot, parameter and radio screens; the orientation check
+// is entered by its key in safe (key_map.hpp) and left by Tab, to the cockpit.
 #pragma once
 
 #include <stddef.h>
@@ -11,9 +12,11 @@
 
 namespace qrterm {
 
-enum class Screen : uint8_t { cockpit, plot, parameters, radio };
-inline constexpr size_t kScreenCount = 4;
-inline constexpr const char* kScreenNames[kScreenCount] = {"cockpit", "plot", "parameters", "radio"};
+enum class Screen : uint8_t { cockpit, plot, parameters, radio, orientation };
+inline constexpr size_t kScreenCount = 5;
+inline constexpr size_t kTabScreens = 4;  // the screens Tab goes round, the first four
+inline constexpr const char* kScreenNames[kScreenCount] = {"cockpit", "plot", "parameters", "radio",
+                                                           "orientation check"};
 
 enum class ScreenAction : uint8_t {
   none,
@@ -36,6 +39,8 @@ enum class ScreenAction : uint8_t {
   param_save,  // opens the prompt: a file name
   param_load,
   radio_ends_again,
+  orientation_enter,    // start the step; on the verdict, set it or check again
+  orientation_restart,  // from the first step again
 };
 
 struct ScreenKey {
@@ -68,6 +73,8 @@ inline constexpr ScreenKey kScreenKeys[] = {
     {Screen::parameters, kKeyCtrlS, ScreenAction::param_save, "save to a named file"},
     {Screen::parameters, kKeyCtrlO, ScreenAction::param_load, "load a named file"},
     {Screen::radio, ' ', ScreenAction::radio_ends_again, "count the sticks' ends again from now"},
+    {Screen::orientation, kKeyEnter, ScreenAction::orientation_enter, "start the step / set it"},
+    {Screen::orientation, kKeyBackspace, ScreenAction::orientation_restart, "from step 1 again"},
 };
 
 constexpr ScreenAction screen_action(Screen screen, Key key) {

@@ -392,11 +392,11 @@ void Cockpit::draw_help(int rows, int width) {
   constexpr int kTop = 8;
   constexpr int kEntry = 6 + static_cast<int>(kActionTextMax);  // "right " and the text
   const int count = static_cast<int>(entries.size());
-  const int columns = (count + 1) / 2 + 3 <= rows - kTop ? 2 : 3;
+  const int columns = (count + 1) / 2 + 2 <= rows - kTop ? 2 : 3;
   const int per_column = (count + columns - 1) / columns;
   const int column_width = std::max(kEntry, std::min(38, (width - 2) / columns));
   const int box_width = std::min(width, columns * column_width + 2);
-  const int box_height = std::min(rows - kTop, per_column + 3);
+  const int box_height = std::min(rows - kTop, per_column + 2);  // the title, the entries, a margin below
   const int top = kTop + std::max(0, (rows - kTop - box_height) / 2);
   const int left = std::max(0, (width - box_width) / 2);
   for (int r = 0; r < box_height; ++r) put(top + r, left, std::string(static_cast<size_t>(box_width), ' '), kTitle);
@@ -404,7 +404,7 @@ void Cockpit::draw_help(int rows, int width) {
   const int column_left = left + (box_width - columns * column_width) / 2;
   for (int i = 0; i < count; ++i) {
     const int column = i / per_column;
-    const int row = top + 2 + i % per_column;
+    const int row = top + 1 + i % per_column;
     if (row >= top + box_height) continue;
     put(row, column_left + column * column_width,
         text("%-5s %s", entries[static_cast<size_t>(i)].keys.c_str(),
@@ -476,6 +476,8 @@ void Cockpit::compose(const Console& console) {
     draw_parameter_screen(console, 4, rows - 4, width);
   } else if (console.screen() == Screen::radio) {
     draw_radio_screen(console, 4, rows - 4, width);
+  } else if (console.screen() == Screen::orientation) {
+    draw_orientation_screen(console, 4, rows - 4, width);
   } else {
     draw_engines_and_attitude(console, width);
     draw_pilot(console, width);

@@ -1,5 +1,6 @@
-// The plot, parameter and radio screens, drawn below the status rows every screen shares (title, mode
-// and link, battery and CPU, QR flags). Each ends in the pilot's prompt or the newest log line.
+// The plot, parameter, radio and orientation check screens, drawn below the status rows every
+// screen shares (title, mode and link, battery and CPU, QR flags). Each ends in the pilot's prompt
+// or the newest log line.
 #pragma once
 
 #include <pc/core/console.hpp>
@@ -10,6 +11,7 @@ namespace qrterm {
 void draw_plot_screen(const Console& console, int top, int rows, int width, bool braille);
 void draw_parameter_screen(const Console& console, int top, int rows, int width);
 void draw_radio_screen(const Console& console, int top, int rows, int width);
+void draw_orientation_screen(const Console& console, int top, int rows, int width);
 // The prompt being typed, else the newest log line, on `row`.
 void draw_prompt_or_log(const Console& console, int row, int width);
 

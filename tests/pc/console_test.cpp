@@ -914,6 +914,32 @@ TEST(Console, TurnKeyTurnsTheSimulatedQrAboutEachAxisInTurn) {
   EXPECT_TRUE(sim.logged("sim: error turn: the engines are running"));
 }
 
+// The orientation check's key: refused without the link or outside safe; in safe its screen, whose
+// Enter has the simulator's hand tilt the QR for the first step, and Tab back to the cockpit.
+TEST(Console, OrientationCheckOpensInSafeAndItsEnterTiltsTheSimulatedQr) {
+  Bench sim(simulator_setup());
+  sim.key('9');
+  EXPECT_TRUE(sim.logged("the orientation check runs in safe with the link up: 0 first"));
+  EXPECT_EQ(sim.console.screen(), qrterm::Screen::cockpit);
+  sim.connect();
+  sim.qr.mode = wire::Mode::manual;
+  sim.run(100);
+  sim.key('9');
+  EXPECT_EQ(sim.console.screen(), qrterm::Screen::cockpit) << "not in manual";
+  sim.qr.mode = wire::Mode::safe;
+  sim.run(100);
+  sim.key('9');
+  ASSERT_EQ(sim.console.screen(), qrterm::Screen::orientation);
+  EXPECT_TRUE(sim.logged("orientation check: imu_orientation 0 in force"));
+  sim.key(qrterm::kKeyEnter);
+  EXPECT_EQ(sim.console.take_sim_commands(), (std::vector<std::string>{"tilt x 45 1\n"}));
+  EXPECT_EQ(sim.console.orientation_check().phase(), qrterm::OrientationCheck::Phase::moving);
+  sim.key('a');
+  EXPECT_EQ(sim.console.controls().control().lift, qrterm::kLiftTrimStep) << "the cockpit's keys still act";
+  sim.key(qrterm::kKeyTab);
+  EXPECT_EQ(sim.console.screen(), qrterm::Screen::cockpit);
+}
+
 // The simulator's radio (qrsim --rc crsf): while the QR says the radio flies, a flight-mode key
 // moves the radio's switches (the mode switch, the arm switch off and on) instead of asking the QR,
 // which would refuse; `m` puts the arm switch off. Other requests still go to the QR, and on a real
