@@ -15,8 +15,8 @@ namespace sim {
 inline constexpr int kRotorCount = 4;
 
 struct RotorGeometry {
-  Vec3 hub;     // body frame, from the centre of mass
-  double spin;  // +1 clockwise seen from above (angular velocity along +z), -1 counter-clockwise
+  Vec3 hub;         // body frame, from the centre of mass
+  double spin;      // +1 clockwise seen from above (angular velocity along +z), -1 counter-clockwise
   double lift = 1;  // thrust per k_f w^2, upwards: 1, or for a motor turning backwards a share down
 };
 

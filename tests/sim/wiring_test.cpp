@@ -28,9 +28,9 @@ TEST(Wiring, RowsReadAndMistakesAreNamed) {
     const char* values;
     const char* said;
   } bad[] = {
-      {"motor_outputs", "0 0 2 3", "each once"},  {"motor_outputs", "0 1 2", "needs 4 numbers"},
-      {"motor_reversed", "0 2 0 0", "0 or 1"},    {"imu_mount_yaw_deg", "45", "0, 90, 180 or 270"},
-      {"gyro_signs", "1 0 1", "1 or -1"},         {"accel_signs", "1 x 1", "not a whole number"},
+      {"motor_outputs", "0 0 2 3", "each once"},    {"motor_outputs", "0 1 2", "needs 4 numbers"},
+      {"motor_reversed", "0 2 0 0", "0 or 1"},      {"imu_mount_yaw_deg", "45", "0, 90, 180 or 270"},
+      {"gyro_signs", "1 0 1", "1 or -1"},           {"accel_signs", "1 x 1", "not a whole number"},
       {"imu_upside_down", "1 1", "needs 1 number"},
   };
   for (const auto& b : bad) {
