@@ -23,11 +23,11 @@ using AllMessages = MessageList<Control, ModeChange, ParamSet, ParamGet, LogStar
                                 Nack, ParamReport, DebugText, TelemetryAttitude, TelemetryRates, TelemetryEngines,
                                 TelemetrySetpoints, TelemetrySystem, TelemetryLink, SensorLogPart, TelemetryLogPart,
                                 TelemetryTask, LogStatus, TelemetryHeight, TelemetryRadio, TelemetryRpm, ObservableGet,
-                                StreamRequest, ObservableInfo, ObservableText, ObservableSamples, LogResend>;
+                                StreamRequest, ObservableInfo, ObservableText, ObservableSamples, LogResend, MotorTest>;
 
 // What the QR receives: it never decodes a message of the other direction (its parser drops them).
 using PcToQrMessages = MessageList<Control, ModeChange, ParamSet, ParamGet, LogStart, LogStop, LogDownload, Exit,
-                                   ObservableGet, StreamRequest, LogResend>;
+                                   ObservableGet, StreamRequest, LogResend, MotorTest>;
 
 template <class... Msgs>
 constexpr bool covers_table(MessageList<Msgs...>) {

@@ -57,6 +57,8 @@ class Quadrotor {
   // mass, in body axes. At rest and level that is the ground's push, (0, 0, -g).
   Vec3 specific_force() const;
   double rotor_phase(int rotor) const { return phase_[static_cast<size_t>(rotor)]; }
+  // Where each rotor sits and which way it turns (rotor order: front, right, back, left).
+  const std::array<RotorGeometry, kRotorCount>& rotors() const { return rotors_; }
 
   const Battery& battery() const { return battery_; }
   double battery_volts() const { return volts_; }

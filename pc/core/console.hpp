@@ -11,6 +11,7 @@
 //   what the QR reports    TelemetryModel, qr_reports (notices), DescentWatch, the Receiver below
 //   the log folder         Recordings (rx.hex, telemetry.csv; files for the others)
 //   the simulator          SimulatorControls (truth channel), radio_pilot (the radio as the pilot)
+//   the motor test         MotorBench (its screen's steps, the truth of which rotor turned)
 #pragma once
 
 #include <stddef.h>
@@ -33,6 +34,7 @@
 #include <pc/core/key.hpp>
 #include <pc/core/link_session.hpp>
 #include <pc/core/log_downloader.hpp>
+#include <pc/core/motor_bench.hpp>
 #include <pc/core/parameter_editor.hpp>
 #include <pc/core/parameter_sync.hpp>
 #include <pc/core/pilot_controls.hpp>
@@ -111,6 +113,7 @@ class Console {
   const StreamSession& streams() const { return streams_; }
   const ParameterEditor& parameter_editor() const { return editor_; }
   const ParameterSync& parameter_sync() const { return parameters_; }
+  const MotorBench& motor_bench() const { return bench_; }
   uint32_t telemetry_hz() const;
   uint32_t log_divider() const;  // the parameter the console holds
   uint32_t control_hz() const;
@@ -148,6 +151,7 @@ class Console {
   void on_height(const wire::TelemetryHeight& height);
   void on_log_status(const wire::LogStatus& status);
   void on_link_state(LinkState state);
+  void open_motor_test();
 
   ConsoleLog& log_;
   Recordings recordings_;
@@ -172,6 +176,7 @@ class Console {
   ParameterEditor editor_;
   ScreenState screens_;
   PilotRequests requests_;
+  MotorBench bench_;
 };
 
 }  // namespace qrterm

@@ -30,6 +30,7 @@ inline constexpr KeyBinding kKeyMap[] = {
     {'5', Action::mode_full_control},
     {'7', Action::height_hold},  // IN4073's height mode key
     {'8', Action::mode_acro},    // after IN4073's keys: the rate loops alone
+    {'9', Action::motor_test},   // the bench's screen, not a mode key: safe only
     {'a', Action::lift_up},
     {'z', Action::lift_down},
     {kKeyPageUp, Action::lift_up_coarse},
@@ -79,7 +80,7 @@ struct HelpEntry {
 };
 std::vector<HelpEntry> help_entries();
 
-// The help overlay at 80x24 holds three columns of 14 entries under the engine rows.
-inline constexpr size_t kHelpEntriesAt80x24 = 3 * 14;
+// The help overlay at 80x24 holds three columns of 15 entries under the engine rows.
+inline constexpr size_t kHelpEntriesAt80x24 = 3 * 15;
 
 }  // namespace qrterm

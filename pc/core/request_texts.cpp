@@ -20,6 +20,7 @@ constexpr RequestText kRequestTexts[] = {
     {wire::MessageType::exit, nullptr, "exit"},
     {wire::MessageType::observable_get, nullptr, "observable table request"},
     {wire::MessageType::stream_request, nullptr, "stream request"},
+    {wire::MessageType::motor_test, nullptr, "motor test"},
 };
 
 const RequestText& request_text(wire::MessageType type) {

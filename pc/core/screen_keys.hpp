@@ -1,7 +1,8 @@
 // The keys of the plot and parameter screens, as one table. They are looked up before the
 // cockpit's key map, and only on their screen; every other key (the abort keys, modes, lift and the
 // trims, exit) still does what the cockpit's map says, so the pilot flies from any screen. Tab
-// cycles the screens.
+// cycles those three screens. The motor test's screen (motor_bench.hpp) is apart: opened by its
+// key in safe, it takes every key but the abort and exit keys (any key stops a spinning engine).
 #pragma once
 
 #include <stddef.h>
@@ -11,9 +12,10 @@
 
 namespace qrterm {
 
-enum class Screen : uint8_t { cockpit, plot, parameters };
-inline constexpr size_t kScreenCount = 3;
-inline constexpr const char* kScreenNames[kScreenCount] = {"cockpit", "plot", "parameters"};
+enum class Screen : uint8_t { cockpit, plot, parameters, motor_test };
+inline constexpr size_t kScreenCount = 4;
+inline constexpr size_t kTabScreens = 3;  // Tab cycles the first three
+inline constexpr const char* kScreenNames[kScreenCount] = {"cockpit", "plot", "parameters", "motor test"};
 
 enum class ScreenAction : uint8_t {
   none,

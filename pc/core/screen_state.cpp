@@ -12,7 +12,7 @@ ScreenState::Taken ScreenState::key(Key key, double now_s) {
   prompt_.reset();
   if (key == kKeyTab) {
     help_ = false;
-    screen_ = static_cast<Screen>((static_cast<size_t>(screen_) + 1) % kScreenCount);
+    screen_ = static_cast<Screen>((static_cast<size_t>(screen_) + 1) % kTabScreens);
     return Taken::by_screen;
   }
   if (screen_key(key, now_s)) {

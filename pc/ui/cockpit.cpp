@@ -26,7 +26,7 @@ double degrees_per_s(int32_t thousandths_rad_s) { return thousandths_rad_s * 1e-
 
 short mode_color(wire::Mode mode) {
   if (mode == wire::Mode::panic) return kAlarm;
-  if (is_flight_mode(mode)) return kWarning;
+  if (is_flight_mode(mode) || mode == wire::Mode::motor_test) return kWarning;  // engines may turn
   return mode == wire::Mode::calibration ? kQr : kInfo;
 }
 
@@ -391,11 +391,11 @@ void Cockpit::draw_help(int rows, int width) {
   constexpr int kTop = 8;
   constexpr int kEntry = 6 + static_cast<int>(kActionTextMax);  // "right " and the text
   const int count = static_cast<int>(entries.size());
-  const int columns = (count + 1) / 2 + 3 <= rows - kTop ? 2 : 3;
+  const int columns = (count + 1) / 2 + 2 <= rows - kTop ? 2 : 3;
   const int per_column = (count + columns - 1) / columns;
   const int column_width = std::max(kEntry, std::min(38, (width - 2) / columns));
   const int box_width = std::min(width, columns * column_width + 2);
-  const int box_height = std::min(rows - kTop, per_column + 3);
+  const int box_height = std::min(rows - kTop, per_column + 2);
   const int top = kTop + std::max(0, (rows - kTop - box_height) / 2);
   const int left = std::max(0, (width - box_width) / 2);
   for (int r = 0; r < box_height; ++r) put(top + r, left, std::string(static_cast<size_t>(box_width), ' '), kTitle);
@@ -403,7 +403,7 @@ void Cockpit::draw_help(int rows, int width) {
   const int column_left = left + (box_width - columns * column_width) / 2;
   for (int i = 0; i < count; ++i) {
     const int column = i / per_column;
-    const int row = top + 2 + i % per_column;
+    const int row = top + 1 + i % per_column;
     if (row >= top + box_height) continue;
     put(row, column_left + column * column_width,
         text("%-5s %s", entries[static_cast<size_t>(i)].keys.c_str(),
@@ -473,6 +473,9 @@ void Cockpit::compose(const Console& console) {
     draw_plot_screen(console, 4, rows - 4, width, braille_);
   } else if (console.screen() == Screen::parameters) {
     draw_parameter_screen(console, 4, rows - 4, width);
+  } else if (console.screen() == Screen::motor_test) {
+    const int below = draw_motor_test_screen(console, 4, width);
+    draw_log(console, below, rows - below, width);
   } else {
     draw_engines_and_attitude(console, width);
     draw_pilot(console, width);

@@ -1,5 +1,5 @@
 // Applying the pilot's messages: each decoded message from the console becomes a change to the
-// flight (sticks, a mode request, a parameter, a log command); for a request, `answer` is what
+// flight (sticks, a mode request, a motor test, a parameter, a log command); for a request, `answer` is what
 // its ack or nack says. Included by flight_link.hpp, whose on_frame() dispatches to it.
 #pragma once
 
@@ -65,6 +65,7 @@ struct FlightRequests {
     answer = NackReason::unknown_parameter;
   }
   void operator()(const wire::Exit&) { f.safety_.request_exit(f.situation()); }
+  void operator()(const wire::MotorTest& m) { answer = f.safety_.request_motor_test(m.engine, m.level, f.situation()); }
   void operator()(const wire::ObservableGet& g) {
     answer = kObservableStreams ? f.streams_.request_table(g.id) : NackReason::not_supported;
   }
