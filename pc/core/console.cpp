@@ -75,8 +75,11 @@ Console::Console(ConsoleLog& log, ConsoleFiles files, const Setup& setup, uint32
       requests_(link_, telemetry_, controls_, input_, simulator_, note_hook()),
       bench_(MotorBench::Hooks{
           [this](uint8_t engine, uint16_t level) { return requests_.motor_test(engine, level, now_ms_); },
-          [this] { requests_.mode(wire::Mode::safe, now_ms_); }, [this] { screens_.show(Screen::cockpit); },
-          note_hook()}) {}
+          [this] { requests_.mode(wire::Mode::safe, now_ms_); },
+          [this](uint8_t engine, uint8_t direction) {
+            link_.request(wire::EscDirection{0, engine, direction}, now_ms_);
+          },
+          [this] { return telemetry_.rpm.has_value(); }, [this] { screens_.show(Screen::cockpit); }, note_hook()}) {}
 
 void Console::set_time(uint32_t now_ms) { now_ms_ = now_ms; }
 

@@ -52,6 +52,7 @@ void MotorBench::key(Key key, uint32_t now_ms) {
       return;
     case BenchStep::spinning: return stop();
     case BenchStep::confirm: return confirm(key);
+    case BenchStep::direction: return set_direction(key);
   }
 }
 
@@ -73,12 +74,27 @@ void MotorBench::confirm(Key key) {
     checks_[engine_] = EngineCheck::confirmed;
   } else if (key == 'n' || key == 'N') {
     checks_[engine_] = EngineCheck::wrong;
+    if (hooks_.dshot()) {
+      step_ = BenchStep::direction;
+      return;
+    }
     hooks_.note(Severity::warning, "engine " + std::to_string(engine_ + 1) +
-                                       ": the wrong rotor or the wrong way; fix its output or its direction");
+                                       ": the wrong rotor or the wrong way; fix its output, or swap two of its motor's "
+                                       "wires");
   } else {
     return;  // the question stands
   }
   step_ = BenchStep::choose;
+}
+
+void MotorBench::set_direction(Key key) {
+  step_ = BenchStep::choose;
+  if (key != '1' && key != '2') return;
+  const auto direction = static_cast<uint8_t>(key - '0');
+  hooks_.direction(engine_, direction);
+  hooks_.note(Severity::info, "engine " + std::to_string(engine_ + 1) + ": its ESC to spin direction " +
+                                  std::to_string(direction) + (direction == 1 ? " (normal)" : " (reversed)") +
+                                  ", saved; spin it again to see");
 }
 
 void MotorBench::mode(wire::Mode mode) {
@@ -148,6 +164,7 @@ std::string MotorBench::prompt() const {
     case BenchStep::confirm:
       return "Did the " + std::string(own.name) + " rotor turn, " + way(own.clockwise) +
              " seen from above?  y: yes   n: no";
+    case BenchStep::direction: return "The wrong way? Its DShot ESC, saved: 1 normal  2 reversed   other key: leave it";
   }
   return "";
 }

@@ -3,7 +3,9 @@
 // the QR's 2 s (docs/safety.md rule 21), and the pilot says whether the rotor that turned is that
 // engine's and turned its way, so a motor on the wrong output or turning the wrong way is found
 // before the first flight. In the simulator the truth channel says which rotor turned and which
-// way. Any key stops a spinning engine.
+// way. Any key stops a spinning engine. With DShot ESCs (the QR reports their RPM) an engine
+// turning the wrong way can be cured from here: its ESC's spin direction, set and saved
+// (docs/safety.md rule 18).
 #pragma once
 
 #include <stddef.h>
@@ -38,10 +40,11 @@ inline constexpr RotorPlace kRotorPlaces[4] = {{"front", true}, {"right", false}
 inline constexpr double kTurningRadS = 10.0;
 
 enum class BenchStep : uint8_t {
-  props,     // asked first: are the propellers off?
-  choose,    // 1-4 spins that engine
-  spinning,  // the QR runs the test; any key stops it
-  confirm,   // the pilot says whether the right rotor turned the right way
+  props,      // asked first: are the propellers off?
+  choose,     // 1-4 spins that engine
+  spinning,   // the QR runs the test; any key stops it
+  confirm,    // the pilot says whether the right rotor turned the right way
+  direction,  // it did not: with DShot ESCs, its ESC's direction may be set
 };
 
 enum class EngineCheck : uint8_t { untested, confirmed, wrong };
@@ -51,7 +54,9 @@ class MotorBench {
   struct Hooks {
     std::function<bool(uint8_t engine, uint16_t level)> spin;  // the motor_test request (engine 0..3); false: not sent
     std::function<void()> stop;                                // a mode change to safe
-    std::function<void()> leave;                               // back to the cockpit
+    std::function<void(uint8_t engine, uint8_t direction)> direction;  // the esc_direction request
+    std::function<bool()> dshot;                                       // the ESCs speak DShot (they answer)
+    std::function<void()> leave;                                       // back to the cockpit
     std::function<void(Severity, const std::string&)> note;
   };
 
@@ -85,6 +90,7 @@ class MotorBench {
   void spin(uint8_t engine, uint32_t now_ms);
   void stop();
   void confirm(Key key);
+  void set_direction(Key key);
   std::string prompt() const;
 
   Hooks hooks_;

@@ -65,6 +65,9 @@ struct FlightRequests {
     answer = NackReason::unknown_parameter;
   }
   void operator()(const wire::Exit&) { f.safety_.request_exit(f.situation()); }
+  void operator()(const wire::EscDirection& d) {
+    answer = f.esc_direction_.request(d.engine, d.direction, f.safety_.mode(), f.engines_, f.tick_us_);
+  }
   void operator()(const wire::MotorTest& m) { answer = f.safety_.request_motor_test(m.engine, m.level, f.situation()); }
   void operator()(const wire::ObservableGet& g) {
     answer = kObservableStreams ? f.streams_.request_table(g.id) : NackReason::not_supported;

@@ -35,6 +35,9 @@ wire::FrameBytes submit(wire::ResendQueue& queue, uint8_t which, uint8_t value, 
       return queue.submit(wire::MotorTest{0, static_cast<uint8_t>(value % 4),
                                           static_cast<uint16_t>(value % (wire::kMotorTestMaxLevel + 1))},
                           now);
+    case 10:
+      return queue.submit(wire::EscDirection{0, static_cast<uint8_t>(value % 4), static_cast<uint8_t>(value % 2 + 1)},
+                          now);
     default: return queue.submit(wire::Exit{}, now);
   }
 }

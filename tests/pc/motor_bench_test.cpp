@@ -24,13 +24,17 @@ struct MotorTestScreen : ::testing::Test {
   int stops = 0;
   int leaves = 0;
   std::vector<std::string> notes;
-  bool send = true;  // the spin hook sends its request
-  MotorBench bench{MotorBench::Hooks{[this](uint8_t engine, uint16_t level) {
-                                       if (send) spins.emplace_back(engine, level);
-                                       return send;
-                                     },
-                                     [this] { ++stops; }, [this] { ++leaves; },
-                                     [this](qrterm::Severity, const std::string& text) { notes.push_back(text); }}};
+  bool send = true;    // the spin hook sends its request
+  bool dshot = false;  // the QR's ESCs answer: DShot
+  std::vector<std::pair<uint8_t, uint8_t>> directions;
+  MotorBench bench{MotorBench::Hooks{
+      [this](uint8_t engine, uint16_t level) {
+        if (send) spins.emplace_back(engine, level);
+        return send;
+      },
+      [this] { ++stops; }, [this](uint8_t engine, uint8_t direction) { directions.emplace_back(engine, direction); },
+      [this] { return dshot; }, [this] { ++leaves; },
+      [this](qrterm::Severity, const std::string& text) { notes.push_back(text); }}};
   uint32_t now = 1000;
 
   void key(qrterm::Key k) { bench.key(k, now); }
@@ -114,6 +118,33 @@ TEST_F(MotorTestScreen, ARefusalNoAnswerOrARequestNotSentGoesBackToChoosing) {
   EXPECT_EQ(bench.step(), BenchStep::choose);
   send = false;  // the console's own check refused it (a lift trim standing)
   key('1');
+  EXPECT_EQ(bench.step(), BenchStep::choose);
+}
+
+// With DShot ESCs an engine found wrong may have its ESC's direction set (and saved); without,
+// the log says what to do by hand.
+TEST_F(MotorTestScreen, WithDshotEscsAWrongEnginesDirectionCanBeSetInItsEsc) {
+  opened();
+  key('3');
+  qr_runs_the_test();
+  key('n');
+  EXPECT_EQ(bench.step(), BenchStep::choose) << "no DShot: nothing to set from here";
+  EXPECT_NE(notes.back().find("swap two of its motor's wires"), std::string::npos) << notes.back();
+  dshot = true;
+  key('3');
+  qr_runs_the_test();
+  key('n');
+  ASSERT_EQ(bench.step(), BenchStep::direction);
+  EXPECT_NE(bench.lines().back().find("1 normal  2 reversed"), std::string::npos) << bench.lines().back();
+  key('2');
+  ASSERT_EQ(directions.size(), 1u);
+  EXPECT_EQ(directions[0], (std::pair<uint8_t, uint8_t>{2, 2})) << "engine 3's ESC (the wire's 2), reversed";
+  EXPECT_EQ(bench.step(), BenchStep::choose);
+  key('1');
+  qr_runs_the_test();
+  key('n');
+  key('x');
+  EXPECT_EQ(directions.size(), 1u) << "any other key leaves the ESC as it is";
   EXPECT_EQ(bench.step(), BenchStep::choose);
 }
 

@@ -104,10 +104,12 @@ bool SimBoard::esc_answers(qr::EscAnswers& answers) {
   return true;
 }
 
-bool SimBoard::esc_command(uint8_t command) {
+bool SimBoard::esc_command(uint8_t command, uint8_t engines) {
   if (!dshot_) return false;
   bool all = true;
-  for (size_t i = 0; i < 4; ++i) all = sequencers_[i].request(command, engines_.value[i]) && all;
+  for (size_t i = 0; i < 4; ++i) {
+    if ((engines >> i & 1u) != 0) all = sequencers_[i].request(command, engines_.value[i]) && all;
+  }
   return all;
 }
 
