@@ -23,6 +23,7 @@ enum class NackReason : uint8_t {
   radio_is_pilot = 13,    // a flight mode asked for by the PC while the radio flies: its arm switch arms
   imu_fault = 14,         // leaving safe while the IMU's driver does not stream (docs/safety.md rule 20)
   barometer_fault = 15,   // height hold while the barometer's driver does not measure (rule 20)
+  sign_check = 16,        // the vehicle answers a loop the wrong way (docs/safety.md rule 21)
 };
 
 struct NackReasonSpec {
@@ -47,6 +48,7 @@ inline constexpr NackReasonSpec kNackReasons[] = {
     {NackReason::radio_is_pilot, "radio_is_pilot", "the radio is the pilot: arm with its switch"},
     {NackReason::imu_fault, "imu_fault", "the IMU is not healthy (its faults are in the debug text)"},
     {NackReason::barometer_fault, "barometer_fault", "the barometer is not healthy: no height to hold"},
+    {NackReason::sign_check, "sign_check", "a loop answers the wrong way (the debug text names the axis)"},
 };
 
 constexpr const NackReasonSpec* find_nack_reason(NackReason reason) {

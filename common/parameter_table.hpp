@@ -99,7 +99,11 @@ namespace wire {
   ROW(gyro_turns, 39, 0, 0, 10, 0, "turns", \
       "the next calibration, after its half second at rest, waits while the vehicle is turned this many " \
       "whole turns about one body axis and set down still, and sets that axis' gyro_scale_*_ppm from the " \
-      "rate it summed (docs/signal-chain.md); back to 0 when it ends, found or not. 0: a calibration at rest")
+      "rate it summed (docs/signal-chain.md); back to 0 when it ends, found or not. 0: a calibration at rest") \
+  ROW(imu_orientation, 40, 0, 0, 7, 0, "mounting", \
+      "how the IMU's board sits in the frame: 0 as drawn; 1, 2, 3 turned 90, 180, 270 deg clockwise seen from " \
+      "above; 4..7 the same, then upside down (qr/core/chain/imu_mounting.hpp); the orientation check finds it; " \
+      "changed in safe only, then calibrate again")
 
 enum class ParamId : uint8_t {
 #define WIRE_PARAMETER_ENUMERATOR(name, id, frac_bits, min, max, default_value, unit, meaning) name = id,

@@ -167,7 +167,7 @@ struct LogResend {
   constexpr void want(size_t bit) { parts[bit / 8] = static_cast<uint8_t>(parts[bit / 8] | (1u << (bit % 8))); }
 };
 
-// The motor test (docs/safety.md rule 21): one engine (0 front, 1 right, 2 back, 3 left) at
+// The motor test (docs/safety.md rule 22): one engine (0 front, 1 right, 2 back, 3 left) at
 // `level` engine units for 2 s, on the bench with the propellers off, so that an engine on the
 // wrong output or turning the wrong way is found there. The level is at most 20 % of full: enough
 // to see a motor turn, too little to lift the vehicle with its propellers on.

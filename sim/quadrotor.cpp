@@ -31,7 +31,10 @@ Quadrotor::Quadrotor(const VehicleParams& vehicle)
 }
 
 void Quadrotor::set_engines(const std::array<uint16_t, kRotorCount>& commands) {
-  for (size_t i = 0; i < kRotorCount; ++i) commands_[i] = std::min<uint16_t>(commands[i], 1000);
+  // The wiring: output i drives the rotor it is soldered to.
+  for (size_t i = 0; i < kRotorCount; ++i) {
+    commands_[static_cast<size_t>(vehicle_.wiring.rotor_of_output[i])] = std::min<uint16_t>(commands[i], 1000);
+  }
 }
 
 void Quadrotor::set_disturbance(const Vec3& torque_body, const Vec3& force_world) {

@@ -37,7 +37,8 @@ class Quadrotor {
  public:
   explicit Quadrotor(const VehicleParams& vehicle);
 
-  // Engine commands 0..1000 (engine order of docs/conventions.md), held until changed.
+  // Engine outputs 0..1000 (engine order of docs/conventions.md), held until changed; the vehicle's
+  // wiring says which rotor each output drives.
   void set_engines(const std::array<uint16_t, kRotorCount>& commands);
   // External loads (a gust, a push), held until changed: a torque in body axes and a force in
   // world axes, both acting on the centre of mass.
@@ -70,6 +71,7 @@ class Quadrotor {
   // distance it can sink. In that time the contact term is zero and the plant has no stiff part.
   bool clear_of_ground_for(double seconds) const;
   const VehicleParams& vehicle() const { return vehicle_; }
+  // Per rotor: output i's command drives rotor wiring.rotor_of_output[i].
   const std::array<uint16_t, kRotorCount>& engines() const { return commands_; }
 
   // The engine command (all four equal) that settles the rotors at `speed`, with the battery

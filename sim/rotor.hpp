@@ -1,4 +1,4 @@
-// One rotor on its motor: where it sits, which way it spins, how its speed follows the engine
+// One rotor on its motor: where it sits, which way it spins (the vehicle's wiring may reverse it), how its speed follows the engine
 // command, and what it does to the airframe. Layout and signs from docs/conventions.md: engines
 // 0 front, 1 right, 2 back, 3 left; front and back spin clockwise seen from above (their angular
 // velocity points along body +z, down), left and right counter-clockwise.
@@ -17,6 +17,7 @@ inline constexpr int kRotorCount = 4;
 struct RotorGeometry {
   Vec3 hub;     // body frame, from the centre of mass
   double spin;  // +1 clockwise seen from above (angular velocity along +z), -1 counter-clockwise
+  double lift = 1;  // thrust per k_f w^2, upwards: 1, or for a motor turning backwards a share down
 };
 
 std::array<RotorGeometry, kRotorCount> rotor_geometry(const VehicleParams& vehicle);
@@ -52,7 +53,7 @@ inline Wrench rotor_wrench(const VehicleParams& v, const RotorGeometry& rotor, d
   const double w2 = speed * speed;
   const Vec3 inplane_drag{-v.rotor_drag_coeff * speed * hub_air_velocity.x,
                           -v.rotor_drag_coeff * speed * hub_air_velocity.y, 0};
-  Wrench w = at_point(rotor.hub, Vec3{0, 0, -v.thrust_coeff * w2} + inplane_drag);
+  Wrench w = at_point(rotor.hub, Vec3{0, 0, -rotor.lift * v.thrust_coeff * w2} + inplane_drag);
   const Vec3 momentum{0, 0, rotor.spin * v.rotor_inertia * speed};
   w.torque += Vec3{0, 0, -rotor.spin * (v.torque_coeff * w2 + v.rotor_inertia * speed_rate)};
   w.torque -= cross(body_rate, momentum);

@@ -134,6 +134,13 @@ bool parse_vehicle(const std::string& text, VehicleParams& out, std::string& err
     }
     const std::string name = trim(content.substr(0, eq));
     const std::string value = trim(content.substr(eq + 1));
+    if (is_wiring_name(name)) {
+      if (!parse_wiring_row(name, value, v.wiring, error)) {
+        error = "line " + std::to_string(number) + ": " + error;
+        return false;
+      }
+      continue;
+    }
     size_t row = 0;
     while (row < kRowCount && name != kRows[row].name) ++row;
     if (row == kRowCount) {

@@ -8,6 +8,7 @@
 #include <string>
 
 #include <sim/vec3.hpp>
+#include <sim/wiring.hpp>
 
 namespace sim {
 
@@ -72,6 +73,9 @@ struct VehicleParams {
   double baro_temp_coeff_pa_per_k = 0.5;  // residual pressure error per kelvin of warming
   double baro_warmup_k = 5.0;             // the board's warming after power-up
   double baro_warmup_tau_s = 120.0;       // ... and its time constant
+
+  // How it is put together (sim/wiring.hpp): optional rows, the right wiring when absent.
+  Wiring wiring;
 
   // Derived
   // rad/s per volt at full command

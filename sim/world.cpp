@@ -109,14 +109,18 @@ VibrationSample World::vibration() const {
 SensorReading World::sample() {
   SensorReading out;
   const Vec3 specific_force = hand_ ? held_specific_force(plant_.state().attitude, kGravity) : plant_.specific_force();
+  // The IMU reads the body's motion through its mounting (the vehicle's wiring: right by default).
+  const Wiring& wiring = plant_.vehicle().wiring;
+  const Vec3 rate = imu_gyro_axes(wiring, plant_.state().rate);
+  const Vec3 force = imu_accel_axes(wiring, specific_force);
   if (mpu_ != nullptr) {
-    const ImuSense body = imu_.sense(plant_.state().rate, specific_force, vibration());
+    const ImuSense body = imu_.sense(rate, force, vibration());
     // Mounted flat, X forward: chip (x, y, z) = body (x, -y, -z).
     const ImuSense chip{{body.rate.x, -body.rate.y, -body.rate.z},
                         {body.specific_force.x, -body.specific_force.y, -body.specific_force.z}};
     mpu_->sample(static_cast<double>(now_us_) * 1e-6, chip, barometer_.temperature_c(now_us_));
   } else {
-    out.imu = imu_.sample(plant_.state().rate, specific_force, vibration());
+    out.imu = imu_.sample(rate, force, vibration());
     out.pressure_pa = barometer_.pressure_pa();
   }
   out.battery_mv = battery_sensor_.read_mv(plant_.battery_volts());

@@ -1,6 +1,6 @@
 // The motor test screen's logic (docs/console.md "The motor test"), as Betaflight Configurator's
 // motors tab does it: on the bench, propellers off, one engine at a time spins at a low level for
-// the QR's 2 s (docs/safety.md rule 21), and the pilot says whether the rotor that turned is that
+// the QR's 2 s (docs/safety.md rule 22), and the pilot says whether the rotor that turned is that
 // engine's and turned its way, so a motor on the wrong output or turning the wrong way is found
 // before the first flight. In the simulator the truth channel says which rotor turned and which
 // way. Any key stops a spinning engine. With DShot ESCs (the QR reports their RPM) an engine

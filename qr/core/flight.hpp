@@ -134,6 +134,7 @@ class Flight {
   void run_calibration() {
     if (chain_.calibrate()) {
       if (const chain::GyroTurnsResult* turns = chain_.take_gyro_turns()) take_gyro_turns(*turns);
+      say_calibration_verdict();
       safety_.calibration_finished();
     }
   }
@@ -247,6 +248,7 @@ class Flight {
   }
   void announce_mode();
   void say_esc_direction(bool saved);
+  void say_calibration_verdict();
   void report_sensor_faults();
   void say_sensor_faults();
   void send(const wire::FrameBytes& frame) {
@@ -273,6 +275,7 @@ class Flight {
     s.landed = chain_.landed();
     s.imu_healthy = sample_.health.imu;
     s.barometer_healthy = sample_.health.barometer;
+    s.wrong_sign = static_cast<uint8_t>(chain_.wrong_sign());
     return s;
   }
 

@@ -4,6 +4,8 @@
 #pragma once
 
 #include <qr/core/flight.hpp>
+#include <qr/core/chain/sensor_calibration.hpp>
+#include <qr/core/chain/sign_check.hpp>
 #include <qr/core/flight_log_lines.hpp>
 
 namespace qr {
@@ -41,6 +43,10 @@ template <SignalChain Chain>
   if (now == Mode::panic) {
     say(" (");
     say(kPanicCauseNames[static_cast<uint8_t>(safety_.panic_cause())]);
+    if (safety_.panic_cause() == PanicCause::wrong_sign) {
+      say(": ");
+      say(chain::kSignAxisNames[static_cast<uint8_t>(chain_.wrong_sign())]);
+    }
     say(")");
   }
   say("\n");
@@ -54,6 +60,21 @@ template <SignalChain Chain>
   line[22] = static_cast<char>('0' + esc_direction_.direction());
   say(line);
   say(saved ? ", saved\n" : " not set (an engine turned, or no DShot ESC took it)\n");
+}
+
+// A calibration that refused its offsets, or whose sign probe found a loop pushing its error
+// further (rule 21), says so and names the axis: the pilot's next request would be refused.
+template <SignalChain Chain>
+[[gnu::noinline]] void Flight<Chain>::say_calibration_verdict() {
+  if (const auto axis = static_cast<uint8_t>(chain_.calibration_refused()); axis != 0) {
+    say("calibration refused: the accelerometer's ");
+    say(chain::kCalibrationAxisNames[axis]);
+    say(" reads gravity: level the vehicle, or check the IMU's mounting\n");
+  } else if (const auto sign = static_cast<uint8_t>(chain_.wrong_sign()); sign != 0) {
+    say("sign check: the ");
+    say(chain::kSignAxisNames[sign]);
+    say(" loop pushes its error further: flight modes refused\n");
+  }
 }
 
 template <SignalChain Chain>

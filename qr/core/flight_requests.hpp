@@ -32,12 +32,15 @@ struct FlightRequests {
     answer = f.safety_.request(static_cast<uint8_t>(m.mode), f.situation());
   }
   void operator()(const wire::ParamSet& p) {
-    // Who flies changes in safe only (docs/safety.md rule 17); the value in force is no change (a
-    // console sends every parameter at its start, whatever the mode).
-    if (p.id == static_cast<uint8_t>(wire::ParamId::pilot) && p.value != f.params_.get(wire::ParamId::pilot) &&
-        f.safety_.mode() != Mode::safe) {
-      answer = NackReason::not_from_this_mode;
-      return;
+    // Who flies (docs/safety.md rule 17) and how the IMU sits in the frame change in safe only;
+    // the value in force is no change (a console sends every parameter at its start, whatever
+    // the mode).
+    for (const wire::ParamId safe_only : {wire::ParamId::pilot, wire::ParamId::imu_orientation}) {
+      if (p.id == static_cast<uint8_t>(safe_only) && p.value != f.params_.get(safe_only) &&
+          f.safety_.mode() != Mode::safe) {
+        answer = NackReason::not_from_this_mode;
+        return;
+      }
     }
     answer = f.params_.set(p.id, p.value);
     if (answer != NackReason::none) return;

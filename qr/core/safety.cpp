@@ -46,6 +46,10 @@ constexpr Guard kGuards[] = {
                                      const SafetyLimits&) { return from == Mode::safe && !s.engines.all_zero(); }},
     {NackReason::not_calibrated, [](Mode, Mode to, const Situation& s,
                                     const SafetyLimits&) { return rule(to).needs_calibration && !s.calibrated; }},
+    // A loop that the vehicle answers the wrong way flies it over (rule 21): the sign check's
+    // verdict holds until a calibration finds none.
+    {NackReason::sign_check, [](Mode, Mode to, const Situation& s,
+                                const SafetyLimits&) { return rule(to).needs_calibration && s.wrong_sign != 0; }},
     // A height to hold needs the barometer's reference, made by the calibration.
     {NackReason::not_calibrated,
      [](Mode, Mode to, const Situation& s, const SafetyLimits&) { return rule(to).holds_height && !s.height_valid; }},
@@ -74,6 +78,10 @@ constexpr LandingNeed kLandingNeeds[] = {
     // Both fly on the sensors: the level on the IMU, the descent on the barometer (rule 20).
     {[](Mode, PanicCause, const Situation& s, uint16_t, const SafetyLimits&) {
       return s.imu_healthy && s.barometer_healthy;
+    }},
+    // Loops that push the vehicle further cannot level it (rule 21).
+    {[](Mode, PanicCause cause, const Situation&, uint16_t, const SafetyLimits&) {
+      return cause != PanicCause::wrong_sign;
     }},
     // It was flying: some lift above idle in the last quarter second (a lift stick let go an
     // instant before the panic still counts; a vehicle resting with its engines still does not).
@@ -107,6 +115,9 @@ constexpr Watchdog kWatchdogs[] = {
     // Manual flies the sticks open loop and needs no sensor: it flies on.
     {PanicCause::imu_lost, [](const Situation& s, const SafetyLimits&, Mode m,
                               const Lasting&) { return rule(m).needs_calibration && !s.imu_healthy; }},
+    // The vehicle answers its loops the wrong way (rule 21): the engines stop at once.
+    {PanicCause::wrong_sign, [](const Situation& s, const SafetyLimits&, Mode m,
+                                const Lasting&) { return rule(m).needs_calibration && s.wrong_sign != 0; }},
 };
 
 constexpr size_t kWatchdogCount = sizeof(kWatchdogs) / sizeof(kWatchdogs[0]);
@@ -177,7 +188,7 @@ NackReason SafetyMachine::refusal(Mode to, const Situation& s) const {
 NackReason SafetyMachine::request(uint8_t wanted, const Situation& s) {
   if (wanted >= kModeCount) return NackReason::unknown_mode;
   const Mode to = static_cast<Mode>(wanted);
-  // Any mode request ends a motor test at once, in safe (rule 21); it is then judged from there.
+  // Any mode request ends a motor test at once, in safe (rule 22); it is then judged from there.
   if (mode_ == Mode::motor_test) enter(Mode::safe);
   // The motor test says its engine and level: its own request enters it, never a mode change.
   if (to == Mode::motor_test) return NackReason::bad_value;
@@ -298,7 +309,7 @@ void SafetyMachine::supervise(const Situation& s) {
   if (mode_ == Mode::height_hold && !s.barometer_healthy) enter(Mode::full_control);
 
   // The motor test ends by itself after its time, and at once when the pilot's link falls silent:
-  // a console that can no longer stop it must not leave an engine turning (rule 21).
+  // a console that can no longer stop it must not leave an engine turning (rule 22).
   if (mode_ == Mode::motor_test &&
       (s.now_us - test_start_us_ >= limits_.motor_test_us || s.now_us - s.last_frame_us > limits_.link_timeout_us)) {
     enter(Mode::safe);
@@ -359,8 +370,10 @@ void SafetyMachine::enter_panic(PanicCause cause, const Situation& s) {
   panic_cause_ = cause;
   panic_start_us_ = s.now_us;
   // A tilt with no trusted estimate to level it by: held at 90 % with no attitude control the
-  // engines would drive the tilted vehicle sideways and over. They stop at once.
-  hold_level_ = cause == PanicCause::tilt ? uint16_t{0} : scale(flying_lift(), limits_.panic_hold_pct, 100);
+  // engines would drive the tilted vehicle sideways and over. They stop at once; so they do for a
+  // vehicle answering the wrong way (rule 21), which the cut's first instants take off the ground.
+  const bool stop = cause == PanicCause::tilt || cause == PanicCause::wrong_sign;
+  hold_level_ = stop ? uint16_t{0} : scale(flying_lift(), limits_.panic_hold_pct, 100);
   // Twice the time to descend from the height estimate (at most 100 m) plus 2 m, at the descent
   // rate: (h + 2000 mm) x 2000 / v ms. A division, once per panic.
   const int32_t h = s.height_mm < 0 ? 0 : s.height_mm > 100000 ? 100000 : s.height_mm;

@@ -12,11 +12,21 @@
 
 namespace qr {
 
-enum class PanicCause : uint8_t { none = 0, requested, link_lost, battery_low, tilt, disarmed, imu_lost, count };
+enum class PanicCause : uint8_t {
+  none = 0,
+  requested,
+  link_lost,
+  battery_low,
+  tilt,
+  disarmed,
+  imu_lost,
+  wrong_sign,
+  count
+};
 
 // As the debug text says them ("mode: panic (link lost)").
 inline constexpr const char* kPanicCauseNames[] = {"",     "requested",      "link lost", "battery low",
-                                                   "tilt", "arm switch off", "IMU lost"};
+                                                   "tilt", "arm switch off", "IMU lost",  "wrong sign"};
 static_assert(sizeof(kPanicCauseNames) / sizeof(kPanicCauseNames[0]) == static_cast<uint8_t>(PanicCause::count),
               "one name per panic cause");
 
@@ -36,7 +46,7 @@ struct SafetyLimits {
   uint16_t battery_sag_mv;               // the sag at all engines full (battery_sag_mv parameter)
   uint32_t battery_trip_us = 100000;     // the battery measure below the panic level this long: panic
   uint16_t battery_hysteresis_mv = 100;  // the warning ends only this far above its level
-  uint32_t motor_test_us = 2000000;      // a motor test spins its engine this long (rule 21)
+  uint32_t motor_test_us = 2000000;      // a motor test spins its engine this long (rule 22)
 };
 
 // The limits the parameters say (the defaults when `p` is default-constructed).
@@ -59,6 +69,9 @@ struct Situation {
   // The sensors' drivers' verdicts (board.hpp SensorHealth; boards without drivers: healthy).
   bool imu_healthy = true;
   bool barometer_healthy = true;
+  // The sign check's verdict (chain/sign_check.hpp, rule 21): 0, or the axis (1 roll, 2 pitch,
+  // 3 yaw) whose loop the vehicle answers the wrong way.
+  uint8_t wrong_sign = 0;
 };
 
 class SafetyMachine {
@@ -87,7 +100,7 @@ class SafetyMachine {
   // A pilot's mode request. Safe and panic are always obeyed (a flight mode reaches safe
   // through panic); anything else is checked against the guard table.
   NackReason request(uint8_t mode, const Situation& s);
-  // The motor test (rule 21): `engine` (0..3) alone at `level` (at most wire::kMotorTestMaxLevel)
+  // The motor test (rule 22): `engine` (0..3) alone at `level` (at most wire::kMotorTestMaxLevel)
   // for motor_test_us, entered from safe through the guards of leaving safe; the radio as the
   // pilot refuses it. It ends by itself in safe; a mode request or another motor test, the lift
   // above zero in a control frame, or the pilot's link silent for the link timeout end it at once.

@@ -50,6 +50,8 @@ concept SignalChain = requires(C& c, const C& cc, const wire::ParameterValues& p
   c.fly(chain::kOpenLoop);      // the door: where each axis and the lift come from (engine_sources.hpp)
   // read-outs: the safety machine's, in its parameters' units
   {cc.calibrated()};
+  {cc.calibration_refused()};  // the last run's axis that read gravity off body z (none: taken)
+  {cc.wrong_sign()};           // the sign check's verdict (chain/sign_check.hpp)
   {cc.landed()};
   {cc.hover_lift()};  // engine units, 0: not learnt
   {cc.height_valid()};

@@ -35,6 +35,8 @@ struct FlightRecord {
   double battery_v_min = kNotMeasured, rested_v_min = kNotMeasured;
   double touchdown_speed = kNotMeasured;  // m/s, the first after having been airborne
   double touchdown_at = kNotMeasured, engines_stopped_at = kNotMeasured;
+  double panic_engines_zero_at = kNotMeasured;  // the first tick from the panic on with every engine at 0
+  double max_clearance = 0;                     // m, the lowest contact point's highest above the ground
   // What the firmware believed against the truth, from t0 on:
   bool belief_seen = false;                  // the firmware's flying/landed verdict was read
   bool believed_flying = false;              // ... and what it was last tick

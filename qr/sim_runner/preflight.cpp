@@ -23,6 +23,11 @@ bool Preflight::step(double t, wire::Mode mode, Pilot& pilot) {
       if (!calibration_asked_ && !pilot.request_pending(wire::MessageType::mode_change)) {
         ask(wire::Mode::calibration, pilot);
       }
+      calibrating_seen_ = calibrating_seen_ || mode == wire::Mode::calibration;
+      if (calibration_refused(mode, pilot)) {
+        stage_ = Stage::refused;
+        break;
+      }
       if (!calibrated_on_ground(mode, pilot)) break;
       if (!plan_.arm) {
         stage_ = Stage::ready;
@@ -35,13 +40,14 @@ bool Preflight::step(double t, wire::Mode mode, Pilot& pilot) {
     case Stage::arm:
       if (mode == wire::Mode::full_control) stage_ = Stage::ready;
       break;
-    case Stage::ready: break;
+    case Stage::ready:
+    case Stage::refused: break;
   }
   return stage_ == Stage::ready;
 }
 
 const char* Preflight::stage_name() const {
-  static const char* const kNames[] = {"power up", "calibration", "arming", "ready"};
+  static const char* const kNames[] = {"power up", "calibration", "arming", "ready", "calibration refused"};
   return kNames[static_cast<int>(stage_)];
 }
 
@@ -66,6 +72,13 @@ bool Preflight::calibrated_on_ground(wire::Mode mode, const Pilot& pilot) const 
   const ConsoleView& view = pilot.view();
   return view.heard && (view.flags & wire::kFlagCalibrated) != 0 && mode == wire::Mode::safe &&
          !pilot.request_pending(wire::MessageType::param_set) && !pilot.request_pending(wire::MessageType::mode_change);
+}
+
+// Back in safe from the calibration it asked for, without the calibrated flag, nothing waiting.
+bool Preflight::calibration_refused(wire::Mode mode, const Pilot& pilot) const {
+  const ConsoleView& view = pilot.view();
+  return calibrating_seen_ && mode == wire::Mode::safe && (view.flags & wire::kFlagCalibrated) == 0 &&
+         !pilot.request_pending(wire::MessageType::mode_change);
 }
 
 }  // namespace qrsim

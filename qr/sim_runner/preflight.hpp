@@ -37,7 +37,9 @@ struct PreflightPlan {
 
 class Preflight {
  public:
-  enum class Stage : uint8_t { power_up, calibrate, arm, ready };
+  // refused: the QR ended the calibration without taking it (its debug text says why: a vehicle
+  // not level, an IMU mounted otherwise, docs/safety.md rule 21); the pre-flight goes no further.
+  enum class Stage : uint8_t { power_up, calibrate, arm, ready, refused };
 
   explicit Preflight(PreflightPlan plan) : plan_(std::move(plan)) {}
 
@@ -48,6 +50,7 @@ class Preflight {
   bool step(double t, wire::Mode mode, Pilot& pilot);
 
   Stage stage() const { return stage_; }
+  bool refused() const { return stage_ == Stage::refused; }
   // For a runner's "stuck in ..." error: "power up", "calibration", "arming" (the stage not left).
   const char* stage_name() const;
   // The last mode the pre-flight asked for (safe: none yet), for a referee of mode changes.
@@ -57,11 +60,13 @@ class Preflight {
   void upload(Pilot& pilot) const;
   void ask(wire::Mode mode, Pilot& pilot);
   bool calibrated_on_ground(wire::Mode mode, const Pilot& pilot) const;
+  bool calibration_refused(wire::Mode mode, const Pilot& pilot) const;
 
   PreflightPlan plan_;
   Stage stage_ = Stage::power_up;
   wire::Mode requested_ = wire::Mode::safe;
   bool calibration_asked_ = false;
+  bool calibrating_seen_ = false;  // telemetry showed the calibration mode
 };
 
 }  // namespace qrsim

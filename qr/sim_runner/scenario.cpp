@@ -89,6 +89,7 @@ sim::VehicleParams vehicle_for(const ScenarioScript& script, const RunOptions& o
   v.motor_tau_down_s = v.motor_tau_up_s * tau_ratio;
   flown.motor_tau = v.motor_tau_up_s * 1e3;  // reported in ms
   if (!std::isnan(script.battery_pct)) v.battery_initial_soc = script.battery_pct / 100;
+  if (script.wiring != sim::Wiring{}) v.wiring = script.wiring;
   v.gyro_noise_dps_rthz *= flown.noise;
   v.accel_noise_ug_rthz *= flown.noise;
   v.battery_sense_noise_mv *= flown.noise;
@@ -315,6 +316,8 @@ void record_tick(FlightRecord& rec, double t, uint8_t mode, FlyingQr& qr, uint16
   bool engines_still = true;
   for (uint16_t v : qr.board().engines().value) engines_still = engines_still && v == 0;
   if (!std::isnan(rec.touchdown_at) && engines_still && std::isnan(rec.engines_stopped_at)) rec.engines_stopped_at = t;
+  if (rec.entered_panic && engines_still && std::isnan(rec.panic_engines_zero_at)) rec.panic_engines_zero_at = t;
+  rec.max_clearance = std::max(rec.max_clearance, -plant.deepest_contact());
   // Height hold: the true height against the one at entry, and how long a lift change took to end it.
   const bool holding = mode == static_cast<uint8_t>(wire::Mode::height_hold);
   if (holding && std::isnan(rec.hold_entry_height)) rec.hold_entry_height = -s.position.z;
@@ -353,6 +356,10 @@ void add_sensor_report_figures(const ConsoleView& view, const FlightRecord& rec,
   const char* lost = qr::kPanicCauseNames[static_cast<uint8_t>(qr::PanicCause::imu_lost)];
   f.push_back({"imu_lost_panic", rec.entered_panic && rec.panic_cause == lost ? 1.0 : 0.0});
   f.push_back({"last_nack_reason", static_cast<double>(view.last_nack)});
+  // The sign check (docs/safety.md rule 21): its cut, and a calibration the QR would not take.
+  const char* wrong = qr::kPanicCauseNames[static_cast<uint8_t>(qr::PanicCause::wrong_sign)];
+  f.push_back({"wrong_sign_panic", rec.entered_panic && rec.panic_cause.rfind(wrong, 0) == 0 ? 1.0 : 0.0});
+  f.push_back({"calibration_refused", view.debug_text.find("calibration refused") != std::string::npos ? 1.0 : 0.0});
 }
 
 // The binary's own cost in this flight, from the scheduler's statistics the board reported (RV32
@@ -523,7 +530,7 @@ class ScenarioFlight {
   void add_figures();
 
  private:
-  void fly_plan(double t);
+  bool fly_plan(double t);  // false: the flight ends (its error said)
   void enter(Phase next, double t);
   void begin_manoeuvre(double t);
   bool play_events(double t);
@@ -580,7 +587,7 @@ void ScenarioFlight::fly() {
   for (;;) {
     const double t = static_cast<double>(qr_.world().now_us()) * 1e-6;
     const uint8_t mode = qr_.view().mode;
-    fly_plan(t);
+    if (!fly_plan(t)) break;
     if (phase_ == Phase::manoeuvre && !play_events(t)) break;
     if (preflight_overdue(t, mode)) break;
     pilot_.step();
@@ -602,9 +609,20 @@ void ScenarioFlight::fly() {
 // The pilot before the manoeuvre: the pre-flight, then off the ground to the hover height and a
 // steady hover, or straight to the manoeuvre on the ground, lift stick down, for a flight that
 // starts there (armed or not).
-void ScenarioFlight::fly_plan(double t) {
+bool ScenarioFlight::fly_plan(double t) {
   switch (phase_) {
     case Phase::preflight:
+      // A scenario that starts in safe goes on without a calibration (its bands judge the
+      // refusal); any other needs one, and the flight ends with that error.
+      if (preflight_.refused()) {
+        if (script_.start != Start::safe) {
+          result_.error = "the QR refused the calibration (its debug text says why)";
+          return false;
+        }
+        hands_.hold_height = false;
+        begin_manoeuvre(t);
+        break;
+      }
       if (!preflight_.step(t, pilot_.view().mode, pilot_)) break;
       if (script_.start == Start::hover) {
         enter(Phase::take_off, t);
@@ -625,6 +643,7 @@ void ScenarioFlight::fly_plan(double t) {
       break;
     case Phase::manoeuvre: break;
   }
+  return true;
 }
 
 void ScenarioFlight::enter(Phase next, double t) {

@@ -66,6 +66,8 @@ inline constexpr FigureSpec kFigureTable[] = {
     {"battery_rested_v_min", "lowest resting (open-circuit) voltage in the window"},
     {"touchdown_speed_m_s", "vertical speed at the first ground contact after being airborne in the window"},
     {"engines_stop_s", "from the touchdown until every engine is zero (a landing's end)"},
+    {"panic_engines_zero_s", "from the first panic until every engine is zero (a cut that stops them at once: one tick); null without a panic"},
+    {"max_clearance_m_truth", "truth: the highest the lowest foot rose above the ground from t0 (0: never left it)"},
     {"takeoff_seen_s",
      "from the truth's first leaving the ground in the window to the firmware's first flying verdict"},
     {"false_takeoffs",
@@ -96,6 +98,8 @@ inline constexpr FigureSpec kFigureTable[] = {
     {"sensor_fault_lines", "debug text lines the QR said about sensor faults (imu fault:, barometer fault:)"},
     {"imu_lost_panic", "1 when the first panic after t0 was the IMU lost, else 0"},
     {"last_nack_reason", "the reason of the last request the QR refused (docs/protocol.md), 0 for none"},
+    {"wrong_sign_panic", "1 when the first panic after t0 was the sign check's (wrong sign: AXIS, docs/safety.md rule 21), else 0"},
+    {"calibration_refused", "1 when the QR said it refused a calibration (the accelerometer read gravity off body z), else 0"},
     // With a console event (full_line_console.hpp); null without one.
     {"line_full_s", "seconds the console sent at the line's full rate"},
     {"line_idle_ms", "time the line towards the QR stood idle while the console sent at the full rate"},

@@ -124,6 +124,11 @@ class Reader {
       out_.known_failure = value;
       return true;
     }
+    if (sim::is_wiring_name(key)) {
+      std::string problem;
+      if (!sim::parse_wiring_row(key, value, out_.wiring, problem)) return fail(problem);
+      return true;
+    }
     if (key == "vehicle") {
       if (w.size() != 2) return fail("vehicle: needs one file name");
       out_.vehicle_file = value;

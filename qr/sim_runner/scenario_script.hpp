@@ -17,6 +17,7 @@
 #include <common/parameter_table.hpp>
 #include <qr/host/parameter_text.hpp>
 #include <sim/hand_turn.hpp>
+#include <sim/wiring.hpp>
 #include <sim/vec3.hpp>
 #include <sim/vehicle.hpp>
 
@@ -95,6 +96,9 @@ struct ScenarioScript {
   double motor_tau_ms = kUnset;  // spin-up; spin-down keeps the vehicle's ratio
   double battery_pct = kUnset;   // charge at start
   double noise_scale = 1, vibration_scale = 1;
+  // The vehicle put together wrong (sim/wiring.hpp): a file that names a wiring row gives the whole
+  // wiring (the rows it does not name: right).
+  sim::Wiring wiring;
   std::vector<std::pair<wire::ParamId, int32_t>> parameters;  // uploaded before the flight
   std::vector<Event> events;                                  // in time order
   std::vector<Band> bands;

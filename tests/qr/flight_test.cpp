@@ -262,7 +262,7 @@ TEST_F(FlightTest, AStopIsAppliedEvenWhenItIsAResend) {
   EXPECT_EQ(flight.mode(), Mode::panic);
 }
 
-// Rule 21 through the wire: the motor test's request spins its engine alone, acked, for 2 s to the
+// Rule 22 through the wire: the motor test's request spins its engine alone, acked, for 2 s to the
 // tick; a control frame with lift ends it in the tick that reads it; a level above the cap is
 // malformed (nack bad_value).
 TEST_F(FlightTest, AMotorTestSpinsItsEngineForTwoSecondsAndTheLiftEndsIt) {

@@ -665,6 +665,61 @@ TEST_F(Safety, AnImuLostInFlightPanicsAndCuts) {
   EXPECT_EQ(machine.mode(), Mode::manual);
 }
 
+// Rule 21: the sign check's verdict (a loop or the vehicle answering the wrong way) refuses every
+// mode that flies on the loops, with its reason; manual (the sticks, open loop), calibration and
+// the stops are not refused, and a calibration that finds nothing lets the pilot arm again.
+TEST_F(Safety, AWrongSignRefusesTheModesThatFlyOnTheLoops) {
+  at(1000);
+  for (uint8_t axis = 1; axis <= 3; ++axis) {
+    s.wrong_sign = axis;
+    for (Mode mode : {Mode::yaw_control, Mode::full_control, Mode::acro}) {
+      EXPECT_EQ(machine.request(m(mode), s), NackReason::sign_check) << wire::mode_name(mode) << " axis " << int{axis};
+      EXPECT_EQ(machine.mode(), Mode::safe);
+    }
+  }
+  EXPECT_EQ(machine.request(m(Mode::calibration), s), NackReason::none);
+  machine.calibration_finished();
+  ASSERT_EQ(machine.mode(), Mode::safe);
+  EXPECT_EQ(machine.request(m(Mode::manual), s), NackReason::none);
+  restart();
+  at(1000);
+  s.wrong_sign = 0;
+  EXPECT_EQ(machine.request(m(Mode::full_control), s), NackReason::none);
+}
+
+// Rule 21: found in the air, the verdict is the cut with the engines stopped in that very tick,
+// even with every estimate trusted (the loops that would land it push the wrong way), and they
+// stay stopped through the cut's whole hold and ramp (2.5 s by default) until safe.
+TEST_F(Safety, AWrongSignInTheAirStopsTheEnginesAtOnce) {
+  for (Mode mode : {Mode::yaw_control, Mode::full_control, Mode::height_hold, Mode::acro}) {
+    restart();
+    at(1000);
+    s.height_valid = true;  // everything a landing needs
+    s.height_mm = 1500;
+    enter(mode);
+    fly_a_while(550);
+    ASSERT_EQ(machine.mode(), mode);
+    s.wrong_sign = 2;
+    run_for(kPeriodUs);
+    EXPECT_EQ(machine.mode(), Mode::panic) << wire::mode_name(mode);
+    EXPECT_EQ(machine.panic_cause(), PanicCause::wrong_sign);
+    EXPECT_FALSE(machine.landing()) << "the loops push the wrong way: no landing on them";
+    for (uint32_t t = 0; machine.mode() == Mode::panic && t < 10000000; t += kPeriodUs) {
+      ASSERT_TRUE(machine.limit_engines(s.engines, s).all_zero()) << wire::mode_name(mode) << " at " << t << " us";
+      run_for(kPeriodUs);
+    }
+    EXPECT_EQ(machine.mode(), Mode::safe);
+  }
+  // Manual flies the sticks open loop: the verdict is no panic there.
+  restart();
+  at(1000);
+  enter(Mode::manual);
+  fly_a_while(550);
+  s.wrong_sign = 1;
+  run_for(1000000);
+  EXPECT_EQ(machine.mode(), Mode::manual);
+}
+
 // Rule 20: an IMU that does not stream (a wrong identity, a chip lost on the ground) refuses
 // leaving safe, calibration too, with its reason; the stops are obeyed as ever.
 TEST_F(Safety, AnUnhealthyImuRefusesToLeaveSafe) {
@@ -747,7 +802,7 @@ TEST_F(Safety, ExitWhileFlyingGoesThroughPanic) {
   EXPECT_TRUE(machine.stopped());
 }
 
-// Rule 21: the motor test. The engines the machine gives are what the next tick's situation sees.
+// Rule 22: the motor test. The engines the machine gives are what the next tick's situation sees.
 struct MotorTestSafety : Safety {
   static constexpr EngineCommand kWanted{{999, 999, 999, 999}};  // what no mixer may pass in a test
   // Runs as the flight does for `us`: the watchdogs, then the engines, once a control period.

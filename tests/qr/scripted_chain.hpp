@@ -8,6 +8,8 @@
 #include <qr/core/board.hpp>
 #include <qr/core/chain/engine_sources.hpp>
 #include <qr/core/chain/fixed_numbers.hpp>
+#include <qr/core/chain/sensor_calibration.hpp>
+#include <qr/core/chain/sign_check.hpp>
 #include <qr/core/flight_types.hpp>
 
 namespace qr::test {
@@ -22,6 +24,8 @@ struct ScriptedChain {
   bool landed_now = false;      // what landed() says
   uint16_t hover_lift_now = 0;  // what hover_lift() says
   bool height_known = true;     // what height_valid() says
+  chain::SignAxis sign_verdict = chain::SignAxis::none;                 // what wrong_sign() says
+  chain::CalibrationAxis calibration_verdict = chain::CalibrationAxis::none;  // what calibration_refused() says
 
   // What the firmware did to it
   uint32_t filtered = 0;
@@ -58,6 +62,8 @@ struct ScriptedChain {
     return run_samples_ == calibration_samples;
   }
   bool calibrated() const { return calibrated_; }
+  chain::CalibrationAxis calibration_refused() const { return calibration_verdict; }
+  chain::SignAxis wrong_sign() const { return sign_verdict; }
   // A run with turns: what the next finished calibration run says the turns gave, once.
   bool turns_scripted = false;
   chain::GyroTurnsResult turns_result{};

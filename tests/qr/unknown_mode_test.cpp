@@ -61,7 +61,7 @@ TEST_F(UnknownModeTest, EveryNumberBeyondTheModesIsAnsweredUnknownMode) {
 
 TEST_F(UnknownModeTest, TheLastModeIsStillAMode) {
   // The last mode number (the motor test) is known: refused for another reason (its own request
-  // says the engine, docs/safety.md rule 21); so is the one before it (acro: no calibration yet).
+  // says the engine, docs/safety.md rule 22); so is the one before it (acro: no calibration yet).
   static_assert(wire::kModeCount - 1 == index(Mode::motor_test));
   send_mode(1, wire::kModeCount - 1);
   send_mode(2, index(Mode::acro));

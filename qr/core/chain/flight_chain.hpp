@@ -34,10 +34,12 @@
 #include <qr/core/chain/gyro_clip.hpp>
 #include <qr/core/chain/gyro_turns.hpp>
 #include <qr/core/chain/height_estimator.hpp>
+#include <qr/core/chain/imu_mounting.hpp>
 #include <qr/core/chain/landed_detector.hpp>
 #include <qr/core/chain/pilot_setpoints.hpp>
 #include <qr/core/chain/sensor_calibration.hpp>
 #include <qr/core/chain/sensor_filters.hpp>
+#include <qr/core/chain/sign_check.hpp>
 #include <qr/core/chain/vertical_controller.hpp>
 #include <qr/core/control_rate.hpp>
 #include <qr/core/flight_types.hpp>
@@ -94,6 +96,7 @@ class FlightChain : public chain::DecimalReadouts<FlightChain<Num, SampleHz>> {
     pilot_.set_max_yaw_rate(p.get(ParamId::max_yaw_rate_rad_s));
     pilot_.set_max_tilt(p.get(ParamId::max_tilt_mrad));
     mixer_.set_idle(p.get(ParamId::idle_level));
+    mounting_ = chain::imu_mounting(p.get(ParamId::imu_orientation));
   }
 
   // Latest sticks -> set-points (angles, yaw rate) and open-loop moments; every tick.
@@ -103,11 +106,12 @@ class FlightChain : public chain::DecimalReadouts<FlightChain<Num, SampleHz>> {
     pilot_thrust_ = mixer_.thrust_of_lift(pilot_.lift());
   }
 
-  // Task "filter": one raw sample through the low-pass filters.
+  // Task "filter": one raw sample, turned from the IMU board's axes into the body's
+  // (imu_mounting.hpp), through the low-pass filters.
   void filter(const SensorSample& s) {
-    sample_ = s;
-    filters_.update(s);
-    for (int i = 0; i < 3; ++i) clipped_[i] += clips_[i].update(s.gyro[i]);
+    sample_ = chain::mounted(mounting_, s);
+    filters_.update(sample_);
+    for (int i = 0; i < 3; ++i) clipped_[i] += clips_[i].update(sample_.gyro[i]);
   }
 
   // Task "calibration": averages the samples filter() was given; true once this run is done.
@@ -128,7 +132,8 @@ class FlightChain : public chain::DecimalReadouts<FlightChain<Num, SampleHz>> {
     const bool was_done = calibration_.samples() >= chain::kCalibrationSamples;
     height_.add_calibration(sample_.pressure_pa);
     const bool done = calibration_.add(sample_);
-    if (done && !was_done) {
+    if (done && !was_done && calibration_.accepted()) {
+      check_signs();
       estimator_.restart();
       height_.zero_reference();  // the height estimate counts from here
       if (gyro_turns_ > 0) {
@@ -157,6 +162,12 @@ class FlightChain : public chain::DecimalReadouts<FlightChain<Num, SampleHz>> {
   }
   // Offsets exist (some calibration run has finished since start-up).
   bool calibrated() const { return calibration_.done(); }
+  // The last run ended without taking its offsets: the accelerometer read gravity off body z on
+  // this axis (sensor_calibration.hpp); none once a run is taken.
+  chain::CalibrationAxis calibration_refused() const { return calibration_.refused(); }
+  // The sign check's verdict (sign_check.hpp): the probe's at the last calibration, or the
+  // wrong-way monitor's in the flight after it; none until either finds an axis.
+  chain::SignAxis wrong_sign() const { return wrong_sign_; }
 
   // Task "accel angles": calibrated filtered accelerometer -> its roll and pitch angles, which
   // the estimator corrects towards until they are taken again.
@@ -179,6 +190,7 @@ class FlightChain : public chain::DecimalReadouts<FlightChain<Num, SampleHz>> {
       estimator_.start(accel);
     }
     estimator_.update_rates(rate, landed_.landed());  // on the ground (last tick's verdict): no drag lag
+    if (monitor_.watching()) watch_signs();
     if ((clipped_[0] | clipped_[1] | clipped_[2]) != 0) take_clipped_turns();
     // The thrust the mixer is asked for: the pilot's lift, or the vertical loops' (height hold, a
     // landing) from their last run.
@@ -392,6 +404,40 @@ class FlightChain : public chain::DecimalReadouts<FlightChain<Num, SampleHz>> {
   using Count = typename Num::template Fixed<0>;
   using Climb = typename Num::Climb;
 
+  // The sign check's probe on copies of the loops and the mixer, and the monitor armed for the
+  // next flight (sign_check.hpp), at the end of every calibration that is taken.
+  void check_signs() {
+    struct Loops {
+      chain::AttitudeController<Num, SampleHz> roll, pitch;
+      chain::YawRateController<Num, SampleHz> yaw;
+      chain::Moments<Thrust> answer(int axis) {
+        constexpr Angle kOff = Angle(chain::kProbeAngleRad);
+        constexpr Rate kTurning = Rate(chain::kProbeYawRate);
+        if (axis == 0) return {roll.moment(Angle{}, kOff, Rate{}), {}, {}};
+        if (axis == 1) return {{}, pitch.moment(Angle{}, kOff, Rate{}), {}};
+        return {{}, {}, yaw.moment(Rate{}, kTurning)};
+      }
+    } loops{tilt_[0], tilt_[1], yaw_};
+    loops.roll.reset();
+    loops.pitch.reset();
+    loops.yaw.reset();
+    chain::EngineMixer<Num> mixer = mixer_;
+    wrong_sign_ = chain::probe_signs(loops, mixer, mixer_.thrust_of_lift(chain::kProbeLift));
+    monitor_.arm();
+  }
+  // One tick of the wrong-way monitor, in its units: the last mix's moments, the rates now.
+  [[gnu::noinline]] void watch_signs() {
+    const int32_t moment[3] = {Num::round_to_int(moments_.roll), Num::round_to_int(moments_.pitch),
+                               Num::round_to_int(moments_.yaw)};
+    const int32_t rate[3] = {Num::round_to_int(fx::mul_wide(estimator_.p(), kThousand)),
+                             Num::round_to_int(fx::mul_wide(estimator_.q(), kThousand)),
+                             Num::round_to_int(fx::mul_wide(estimator_.r(), kThousand))};
+    const uint8_t loops = static_cast<uint8_t>((sources_.tilt != chain::Tilt::stick ? 3u : 0u) |
+                                               (sources_.yaw != chain::Yaw::stick ? 4u : 0u));
+    const chain::SignAxis found = monitor_.update(moment, rate, loops, landed_.landed(), !engines_.all_zero());
+    if (found != chain::SignAxis::none) wrong_sign_ = found;
+  }
+
   // What the loops fly to: the pilot's sticks, or level and not turning in a landing.
   Angle roll_target() const { return sources_.tilt == chain::Tilt::level ? Angle{} : pilot_.roll_angle(); }
   Angle pitch_target() const { return sources_.tilt == chain::Tilt::level ? Angle{} : pilot_.pitch_angle(); }
@@ -427,6 +473,9 @@ class FlightChain : public chain::DecimalReadouts<FlightChain<Num, SampleHz>> {
   SensorSample sample_{};
   bool attitude_entered_ = false;  // full control entered: the next control_attitude() integrates
   bool yaw_entered_ = false;       // yaw or full control entered: the next control_yaw() integrates
+  drivers::ChipToBody mounting_ = chain::kImuMountings[0];  // imu_orientation's row
+  chain::WrongWayMonitor monitor_;
+  chain::SignAxis wrong_sign_ = chain::SignAxis::none;
 };
 
 using FixedChain = FlightChain<chain::FixedNumbers>;

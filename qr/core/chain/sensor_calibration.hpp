@@ -13,6 +13,17 @@
 namespace qr::chain {
 
 inline constexpr int kCalibrationShift = 9;
+
+// The accelerometer axis whose mean read gravity where a level vehicle does not (docs/safety.md
+// rule 21), or none.
+enum class CalibrationAxis : uint8_t { none = 0, x, y, z };
+inline constexpr const char* kCalibrationAxisNames[] = {"", "x", "y", "z"};
+
+// The largest accelerometer offset a run takes: 0.25 g. The MPU-6050's zero-g offset is within
+// +-50 mg on x and y and +-80 mg on z (product specification 6.2); a vehicle 10 degrees off level
+// adds 0.17 g. More is gravity where the calibration does not expect it: a vehicle on its side,
+// an IMU mounted turned or upside down, an axis read backwards. Taken, such an offset would make
+// the estimate read level whatever the vehicle does: the vehicle would fly on a lie.
 inline constexpr int32_t kCalibrationSamples = int32_t{1} << kCalibrationShift;  // 0.5 s at 1 kHz
 
 template <class N>
@@ -39,6 +50,14 @@ class SensorCalibration {
     // Level reads -1 g on z: the offset is what is read beyond that.
     accel_sum_[2] += Units::kCountsPerGInt;
     if (++count_ < kCalibrationSamples) return false;
+    refused_ = CalibrationAxis::none;
+    for (int i = 0; i < 3; ++i) {
+      const int32_t sum = accel_sum_[i];
+      if (sum > kMaxAccelOffsetSum || sum < -kMaxAccelOffsetSum) {
+        refused_ = static_cast<CalibrationAxis>(i + 1);
+        return true;  // the run is over; the offsets in use stay
+      }
+    }
     for (int i = 0; i < 3; ++i) {
       gyro_offset_counts_[i] = gyro_sum_[i];
       accel_offset_[i] = Units::template accel_of<kCalibrationShift>(accel_sum_[i]);
@@ -57,6 +76,9 @@ class SensorCalibration {
 
   // At least one calibration has finished since start-up.
   bool done() const { return done_; }
+  // The last finished run took its offsets; refused(): the axis that made it refuse them.
+  bool accepted() const { return refused_ == CalibrationAxis::none; }
+  CalibrationAxis refused() const { return refused_; }
   int32_t samples() const { return count_; }
 
   Rate gyro_offset(int axis) const { return gyro_offset_[axis]; }
@@ -77,6 +99,9 @@ class SensorCalibration {
   int32_t accel_sum_[3] = {0, 0, 0};
   int32_t count_ = 0;
   bool done_ = false;
+  CalibrationAxis refused_ = CalibrationAxis::none;
+  // 0.25 g over a run's samples, in the sums' units (counts x samples).
+  static constexpr int32_t kMaxAccelOffsetSum = (Units::kCountsPerGInt / 4) * kCalibrationSamples;
   int32_t gyro_offset_counts_[3] = {0, 0, 0};
   Rate per_count_[3] = {Units::rate_per_count(0), Units::rate_per_count(0), Units::rate_per_count(0)};
   Rate gyro_offset_[3] = {};

@@ -1,0 +1,128 @@
+// The sign check (docs/safety.md rule 21): does the vehicle answer its controllers the right way?
+// The IN4073 report's team never flew stabilised because their feedback had the wrong sign; a
+// first build can get the same from a motor on the wrong output or turning the wrong way, an IMU
+// mounted turned, a sensor axis read backwards. Two checks, each for what it can see:
+//
+// - The probe, on the ground, at the end of every calibration: each loop (roll, pitch, yaw) is
+//   given a small known error on a copy of itself, its answer goes through a copy of the mixer,
+//   and the engines are read back through the model of engine_mixer.hpp run forwards. The moment
+//   they make must not push the error further. This is the check that would have caught the
+//   report's controller: a sign lost in a loop or in the mixer, which no sensor can show on the
+//   ground.
+// - The wrong-way monitor, in the first flight after a calibration, from the engines' start
+//   until 0.2 s after the take-off: on each axis the loops fly, the loops pushing against the
+//   measured rate for most of 20 ms while that rate still grows is a vehicle that answers the
+//   wrong way. Two such 20 ms blocks in a row on one axis are the verdict. This sees what only
+//   the air shows: the wiring and the mounting (the probe trusts the geometry it was written for).
+//
+// A verdict names its axis; the safety machine refuses yaw and full control on it, or in the air
+// cuts the engines at once (safety.cpp).
+#pragma once
+
+#include <stdint.h>
+
+#include <qr/core/board.hpp>
+#include <qr/core/control_rate.hpp>
+
+namespace qr::chain {
+
+enum class SignAxis : uint8_t { none = 0, roll, pitch, yaw };
+inline constexpr const char* kSignAxisNames[] = {"", "roll", "pitch", "yaw"};
+
+// What engines do to the airframe by the mixer's model read forwards (engine_mixer.hpp): engine i
+// gives thrust w_i = ae_i^2 (in thousandths of thrust units), and
+//   roll L = w3 - w1, pitch M = w0 - w2, yaw N = w1 + w3 - w0 - w2.
+struct AxisMoments {
+  int32_t axis[3] = {0, 0, 0};  // roll, pitch, yaw
+};
+
+constexpr AxisMoments moments_of(const EngineCommand& e) {
+  int32_t w[4] = {};
+  for (int i = 0; i < 4; ++i) w[i] = int32_t{e.value[i]} * e.value[i];  // <= 10^6
+  return {{w[3] - w[1], w[0] - w[2], w[1] + w[3] - w[0] - w[2]}};
+}
+
+// The probe's known errors: the estimate 3 degrees (0.05 rad) off its set-point of 0 on roll and
+// pitch, the yaw rate 0.5 rad/s off 0; positive, so each answer must be negative. The lift the
+// mixer mixes them into: a hover's, where no moment is scaled away.
+inline constexpr double kProbeAngleRad = 0.05;
+inline constexpr double kProbeYawRate = 0.5;
+inline constexpr uint16_t kProbeLift = 500;
+
+// The first axis whose loop, answering a positive error, makes a positive moment on its own axis
+// (none: every answer opposes its error, or is zero, as with a gain set to 0). `Loops` gives a
+// loop's answer by axis, as moments for the mixer; `Mixer` is a copy that may be changed.
+template <class Loops, class Mixer, class Thrust>
+SignAxis probe_signs(Loops& loops, Mixer& mixer, Thrust lift) {
+  for (int axis = 0; axis < 3; ++axis) {
+    const AxisMoments made = moments_of(mixer.mix_thrust(lift, loops.answer(axis)));
+    if (made.axis[axis] > 0) return static_cast<SignAxis>(axis + 1);
+  }
+  return SignAxis::none;
+}
+
+class WrongWayMonitor {
+ public:
+  static constexpr uint32_t kBlockTicks = kControlHz / 50;  // 20 ms
+  static constexpr uint32_t kWindowTicks = kControlHz;  // 1 s after the take-off
+  // A growth a vehicle that answers rightly does not show while its loops push against it: at
+  // least 0.3 rad/s (17 deg/s, which no take-off turns at), grown by 0.1 rad/s in 20 ms.
+  static constexpr int32_t kMinRateMrad = 300;
+  static constexpr int32_t kGrowthMrad = 100;
+  // The loops push: at least 2 % of one engine's thrust (thrust units), for 3/4 of a block.
+  static constexpr int32_t kMinMoment = 20;
+  static constexpr uint32_t kAgainstTicks = kBlockTicks * 3 / 4;
+  static constexpr uint8_t kStrikes = 2;
+
+  // From the end of a calibration: the next flight is watched.
+  void arm() {
+    *this = WrongWayMonitor{};
+    watching_ = true;
+  }
+  bool watching() const { return watching_; }
+
+  // One tick. `moment`: what the last mix asked of each axis (thrust units); `rate`: the rates now
+  // (mrad/s); `loops`: bit i set where the loops fly axis i; `landed`: the landed detector's
+  // verdict; `lifting`: the engines are asked to turn. The axis of a verdict, once; else none.
+  SignAxis update(const int32_t (&moment)[3], const int32_t (&rate)[3], uint8_t loops, bool landed, bool lifting) {
+    if (!lifting || loops == 0) return SignAxis::none;
+    if (!landed && ++airborne_ticks_ > kWindowTicks) {
+      watching_ = false;
+      return SignAxis::none;
+    }
+    for (int i = 0; i < 3; ++i) {
+      if ((loops & (1u << i)) != 0 && push_against(moment[i], rate[i])) ++against_[i];
+    }
+    if (++block_tick_ < kBlockTicks) return SignAxis::none;
+    block_tick_ = 0;
+    for (int i = 0; i < 3; ++i) {
+      const bool wrong = against_[i] >= kAgainstTicks && grew(start_[i], rate[i]);
+      strikes_[i] = wrong ? static_cast<uint8_t>(strikes_[i] + 1) : uint8_t{0};
+      against_[i] = 0;
+      start_[i] = rate[i];
+      if (strikes_[i] >= kStrikes) {
+        watching_ = false;
+        return static_cast<SignAxis>(i + 1);
+      }
+    }
+    return SignAxis::none;
+  }
+
+ private:
+  static constexpr int32_t magnitude(int32_t v) { return v < 0 ? -v : v; }
+  static constexpr bool push_against(int32_t moment, int32_t rate) {
+    return magnitude(moment) >= kMinMoment && ((moment < 0) != (rate < 0)) && rate != 0;
+  }
+  static constexpr bool grew(int32_t from, int32_t to) {
+    return magnitude(to) >= kMinRateMrad && ((from < 0) == (to < 0)) && magnitude(to) - magnitude(from) >= kGrowthMrad;
+  }
+
+  bool watching_ = false;
+  uint32_t airborne_ticks_ = 0;
+  uint32_t block_tick_ = 0;
+  int32_t start_[3] = {0, 0, 0};
+  uint32_t against_[3] = {0, 0, 0};
+  uint8_t strikes_[3] = {0, 0, 0};
+};
+
+}  // namespace qr::chain
