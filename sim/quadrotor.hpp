@@ -60,6 +60,9 @@ class Quadrotor {
   double rotor_phase(int rotor) const { return phase_[static_cast<size_t>(rotor)]; }
   // Where each rotor sits and which way it turns (rotor order: front, right, back, left).
   const std::array<RotorGeometry, kRotorCount>& rotors() const { return rotors_; }
+  // Output `output`'s ESC turns its motor the other way (a DShot ESC's spin direction 2): the
+  // rotor that output drives turns opposite to the way the vehicle's wiring makes it turn.
+  void set_output_reversed(int output, bool reversed);
 
   const Battery& battery() const { return battery_; }
   double battery_volts() const { return volts_; }

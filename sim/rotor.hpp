@@ -15,12 +15,21 @@ namespace sim {
 inline constexpr int kRotorCount = 4;
 
 struct RotorGeometry {
-  Vec3 hub;     // body frame, from the centre of mass
-  double spin;  // +1 clockwise seen from above (angular velocity along +z), -1 counter-clockwise
+  Vec3 hub;         // body frame, from the centre of mass
+  double spin;      // +1 clockwise seen from above (angular velocity along +z), -1 counter-clockwise
   double lift = 1;  // thrust per k_f w^2, upwards: 1, or for a motor turning backwards a share down
 };
 
 std::array<RotorGeometry, kRotorCount> rotor_geometry(const VehicleParams& vehicle);
+
+// The rotor with its motor turning the other way (two phase wires swapped, or an ESC's spin
+// direction 2), its propeller as it was: the spin opposite, and a blade meeting the air backwards
+// pushes down at kReversedThrustShare (sim/wiring.hpp); turned back, it lifts as made.
+inline RotorGeometry turned_the_other_way(RotorGeometry rotor) {
+  rotor.spin = -rotor.spin;
+  rotor.lift = rotor.lift > 0 ? -kReversedThrustShare : 1.0;
+  return rotor;
+}
 
 // The speed the motor settles at for `command` (0..1000) with `volts` across the ESC: the
 // command is a share of full speed, full speed is proportional to the voltage (docs/conventions.md:

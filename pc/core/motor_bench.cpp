@@ -142,12 +142,11 @@ std::string MotorBench::simulator_saw() const {
   if (std::fabs(speed) < kTurningRadS) return "sim: no rotor turned";
   const bool clockwise = speed > 0;
   std::string saw = "sim: " + rotor_name(fastest) + " turned " + way(clockwise);
-  const RotorPlace& own = kRotorPlaces[engine_];
+  // At most 80 columns: the engine's own rotor and way are on its row above.
   if (fastest != engine_) {
-    saw += ": engine " + std::to_string(engine_ + 1) + " drives the wrong rotor (its own is " + rotor_name(engine_) +
-           ")";
-  } else if (clockwise != own.clockwise) {
-    saw += std::string(": the wrong way (it must turn ") + way(own.clockwise) + ")";
+    saw += ": the wrong rotor for engine " + std::to_string(engine_ + 1);
+  } else if (clockwise != kRotorPlaces[engine_].clockwise) {
+    saw += ": the wrong way";
   } else {
     saw += ", as engine " + std::to_string(engine_ + 1) + " must";
   }

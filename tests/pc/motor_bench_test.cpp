@@ -178,15 +178,12 @@ TEST_F(MotorTestScreen, TheSimulatorNamesTheRotorThatTurnedAndItsWay) {
 
   key('1');
   bench.rotors({0, 0, 0, -104.7});
-  EXPECT_EQ(bench.simulator_saw(),
-            "sim: rotor 4 (left) turned counter-clockwise: engine 1 drives the wrong rotor (its own is rotor 1 "
-            "(front))");
+  EXPECT_EQ(bench.simulator_saw(), "sim: rotor 4 (left) turned counter-clockwise: the wrong rotor for engine 1");
   qr_runs_the_test();
   key('n');
   key('3');
   bench.rotors({0, 0, -104.7, 0});
-  EXPECT_EQ(bench.simulator_saw(),
-            "sim: rotor 3 (back) turned counter-clockwise: the wrong way (it must turn clockwise)");
+  EXPECT_EQ(bench.simulator_saw(), "sim: rotor 3 (back) turned counter-clockwise: the wrong way");
   qr_runs_the_test();
   key('n');
   key('4');

@@ -27,9 +27,9 @@ TEST(Wiring, RowsReadAndMistakesAreNamed) {
     const char* values;
     const char* said;
   } bad[] = {
-      {"motor_outputs", "0 0 2 3", "each once"},  {"motor_outputs", "0 1 2", "needs 4 numbers"},
-      {"motor_reversed", "0 2 0 0", "0 or 1"},    {"imu_mount_yaw_deg", "45", "0, 90, 180 or 270"},
-      {"gyro_signs", "1 0 1", "1 or -1"},         {"accel_signs", "1 x 1", "not a whole number"},
+      {"motor_outputs", "0 0 2 3", "each once"},    {"motor_outputs", "0 1 2", "needs 4 numbers"},
+      {"motor_reversed", "0 2 0 0", "0 or 1"},      {"imu_mount_yaw_deg", "45", "0, 90, 180 or 270"},
+      {"gyro_signs", "1 0 1", "1 or -1"},           {"accel_signs", "1 x 1", "not a whole number"},
       {"imu_upside_down", "1 1", "needs 1 number"},
   };
   for (const auto& b : bad) {
@@ -105,6 +105,23 @@ TEST(Wiring, AReversedMotorPushesDownAndTurnsTheOtherWay) {
   EXPECT_GT(r.torque.x, 0) << "the left rotor lifts the left side: a roll right";
   EXPECT_LT(x.torque.x, 0) << "reversed, it pushes the left side down";
   EXPECT_EQ(rotor_geometry(v)[0].lift, 1) << "the others untouched";
+}
+
+// An ESC set to spin direction 2 (a DShot command, qr/boards/sim/sim_esc.hpp) turns the rotor its
+// output drives the other way: a wrongly wired motor right again, a right one wrong.
+TEST(Wiring, AnEscsDirectionTurnsTheRotorItsOutputDrives) {
+  VehicleParams v = default_vehicle();
+  v.wiring.rotor_of_output = {3, 1, 2, 0};  // output 0 drives the left rotor
+  v.wiring.reversed = {0, 0, 0, 1};         // which turns the wrong way
+  Quadrotor plant(v);
+  ASSERT_EQ(plant.rotors()[3].spin, +1) << "the left rotor wired clockwise";
+  plant.set_output_reversed(0, true);
+  EXPECT_EQ(plant.rotors()[3].spin, -1) << "counter-clockwise, as the left rotor must";
+  EXPECT_EQ(plant.rotors()[3].lift, 1) << "and it lifts";
+  EXPECT_EQ(plant.rotors()[0].spin, +1) << "the front rotor untouched";
+  plant.set_output_reversed(0, false);
+  EXPECT_EQ(plant.rotors()[3].spin, +1);
+  EXPECT_EQ(plant.rotors()[3].lift, -kReversedThrustShare) << "back as wired";
 }
 
 }  // namespace

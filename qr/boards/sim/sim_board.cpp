@@ -83,6 +83,11 @@ void SimBoard::set_engines(qr::EngineCommand engines) {
     if (corrupt_every_ != 0 && dshot_frames_ % corrupt_every_ == 0)
       frame ^= static_cast<uint16_t>(1u << (dshot_frames_ % 16));
     run[i] = escs_[i].receive(frame);
+    // An ESC set to spin direction 2 turns its motor, and the rotor on it, the other way.
+    if (escs_[i].reversed() != esc_reversed_[i]) {
+      esc_reversed_[i] = escs_[i].reversed();
+      world_.plant().set_output_reversed(static_cast<int>(i), esc_reversed_[i]);
+    }
   }
   world_.plant().set_engines(run);
   answered_ = true;

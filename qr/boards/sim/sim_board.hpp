@@ -159,6 +159,7 @@ class SimBoard {
   bool answered_ = false;
   drivers::DshotCommandSequencer sequencers_[4];
   std::array<SimEsc, 4> escs_{};
+  std::array<bool, 4> esc_reversed_{};  // what the plant was last told of each ESC's direction
   bool real_time_ = false;
   HostTiming host_;
   std::chrono::steady_clock::time_point wall_start_{};
