@@ -30,7 +30,8 @@ bool read_ints(const std::string& text, size_t count, std::vector<int>& out, std
 }
 
 bool all_in(const std::vector<int>& v, std::initializer_list<int> allowed) {
-  return std::all_of(v.begin(), v.end(), [&](int x) { return std::find(allowed.begin(), allowed.end(), x) != allowed.end(); });
+  return std::all_of(v.begin(), v.end(),
+                     [&](int x) { return std::find(allowed.begin(), allowed.end(), x) != allowed.end(); });
 }
 
 template <size_t N>
@@ -53,13 +54,15 @@ Vec3 mounted(const Wiring& w, const Vec3& b) {
   return s;
 }
 
-Vec3 signed_axes(const std::array<int, 3>& signs, const Vec3& v) { return {signs[0] * v.x, signs[1] * v.y, signs[2] * v.z}; }
+Vec3 signed_axes(const std::array<int, 3>& signs, const Vec3& v) {
+  return {signs[0] * v.x, signs[1] * v.y, signs[2] * v.z};
+}
 
 }  // namespace
 
 bool is_wiring_name(const std::string& name) {
-  for (const char* n : {"motor_outputs", "motor_reversed", "imu_mount_yaw_deg", "imu_upside_down", "gyro_signs",
-                        "accel_signs"}) {
+  for (const char* n :
+       {"motor_outputs", "motor_reversed", "imu_mount_yaw_deg", "imu_upside_down", "gyro_signs", "accel_signs"}) {
     if (name == n) return true;
   }
   return false;

@@ -3,9 +3,9 @@
 // task's are flight_link.hpp's. Include flight.hpp.
 #pragma once
 
-#include <qr/core/flight.hpp>
 #include <qr/core/chain/sensor_calibration.hpp>
 #include <qr/core/chain/sign_check.hpp>
+#include <qr/core/flight.hpp>
 #include <qr/core/flight_log_lines.hpp>
 
 namespace qr {

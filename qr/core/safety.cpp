@@ -186,10 +186,10 @@ NackReason SafetyMachine::refusal(Mode to, const Situation& s) const {
 }
 
 NackReason SafetyMachine::request(uint8_t wanted, const Situation& s) {
-  if (wanted >= kModeCount) return NackReason::unknown_mode;
-  const Mode to = static_cast<Mode>(wanted);
   // Any mode request ends a motor test at once, in safe (rule 22); it is then judged from there.
   if (mode_ == Mode::motor_test) enter(Mode::safe);
+  if (wanted >= kModeCount) return NackReason::unknown_mode;
+  const Mode to = static_cast<Mode>(wanted);
   // The motor test says its engine and level: its own request enters it, never a mode change.
   if (to == Mode::motor_test) return NackReason::bad_value;
   if (to == mode_) return NackReason::none;

@@ -15,7 +15,8 @@
 // a radio receiver (RadioBoard) gives the context (radio_space, radio_receive) a bounded number of
 // radio bytes per tick; after the engines, a board whose ESCs answer (EscAnswerBoard) hands their
 // answers to the context (esc_answers), and one whose ESCs take commands (EscCommandBoard) is sent
-// the context's (esc_command_due), whose context is told whether the board took it.
+// the context's (esc_command_due), and the context is told whether the board took it
+// (esc_command_sent).
 //
 // Every rate, phase and budget is in the context's task table (task.hpp); no task divides itself.
 //

@@ -17,9 +17,9 @@
 #include <common/parameter_table.hpp>
 #include <qr/host/parameter_text.hpp>
 #include <sim/hand_turn.hpp>
-#include <sim/wiring.hpp>
 #include <sim/vec3.hpp>
 #include <sim/vehicle.hpp>
+#include <sim/wiring.hpp>
 
 namespace qrsim {
 

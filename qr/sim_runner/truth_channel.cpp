@@ -116,7 +116,7 @@ std::string truth_line(double t_s, const sim::Quadrotor& plant) {
   const sim::PlantState& state = plant.state();
   const sim::Euler e = sim::to_euler(state.attitude);
   constexpr double kDeg = 57.29577951308232;
-  double turning[sim::kRotorCount];
+  double turning[sim::kRotorCount] = {};
   // To the 0.1 rad/s printed, and + 0.0: a still counter-clockwise rotor reads 0.0, not -0.0.
   for (size_t i = 0; i < sim::kRotorCount; ++i) {
     turning[i] = std::round(state.rotor_speed[i] * plant.rotors()[i].spin * 10) / 10 + 0.0;

@@ -36,8 +36,9 @@ struct Loops {
   }
   Moments<Thrust> answer(int axis) {
     const Angle off = Angle(kProbeAngleRad);
-    Thrust m = axis == 0 ? roll.moment(Angle{}, off, Rate{}) : axis == 1 ? pitch.moment(Angle{}, off, Rate{})
-                                                                           : yaw.moment(Rate{}, Rate(kProbeYawRate));
+    Thrust m = axis == 0   ? roll.moment(Angle{}, off, Rate{})
+               : axis == 1 ? pitch.moment(Angle{}, off, Rate{})
+                           : yaw.moment(Rate{}, Rate(kProbeYawRate));
     if (axis == wrong) m = -m;
     Moments<Thrust> out;
     (axis == 0 ? out.roll : axis == 1 ? out.pitch : out.yaw) = m;
@@ -208,17 +209,17 @@ TEST(SignCheck, TheCalibrationRefusesGravityOffBodyZ) {
     SensorSample sample;
     CalibrationAxis refused;
   } cases[] = {
-      {at_rest(0, 0, -g), CalibrationAxis::none},                // level
-      {at_rest(g / 6, -g / 6, -g), CalibrationAxis::none},       // 10 degrees off and a bias: taken
-      {at_rest(0, 0, g), CalibrationAxis::z},                    // upside down
-      {at_rest(g, 0, 0), CalibrationAxis::x},                    // on its nose: x reads gravity
-      {at_rest(0, -g, 0), CalibrationAxis::y},                   // on its side
-      {at_rest(g / 3, 0, -g * 9 / 10), CalibrationAxis::x},      // 20 degrees off level
+      {at_rest(0, 0, -g), CalibrationAxis::none},            // level
+      {at_rest(g / 6, -g / 6, -g), CalibrationAxis::none},   // 10 degrees off and a bias: taken
+      {at_rest(0, 0, g), CalibrationAxis::z},                // upside down
+      {at_rest(g, 0, 0), CalibrationAxis::x},                // on its nose: x reads gravity
+      {at_rest(0, -g, 0), CalibrationAxis::y},               // on its side
+      {at_rest(g / 3, 0, -g * 9 / 10), CalibrationAxis::x},  // 20 degrees off level
   };
   for (const Case& c : cases) {
     SensorCalibration<N> cal;
-    EXPECT_EQ(calibrate(cal, c.sample), c.refused) << c.sample.accel[0] << " " << c.sample.accel[1] << " "
-                                                   << c.sample.accel[2];
+    EXPECT_EQ(calibrate(cal, c.sample), c.refused)
+        << c.sample.accel[0] << " " << c.sample.accel[1] << " " << c.sample.accel[2];
     EXPECT_EQ(cal.done(), c.refused == CalibrationAxis::none);
   }
 }

@@ -880,6 +880,8 @@ TEST_F(MotorTestSafety, AnyRequestTheLiftOrALostLinkEndsItAtOnce) {
   } kEnds[] = {
       {"a stop", [](MotorTestSafety& t) { EXPECT_EQ(t.machine.request(m(Mode::safe), t.s), NackReason::none); }},
       {"the abort", [](MotorTestSafety& t) { EXPECT_EQ(t.machine.request(m(Mode::panic), t.s), NackReason::none); }},
+      {"an unknown mode",
+       [](MotorTestSafety& t) { EXPECT_EQ(t.machine.request(kModeCount, t.s), NackReason::unknown_mode); }},
       {"a flight mode",
        [](MotorTestSafety& t) {
          EXPECT_EQ(t.machine.request(m(Mode::manual), t.s), NackReason::engines_running) << "judged from safe";

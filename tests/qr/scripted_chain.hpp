@@ -21,10 +21,10 @@ struct ScriptedChain {
   // Scripted behaviour
   uint32_t calibration_samples = 10;
   int32_t tilt = 0;
-  bool landed_now = false;      // what landed() says
-  uint16_t hover_lift_now = 0;  // what hover_lift() says
-  bool height_known = true;     // what height_valid() says
-  chain::SignAxis sign_verdict = chain::SignAxis::none;                 // what wrong_sign() says
+  bool landed_now = false;                                                    // what landed() says
+  uint16_t hover_lift_now = 0;                                                // what hover_lift() says
+  bool height_known = true;                                                   // what height_valid() says
+  chain::SignAxis sign_verdict = chain::SignAxis::none;                       // what wrong_sign() says
   chain::CalibrationAxis calibration_verdict = chain::CalibrationAxis::none;  // what calibration_refused() says
 
   // What the firmware did to it

@@ -38,7 +38,7 @@ struct AxisMoments {
 
 constexpr AxisMoments moments_of(const EngineCommand& e) {
   int32_t w[4] = {};
-  for (int i = 0; i < 4; ++i) w[i] = int32_t{e.value[i]} * e.value[i];  // <= 10^6
+  for (int i = 0; i < 4; ++i) w[i] = static_cast<int32_t>(e.value[i]) * e.value[i];  // <= 10^6
   return {{w[3] - w[1], w[0] - w[2], w[1] + w[3] - w[0] - w[2]}};
 }
 
@@ -64,7 +64,7 @@ SignAxis probe_signs(Loops& loops, Mixer& mixer, Thrust lift) {
 class WrongWayMonitor {
  public:
   static constexpr uint32_t kBlockTicks = kControlHz / 50;  // 20 ms
-  static constexpr uint32_t kWindowTicks = kControlHz;  // 1 s after the take-off
+  static constexpr uint32_t kWindowTicks = kControlHz;      // 1 s after the take-off
   // A growth a vehicle that answers rightly does not show while its loops push against it: at
   // least 0.3 rad/s (17 deg/s, which no take-off turns at), grown by 0.1 rad/s in 20 ms.
   static constexpr int32_t kMinRateMrad = 300;
