@@ -8,6 +8,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include <common/drivers/crsf.hpp>
 #include <common/task_names.hpp>
 
 namespace wire {
@@ -86,7 +87,23 @@ enum class ObservableType : uint8_t { i16 = 0, u16 = 1 };
   ROW(rpm_front, 64, "rpm", u16, 0, "engine 0's speed from its ESC's eRPM answer (bidirectional DShot)") \
   ROW(rpm_right, 65, "rpm", u16, 0, "engine 1's speed") \
   ROW(rpm_back, 66, "rpm", u16, 0, "engine 2's speed") \
-  ROW(rpm_left, 67, "rpm", u16, 0, "engine 3's speed")
+  ROW(rpm_left, 67, "rpm", u16, 0, "engine 3's speed") \
+  ROW(rc_ch1, 68, "crsf", u16, 0, "radio channel 1 as received, before the channel map: 172..1811 (0: none yet)") \
+  ROW(rc_ch2, 69, "crsf", u16, 0, "radio channel 2") \
+  ROW(rc_ch3, 70, "crsf", u16, 0, "radio channel 3") \
+  ROW(rc_ch4, 71, "crsf", u16, 0, "radio channel 4") \
+  ROW(rc_ch5, 72, "crsf", u16, 0, "radio channel 5") \
+  ROW(rc_ch6, 73, "crsf", u16, 0, "radio channel 6") \
+  ROW(rc_ch7, 74, "crsf", u16, 0, "radio channel 7") \
+  ROW(rc_ch8, 75, "crsf", u16, 0, "radio channel 8") \
+  ROW(rc_ch9, 76, "crsf", u16, 0, "radio channel 9") \
+  ROW(rc_ch10, 77, "crsf", u16, 0, "radio channel 10") \
+  ROW(rc_ch11, 78, "crsf", u16, 0, "radio channel 11") \
+  ROW(rc_ch12, 79, "crsf", u16, 0, "radio channel 12") \
+  ROW(rc_ch13, 80, "crsf", u16, 0, "radio channel 13") \
+  ROW(rc_ch14, 81, "crsf", u16, 0, "radio channel 14") \
+  ROW(rc_ch15, 82, "crsf", u16, 0, "radio channel 15") \
+  ROW(rc_ch16, 83, "crsf", u16, 0, "radio channel 16")
 
 enum class ObservableId : uint8_t {
 #define WIRE_OBSERVABLE_ENUMERATOR(name, id, unit, type, scale, meaning) name = id,
@@ -190,6 +207,23 @@ constexpr bool task_cycle_rows_follow_the_tasks() {
   return true;
 }
 static_assert(task_cycle_rows_follow_the_tasks(), "cycles_<task>: one row per task, in the wire's task order");
+
+// The radio's channels, rc_ch1..rc_ch16 in channel order (radios count from 1), from rc_ch1 on:
+// the console's radio screen asks for them as four streams of four.
+inline constexpr uint8_t kFirstRcChannelObservable = static_cast<uint8_t>(ObservableId::rc_ch1);
+
+constexpr bool rc_channel_rows_follow_the_channels() {
+  if (kFirstRcChannelObservable + drivers::kCrsfChannelCount > kObservableCount) return false;
+  for (uint8_t ch = 0; ch < drivers::kCrsfChannelCount; ++ch) {
+    const char* name = kObservableTable[kFirstRcChannelObservable + ch].name;
+    const uint8_t number = static_cast<uint8_t>(ch + 1);
+    const char digits[3] = {static_cast<char>(number < 10 ? '0' + number : '0' + number / 10),
+                            static_cast<char>(number < 10 ? '\0' : '0' + number % 10), '\0'};
+    if (!starts_with(name, "rc_ch") || !starts_with(name + 5, digits, true)) return false;
+  }
+  return true;
+}
+static_assert(rc_channel_rows_follow_the_channels(), "rc_ch<N>: one row per radio channel, in channel order");
 
 static_assert(observable_texts_fit(),
               "name, space, unit and a NUL fit four observable_text frames; units have no space");

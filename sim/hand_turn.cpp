@@ -10,12 +10,17 @@ namespace {
 
 constexpr double kTwoPi = 2 * std::numbers::pi;
 
-Vec3 unit(BodyAxis axis) {
+}  // namespace
+
+Vec3 unit_of(BodyAxis axis) {
   static constexpr Vec3 kUnit[] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
   return kUnit[static_cast<int>(axis)];
 }
 
-}  // namespace
+Quat turned_about(const Quat& start, const Vec3& axis, double angle) {
+  const double s = std::sin(angle / 2);
+  return normalized(start * Quat{std::cos(angle / 2), axis.x * s, axis.y * s, axis.z * s});
+}
 
 double hand_turn_peak_rate(const HandTurnSpec& spec) { return 2 * kTwoPi * std::abs(spec.turns) / spec.seconds; }
 
@@ -50,7 +55,7 @@ bool body_axis_from_text(const std::string& text, BodyAxis& axis) {
 }
 
 HandTurn::HandTurn(const Quat& start, const HandTurnSpec& spec, uint64_t start_us)
-    : start_(start), axis_(unit(spec.axis)), turns_(spec.turns), start_us_(start_us),
+    : start_(start), axis_(unit_of(spec.axis)), turns_(spec.turns), start_us_(start_us),
       end_us_(start_us + static_cast<uint64_t>(std::llround(spec.seconds * 1e6))) {
   // The duration on the clock's whole microseconds, so the profile ends exactly at end_us_.
   seconds_ = static_cast<double>(end_us_ - start_us_) * 1e-6;
@@ -75,9 +80,7 @@ Vec3 HandTurn::rate(uint64_t now_us) const {
 
 Quat HandTurn::attitude(uint64_t now_us) const {
   if (done(now_us)) return start_;
-  const double half = angle(now_us) / 2;
-  const double s = std::sin(half);
-  return normalized(start_ * Quat{std::cos(half), axis_.x * s, axis_.y * s, axis_.z * s});
+  return turned_about(start_, axis_, angle(now_us));
 }
 
 Vec3 held_specific_force(const Quat& attitude, double gravity) { return rotate_inverse(attitude, {0, 0, -gravity}); }

@@ -35,6 +35,10 @@ std::string hand_turn_problem(const HandTurnSpec& spec);
 int whole_turns(double turns);
 // "x", "y" or "z" to an axis; false for anything else.
 bool body_axis_from_text(const std::string& text, BodyAxis& axis);
+// The axis as a unit vector in body axes.
+Vec3 unit_of(BodyAxis axis);
+// `start` turned by `angle` rad about the body's unit vector `axis`: start (x) rotation(axis, angle).
+Quat turned_about(const Quat& start, const Vec3& axis, double angle);
 
 class HandTurn {
  public:

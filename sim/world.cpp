@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <variant>
 
 namespace sim {
 namespace {
@@ -78,15 +79,30 @@ void World::sense_pressure() {
                  barometer_.temperature_c(now_us_));
 }
 
-std::string World::start_hand_turn(const HandTurnSpec& spec) {
+std::string World::hand_refused() const {
   for (const uint16_t command : plant_.engines()) {
     if (command != 0) return "the engines are running (safe first)";
   }
-  if (hand_) return "a turn is under way";
-  hand_.emplace(plant_.state().attitude, spec, now_us_);
+  if (!hand_) return "";
+  return std::holds_alternative<HandTurn>(*hand_) ? "a turn is under way" : "a tilt is under way";
+}
+
+void World::take(const std::variant<HandTurn, HandTilt>& hand) {
+  hand_ = hand;
   held_position_ = plant_.state().position;
   hold();
-  return "";
+}
+
+std::string World::start_hand_turn(const HandTurnSpec& spec) {
+  std::string refused = hand_refused();
+  if (refused.empty()) take(HandTurn(plant_.state().attitude, spec, now_us_));
+  return refused;
+}
+
+std::string World::start_hand_tilt(const HandTiltSpec& spec) {
+  std::string refused = hand_refused();
+  if (refused.empty()) take(HandTilt(plant_.state().attitude, spec, now_us_));
+  return refused;
 }
 
 // The rotors and the battery run on as the step made them; the pose is the hand's alone.
@@ -94,10 +110,15 @@ void World::hold() {
   PlantState s = plant_.state();
   s.position = held_position_;
   s.velocity = {};
-  s.attitude = hand_->attitude(now_us_);
-  s.rate = hand_->rate(now_us_);
+  const bool done = std::visit(
+      [&](const auto& hand) {
+        s.attitude = hand.attitude(now_us_);
+        s.rate = hand.rate(now_us_);
+        return hand.done(now_us_);
+      },
+      *hand_);
   plant_.set_state(s);
-  if (hand_->done(now_us_)) hand_.reset();
+  if (done) hand_.reset();
 }
 
 VibrationSample World::vibration() const {

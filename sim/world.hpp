@@ -8,9 +8,11 @@
 
 #include <optional>
 #include <string>
+#include <variant>
 
 #include <sim/barometer.hpp>
 #include <sim/battery_sensor.hpp>
+#include <sim/hand_tilt.hpp>
 #include <sim/hand_turn.hpp>
 #include <sim/imu.hpp>
 #include <sim/mpu6050_model.hpp>
@@ -50,10 +52,16 @@ class World {
 
   // A hand takes the vehicle now and turns it (hand_turn.hpp); while it holds, the physics does
   // not move the body and the IMU reads the turn. Refused (the reason returned, nothing done)
-  // while an engine command is not zero, a hand in the rotors, or while a turn is under way;
-  // empty once the turn has begun. The spec must keep hand_turn_problem's limits.
+  // while an engine command is not zero, a hand in the rotors, or while the hand holds it already
+  // ("a turn is under way", "a tilt is under way"); empty once the turn has begun. The spec must
+  // keep hand_turn_problem's limits.
   std::string start_hand_turn(const HandTurnSpec& spec);
+  // The same hand tilting it to an angle and back (hand_tilt.hpp), refused as a turn is. The spec
+  // must keep hand_tilt_problem's limits.
+  std::string start_hand_tilt(const HandTiltSpec& spec);
   bool held() const { return hand_.has_value(); }
+  // Why a hand may not take the vehicle now (the reasons above), or empty.
+  std::string hand_refused() const;
 
   // What the sensors read at this instant. In chip mode (use_chips) the IMU's reading goes to the
   // MPU-6050 model's registers instead, and the reading's imu and pressure_pa stay zero.
@@ -88,7 +96,7 @@ class World {
   Imu imu_;
   BatterySensor battery_sensor_;
   Barometer barometer_;
-  std::optional<HandTurn> hand_;
+  std::optional<std::variant<HandTurn, HandTilt>> hand_;
   Mpu6050Model* mpu_ = nullptr;
   Ms5611Model* ms5611_ = nullptr;
   // Chip mode: the barometer's instant, the middle of the MS5611 model's conversion (in whole
@@ -98,7 +106,9 @@ class World {
   Vec3 held_position_;
   // The step that may be taken from now towards `time_us`.
   uint32_t next_step_us(uint64_t time_us) const;
-  // The hand's pose over what the step made of the body; the hand lets go at the turn's end.
+  // The hand takes the vehicle where it is.
+  void take(const std::variant<HandTurn, HandTilt>& hand);
+  // The hand's pose over what the step made of the body; the hand lets go at the motion's end.
   void hold();
 
   uint32_t step_us_;

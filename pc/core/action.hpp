@@ -52,6 +52,7 @@ enum class Action : uint8_t {
   sim_reset,      // the simulator sets the vehicle down upright (after a crash); not on a real QR
   sim_turn,       // the simulator's hand turns the vehicle twice about a body axis (z, x, y in turn); not on a real QR
   sim_radio_off,  // the simulator's radio: its arm switch off (a panic in flight); not on a real QR
+  orientation_check,  // the orientation check's screen, in safe: is the IMU mounted as the QR takes it?
   help,
 };
 
@@ -105,6 +106,7 @@ inline constexpr ActionSpec kActions[] = {
     {Action::sim_reset, "sim: set upright"},
     {Action::sim_turn, "sim: turn (z, x, y)"},
     {Action::sim_radio_off, "sim radio: arm off"},
+    {Action::orientation_check, "orientation check"},
     {Action::help, "help on/off"},
 };
 

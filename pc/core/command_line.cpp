@@ -2,6 +2,8 @@
 
 #include <charconv>
 
+#include <pc/core/battery_gauge.hpp>
+
 namespace qrterm {
 namespace {
 
@@ -42,10 +44,19 @@ constexpr OptionSpec kOptions[] = {
      [](Options& o, const std::string&) { return o.no_joystick = true, std::string(); }},
     {"--joystick-map", "FILE", "axes, deadband, abort button (default ./qrterm-joystick.txt)",
      [](Options& o, const std::string& v) { return o.joystick_map = v, std::string(); }},
+    {"--joystick-wizard", nullptr, "find the joystick's axes and fire button step by step, write --joystick-map",
+     [](Options& o, const std::string&) { return o.joystick_wizard = true, std::string(); }},
     {"--params", "FILE", "parameter file, read at start, written at exit (default ./qrterm-params.txt)",
      [](Options& o, const std::string& v) { return o.params = v, std::string(); }},
     {"--log-dir", "DIR", "where the session's files go (default ./logs/<date>-<time>)",
      [](Options& o, const std::string& v) { return o.log_dir = v, std::string(); }},
+    {"--cells", "N", "LiPo cells of the QR's pack, 1..8 (default: counted from its voltage at connection)",
+     [](Options& o, const std::string& v) {
+       const auto [end, error] = std::from_chars(v.data(), v.data() + v.size(), o.battery_cells);
+       if (error != std::errc{} || end != v.data() + v.size() || o.battery_cells < 1 || o.battery_cells > kMaxCells)
+         return "--cells: \"" + v + "\" is not a number of cells, 1.." + std::to_string(kMaxCells);
+       return std::string();
+     }},
     {"--help", nullptr, "this text", [](Options& o, const std::string&) { return o.help = true, std::string(); }},
 };
 
@@ -86,6 +97,8 @@ ParsedCommandLine parse_command_line(const std::vector<std::string>& arguments) 
   }
   if (out.options.port && !out.options.sim.empty())
     out.error = "--port and --sim exclude each other: fly a QR or the simulator";
+  if (out.options.joystick_wizard && out.options.no_joystick)
+    out.error = "--joystick-wizard and --no-joystick exclude each other: the wizard maps a joystick";
   return out;
 }
 

@@ -18,8 +18,10 @@ struct Options {
   std::string joystick = "/dev/input/js0";
   bool no_joystick = false;
   std::string joystick_map = "./qrterm-joystick.txt";
+  bool joystick_wizard = false;  // find the joystick's map step by step and write it; flies nothing
   std::string params = "./qrterm-params.txt";
-  std::string log_dir;  // empty: ./logs/<date>-<time>
+  std::string log_dir;    // empty: ./logs/<date>-<time>
+  int battery_cells = 0;  // 0: counted from the voltage at connection
   bool help = false;
 };
 

@@ -4,6 +4,7 @@
 #include <pc/core/key_map.hpp>
 #include <pc/core/log_room.hpp>
 #include <pc/core/mode_names.hpp>
+#include <pc/core/param_file.hpp>
 #include <pc/core/qr_reports.hpp>
 #include <pc/core/request_texts.hpp>
 #include <pc/core/task_figures.hpp>
@@ -43,10 +44,10 @@ struct Console::Receiver {
     for (std::string& line : console.debug_text_.add(text)) console.note(Severity::qr, line);
   }
   void operator()(const wire::TelemetryAttitude& m) { console.on_attitude(m); }
-  void operator()(const wire::TelemetryRates& m) { console.telemetry_.on(m); }
+  void operator()(const wire::TelemetryRates& m) { console.on_rates(m); }
   void operator()(const wire::TelemetryEngines& m) { console.telemetry_.on(m); }
   void operator()(const wire::TelemetrySetpoints& m) { console.telemetry_.on(m); }
-  void operator()(const wire::TelemetrySystem& m) { console.telemetry_.on(m); }
+  void operator()(const wire::TelemetrySystem& m) { console.on_system(m); }
   void operator()(const wire::TelemetryLink& m) { console.telemetry_.on(m); }
   void operator()(const wire::TelemetryTask& m) { console.telemetry_.on(m); }
   void operator()(const wire::LogStatus& m) { console.on_log_status(m); }
@@ -62,7 +63,8 @@ struct Console::Receiver {
 
 Console::Console(ConsoleLog& log, ConsoleFiles files, const Setup& setup, uint32_t now_ms)
     : log_(log), recordings_(std::move(files), setup.rx_hex_part_bytes, note_hook()), start_ms_(now_ms),
-      now_ms_(now_ms), link_(now_ms, setup.first_seq), parameters_(setup.params, note_hook()),
+      now_ms_(now_ms), link_(now_ms, setup.first_seq), battery_(setup.battery_cells),
+      parameters_(setup.params, note_hook()),
       downloader_(LogDownloader::Hooks{
           [this](const wire::LogDownload& request) { link_.request(request, now_ms_); },
           [this](const wire::LogResend& request) { link_.request(request, now_ms_); },
@@ -71,7 +73,18 @@ Console::Console(ConsoleLog& log, ConsoleFiles files, const Setup& setup, uint32
           [this](const std::string& from, const std::string& to) { return recordings_.rename(from, to); }}),
       input_(setup.joystick), simulator_(setup.simulator, note_hook()), exit_(note_hook()),
       streams_(StreamSession::Hooks{note_hook(), [this](const std::string& name) { return recordings_.open(name); }}),
-      editor_(setup.params, setup.params_file), screens_(streams_, editor_, parameters_, note_hook()),
+      editor_(setup.params, setup.params_file), params_file_(setup.params_file),
+      check_(OrientationCheck::Hooks{
+          note_hook(),
+          [this] {
+            // What the QR reports, unless a change is on its way to it.
+            const wire::ParamId id = wire::ParamId::imu_orientation;
+            const int32_t wanted = parameters_.wanted().get(id);
+            return static_cast<int>(parameters_.pending(id) ? wanted : parameters_.reported(id).value_or(wanted));
+          },
+          [this](size_t axis) { return simulator_.hand_tilt(axis); },
+          [this](int orientation) { return set_imu_orientation(orientation); }}),
+      screens_(streams_, editor_, parameters_, check_, note_hook()),
       requests_(link_, telemetry_, controls_, input_, simulator_, note_hook()),
       bench_(MotorBench::Hooks{
           [this](uint8_t engine, uint16_t level) { return requests_.motor_test(engine, level, now_ms_); },
@@ -156,6 +169,7 @@ void Console::act(Action action, uint32_t now_ms) {
     case Action::params_read: parameters_.read_back(link_, now_ms_); break;
     case Action::tasks_print: print_tasks(); break;
     case Action::motor_test: open_motor_test(); break;
+    case Action::orientation_check: open_orientation_check(); break;
     case Action::lift_hover: {
       const Notice said = lift_to_hover(controls_, telemetry_.height ? telemetry_.height->hover_lift : 0);
       note(said.severity, said.text);
@@ -237,14 +251,55 @@ void Console::on_attitude(const wire::TelemetryAttitude& attitude) {
   const std::optional<wire::TelemetryAttitude> before = telemetry_.attitude;
   telemetry_.on(attitude);
   bench_.mode(attitude.mode);
+  check_.on_mode(attitude.mode);
   for (const Notice& notice : attitude_notices(before, attitude)) note(notice.severity, notice.text);
   recordings_.telemetry_row(now_ms_ - start_ms_, telemetry_, requests_.last_control());
+}
+
+void Console::on_rates(const wire::TelemetryRates& rates) {
+  telemetry_.on(rates);
+  check_.on_rates(rates, telemetry_hz());
+}
+
+void Console::open_orientation_check() {
+  if (link_state_ != LinkState::up || !telemetry_.attitude || telemetry_.attitude->mode != wire::Mode::safe) {
+    return note(Severity::warning, "the orientation check runs in safe with the link up: 0 first");
+  }
+  screens_.show_orientation_check();
+  note(Severity::info,
+       std::string("orientation check: imu_orientation ") + std::to_string(check_.in_force()) +
+           " in force; Enter starts each step" +
+           (simulator_.present() ? " (the simulator's hand tilts the QR)" : ", then move the QR by hand"));
+}
+
+std::string Console::set_imu_orientation(int orientation) {
+  const wire::ParamId id = wire::ParamId::imu_orientation;
+  if (parameters_.set(id, orientation) != wire::NackReason::none)
+    return "imu_orientation " + std::to_string(orientation) + " refused";
+  const std::string failed = write_param_to_file(params_file_, id, orientation);
+  if (!failed.empty()) return "imu_orientation = " + std::to_string(orientation) + " sent, but not kept: " + failed;
+  editor_.file_written(params_file_, id, orientation);
+  return "";
 }
 
 void Console::on_height(const wire::TelemetryHeight& height) {
   telemetry_.on(height);
   const std::string warning = descent_.on_height(height, telemetry_, simulator_.present(), now_ms_);
   if (!warning.empty()) note(Severity::error, warning);
+}
+
+void Console::on_system(const wire::TelemetrySystem& system) {
+  telemetry_.on(system);
+  const wire::ParameterValues& p = parameters_.wanted();
+  const wire::TelemetryEngines engines = telemetry_.engines.value_or(wire::TelemetryEngines{});
+  battery_.on_report(system.battery_mv, engines.engine, static_cast<uint16_t>(p.get(wire::ParamId::battery_sag_mv)),
+                     uptime_ms() / 1000.0);
+  const std::string warning = battery_.notice(static_cast<uint16_t>(p.get(wire::ParamId::battery_panic_mv)));
+  if (!warning.empty()) note(Severity::warning, warning);
+}
+
+std::optional<BatteryReading> Console::battery() const {
+  return battery_.reading(static_cast<uint16_t>(parameters_.wanted().get(wire::ParamId::battery_panic_mv)));
 }
 
 std::optional<double> Console::sinking_m_s() const {
@@ -291,6 +346,7 @@ void Console::on_gave_up(const wire::ResendEvent& event) {
   if (event.type == wire::MessageType::log_download || event.type == wire::MessageType::log_resend) return;
   if (event.type == wire::MessageType::observable_get) return streams_.table_unanswered();
   if (event.type == wire::MessageType::motor_test) return bench_.unanswered();
+  if (event.type == wire::MessageType::stream_request) streams_.stream_unanswered();
   note(Severity::error, std::string("no answer from the QR to the ") + request_what(event.type) + " request (" +
                             std::to_string(wire::kMaxSends) + " sends)");
 }
@@ -304,6 +360,7 @@ void Console::on_link_state(LinkState state) {
     // observable table and the plot's stream are asked for again.
     parameters_.send_all();
     streams_.link_up();
+    battery_.link_up();
   } else if (state == LinkState::lost) {
     note(Severity::error,
          "LINK LOST: no valid frame from the QR for " + std::to_string(kLinkLostAfterMs / 1000) + " s");

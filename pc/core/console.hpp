@@ -8,9 +8,11 @@
 //                          (screens, help, prompt, the plot and parameter screens' keys)
 //   asking the QR          PilotRequests (modes, abort, control), ParameterSync, StreamSession,
 //                          LogDownloader, ExitHandshake
-//   what the QR reports    TelemetryModel, qr_reports (notices), DescentWatch, the Receiver below
+//   what the QR reports    TelemetryModel, qr_reports (notices), DescentWatch, BatteryGauge, the
+//                          Receiver below
 //   the log folder         Recordings (rx.hex, telemetry.csv; files for the others)
 //   the simulator          SimulatorControls (truth channel), radio_pilot (the radio as the pilot)
+//   before the first flight OrientationCheck (is the IMU mounted as the QR takes it?)
 //   the motor test         MotorBench (its screen's steps, the truth of which rotor turned)
 #pragma once
 
@@ -27,6 +29,7 @@
 
 #include <common/messages.hpp>
 #include <common/parameter_table.hpp>
+#include <pc/core/battery_gauge.hpp>
 #include <pc/core/console_log.hpp>
 #include <pc/core/debug_text.hpp>
 #include <pc/core/descent_warning.hpp>
@@ -35,6 +38,7 @@
 #include <pc/core/link_session.hpp>
 #include <pc/core/log_downloader.hpp>
 #include <pc/core/motor_bench.hpp>
+#include <pc/core/orientation_check.hpp>
 #include <pc/core/parameter_editor.hpp>
 #include <pc/core/parameter_sync.hpp>
 #include <pc/core/pilot_controls.hpp>
@@ -60,6 +64,7 @@ class Console {
     bool simulator = false;        // the console started qrsim and has its truth channel
     std::string params_file;       // where `params` came from: the parameter screen's "file" column
     size_t rx_hex_part_bytes = kRxHexPartBytes;
+    int battery_cells = 0;  // the pack's LiPo cells (--cells); 0: counted at connection
   };
 
   Console(ConsoleLog& log, ConsoleFiles files, const Setup& setup, uint32_t now_ms);
@@ -101,6 +106,9 @@ class Console {
   LinkState link_state() const { return link_.state(now_ms_); }
   const LinkSession& link() const { return link_; }
   const TelemetryModel& telemetry() const { return telemetry_; }
+  // The battery's charge and time left against the QR's panic threshold (the console's
+  // battery_panic_mv); empty before the first telemetry_system report.
+  std::optional<BatteryReading> battery() const;
   const PilotControls& controls() const { return controls_; }
   const wire::Control& last_control() const { return requests_.last_control(); }
   const wire::ParameterValues& params() const { return parameters_.wanted(); }
@@ -114,6 +122,8 @@ class Console {
   const ParameterEditor& parameter_editor() const { return editor_; }
   const ParameterSync& parameter_sync() const { return parameters_; }
   const MotorBench& motor_bench() const { return bench_; }
+  const OrientationCheck& orientation_check() const { return check_; }
+  const std::string& params_file() const { return params_file_; }  // the parameter file the console keeps
   uint32_t telemetry_hz() const;
   uint32_t log_divider() const;  // the parameter the console holds
   uint32_t control_hz() const;
@@ -148,7 +158,13 @@ class Console {
   void on_answer(wire::MessageType type, wire::NackReason reason, const Answer& answer);
   void on_gave_up(const wire::ResendEvent& event);
   void on_attitude(const wire::TelemetryAttitude& attitude);
+  void on_rates(const wire::TelemetryRates& rates);
+  // The orientation check's key: its screen, in safe with the link up.
+  void open_orientation_check();
+  // The orientation check's verdict: imu_orientation sent and written into the parameter file.
+  std::string set_imu_orientation(int orientation);
   void on_height(const wire::TelemetryHeight& height);
+  void on_system(const wire::TelemetrySystem& system);
   void on_log_status(const wire::LogStatus& status);
   void on_link_state(LinkState state);
   void open_motor_test();
@@ -161,6 +177,7 @@ class Console {
   LinkState link_state_ = LinkState::waiting;
   std::string closed_because_;  // why the line closed, as first said
   TelemetryModel telemetry_;
+  BatteryGauge battery_;
   DebugTextAssembler debug_text_;
   PilotControls controls_;
   ParameterSync parameters_;
@@ -174,6 +191,8 @@ class Console {
   std::set<uint8_t> unhandled_types_;
   StreamSession streams_;
   ParameterEditor editor_;
+  std::string params_file_;  // the parameter file the console keeps (--params)
+  OrientationCheck check_;
   ScreenState screens_;
   PilotRequests requests_;
   MotorBench bench_;

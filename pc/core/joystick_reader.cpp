@@ -1,30 +1,9 @@
 #include <pc/core/joystick_reader.hpp>
 
-#include <errno.h>
-#include <unistd.h>
-
-#include <cstring>
-
 namespace qrterm {
 
 JoystickReader::ReadResult JoystickReader::read_from(int fd) {
-  uint8_t buffer[sizeof(js_event) * 32];
-  for (;;) {
-    const ssize_t n = ::read(fd, buffer, sizeof buffer);
-    if (n == 0) return ReadResult::lost;
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      return errno == EAGAIN ? ReadResult::ok : ReadResult::lost;
-    }
-    for (ssize_t i = 0; i < n; ++i) {
-      partial_[partial_length_++] = buffer[i];
-      if (partial_length_ < sizeof(js_event)) continue;
-      js_event event;
-      std::memcpy(&event, partial_, sizeof event);  // the driver's own record, in host layout
-      partial_length_ = 0;
-      feed(event);
-    }
-  }
+  return stream_.read_from(fd, [this](const js_event& event) { feed(event); });
 }
 
 void JoystickReader::feed(const js_event& event) {

@@ -10,6 +10,7 @@
 #include <array>
 
 #include <pc/core/joystick_map.hpp>
+#include <pc/core/js_event_stream.hpp>
 #include <pc/core/sticks.hpp>
 
 namespace qrterm {
@@ -18,10 +19,7 @@ class JoystickReader {
  public:
   explicit JoystickReader(const JoystickMap& map) : map_(map) {}
 
-  enum class ReadResult : uint8_t {
-    ok,    // read what there was (maybe nothing)
-    lost,  // end of file or a read error: the device is gone (unplugged)
-  };
+  using ReadResult = JsEventStream::ReadResult;
 
   // Reads every event available on a non-blocking descriptor.
   ReadResult read_from(int fd);
@@ -51,8 +49,7 @@ class JoystickReader {
   std::array<int32_t, kMaxAxes> axis_{};
   std::array<bool, kMaxAxes> seen_{};
   bool abort_pressed_ = false;
-  uint8_t partial_[sizeof(js_event)] = {};  // a record cut in two by a read
-  size_t partial_length_ = 0;
+  JsEventStream stream_;
 };
 
 }  // namespace qrterm

@@ -1,6 +1,7 @@
 // The keyboard, as one table: key -> action. The IN4073 map (ESC, 0-5, 7, a/z, arrows, q/w, u/j,
 // i/k, o/l) plus our keys for the coarse lift and the hover, the filter constants, logs,
-// parameters, the simulator's push, reset, turn and radio arm switch, and help.
+// parameters, the simulator's push, reset, turn and radio arm switch, the orientation check, the
+// motor test, and help.
 #pragma once
 
 #include <stddef.h>
@@ -30,7 +31,6 @@ inline constexpr KeyBinding kKeyMap[] = {
     {'5', Action::mode_full_control},
     {'7', Action::height_hold},  // IN4073's height mode key
     {'8', Action::mode_acro},    // after IN4073's keys: the rate loops alone
-    {'9', Action::motor_test},   // the bench's screen, not a mode key: safe only
     {'a', Action::lift_up},
     {'z', Action::lift_down},
     {kKeyPageUp, Action::lift_up_coarse},
@@ -62,6 +62,9 @@ inline constexpr KeyBinding kKeyMap[] = {
     {'v', Action::sim_reset},
     {'y', Action::sim_turn},
     {'m', Action::sim_radio_off},
+    {'9', Action::orientation_check},  // beside the mode keys: a step before the first flight, in safe
+    // IN4073's raw-mode key, a mode this firmware does not have: the other bench step, in safe.
+    {'6', Action::motor_test},
     {'h', Action::help},
     {'?', Action::help},
 };

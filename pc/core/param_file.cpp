@@ -1,8 +1,10 @@
 #include <pc/core/param_file.hpp>
 
 #include <algorithm>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <cstring>
 #include <string_view>
 
 namespace qrterm {
@@ -142,6 +144,23 @@ std::string describe_changes(const wire::ParameterValues& before, const wire::Pa
     text += std::string(spec.name) + " " + format_real(spec, was) + " -> " + format_real(spec, is);
   }
   return text;
+}
+
+std::string write_param_to_file(const std::string& path, wire::ParamId id, int32_t raw) {
+  std::string text;
+  wire::ParameterValues values;
+  if (read_file(path, text)) {
+    const ParamFileContents contents = parse_param_file(text);
+    if (!contents.errors.empty()) {
+      const LineError& first = contents.errors.front();
+      return path + ":" + std::to_string(first.line) + ": " + first.message;
+    }
+    values = contents.values;
+  } else if (errno != ENOENT) {
+    return "cannot read " + path + ": " + std::strerror(errno);
+  }
+  if (values.set(id_byte(id), raw) != wire::NackReason::none) return "the value is out of range";
+  return write_file_atomically(path, format_param_file(values));
 }
 
 }  // namespace qrterm

@@ -34,6 +34,12 @@ std::string format_real(const wire::ParameterSpec& spec, int32_t raw);
 // without a word.
 std::string describe_changes(const wire::ParameterValues& before, const wire::ParameterValues& after);
 
+// One parameter set in the parameter file at `path`, the others as the file has them (the
+// defaults where it is silent or missing), written through a temporary file: what went wrong, or
+// empty. A result kept the moment it is found (the orientation check's imu_orientation), not only
+// at exit.
+std::string write_param_to_file(const std::string& path, wire::ParamId id, int32_t raw);
+
 // Decimal text in the parameter's unit -> raw, rounded to the nearest step. False when the text
 // is not a number.
 bool parse_real(const wire::ParameterSpec& spec, const std::string& text, int64_t& raw);

@@ -111,6 +111,10 @@ size_t ParameterEditor::reset_all_defaults(ParameterSync& sync) const {
   return changed;
 }
 
+void ParameterEditor::file_written(const std::string& path, wire::ParamId id, int32_t raw) {
+  if (path == file_name_) (void)file_values_.set(static_cast<uint8_t>(id), raw);
+}
+
 std::string ParameterEditor::save(const ParameterSync& sync, const std::string& path) {
   if (path.empty()) return "no file name";
   const std::string temporary = path + ".tmp";

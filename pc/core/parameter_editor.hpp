@@ -51,6 +51,9 @@ class ParameterEditor {
   // The value the file holds, or nothing when the console's value is the file's.
   std::optional<int32_t> file_difference(const ParameterSync& sync, wire::ParamId id) const;
   const std::string& file_name() const { return file_name_; }
+  // One parameter written into the file at `path` by someone else (the orientation check): the
+  // file column follows when it is this file.
+  void file_written(const std::string& path, wire::ParamId id, int32_t raw);
 
   // The selected parameter one step up (+1) or down (-1): the gain keys' step where a key has one
   // (C1 and C2 double and halve), else a hundredth of its range.

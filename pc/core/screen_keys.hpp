@@ -1,8 +1,10 @@
-// The keys of the plot and parameter screens, as one table. They are looked up before the
-// cockpit's key map, and only on their screen; every other key (the abort keys, modes, lift and the
-// trims, exit) still does what the cockpit's map says, so the pilot flies from any screen. Tab
-// cycles those three screens. The motor test's screen (motor_bench.hpp) is apart: opened by its
-// key in safe, it takes every key but the abort and exit keys (any key stops a spinning engine).
+// The keys of the plot, parameter, radio and orientation check screens, as one table. They are
+// looked up before the cockpit's key map, and only on their screen; every other key (the abort
+// keys, modes, lift and the trims, exit) still does what the cockpit's map says, so the pilot flies
+// from any screen. Tab cycles the cockpit, plot, parameter and radio screens; the orientation check
+// is entered by its key in safe (key_map.hpp) and left by Tab, to the cockpit. The motor test's
+// screen (motor_bench.hpp) is entered by its key in safe too; it takes every key but the abort and
+// exit keys (any key stops a spinning engine).
 #pragma once
 
 #include <stddef.h>
@@ -12,10 +14,11 @@
 
 namespace qrterm {
 
-enum class Screen : uint8_t { cockpit, plot, parameters, motor_test };
-inline constexpr size_t kScreenCount = 4;
-inline constexpr size_t kTabScreens = 3;  // Tab cycles the first three
-inline constexpr const char* kScreenNames[kScreenCount] = {"cockpit", "plot", "parameters", "motor test"};
+enum class Screen : uint8_t { cockpit, plot, parameters, radio, orientation, motor_test };
+inline constexpr size_t kScreenCount = 6;
+inline constexpr size_t kTabScreens = 4;  // the screens Tab goes round, the first four
+inline constexpr const char* kScreenNames[kScreenCount] = {"cockpit",           "plot",      "parameters", "radio",
+                                                           "orientation check", "motor test"};
 
 enum class ScreenAction : uint8_t {
   none,
@@ -37,6 +40,9 @@ enum class ScreenAction : uint8_t {
   param_all_defaults,
   param_save,  // opens the prompt: a file name
   param_load,
+  radio_ends_again,
+  orientation_enter,    // start the step; on the verdict, set it or check again
+  orientation_restart,  // from the first step again
 };
 
 struct ScreenKey {
@@ -68,6 +74,9 @@ inline constexpr ScreenKey kScreenKeys[] = {
     {Screen::parameters, '!', ScreenAction::param_all_defaults, "every parameter to its default"},
     {Screen::parameters, kKeyCtrlS, ScreenAction::param_save, "save to a named file"},
     {Screen::parameters, kKeyCtrlO, ScreenAction::param_load, "load a named file"},
+    {Screen::radio, ' ', ScreenAction::radio_ends_again, "count the sticks' ends again from now"},
+    {Screen::orientation, kKeyEnter, ScreenAction::orientation_enter, "start the step / set it"},
+    {Screen::orientation, kKeyBackspace, ScreenAction::orientation_restart, "from step 1 again"},
 };
 
 constexpr ScreenAction screen_action(Screen screen, Key key) {

@@ -1,7 +1,8 @@
 // What the pilot looks at (docs/console.md "The screen"): which screen, the help over it, and the
 // line being typed on the plot or parameter screen. The keys those screens own (screen_keys.hpp)
-// act here, on the plot's streams and on the parameter editor; every other key is the cockpit's,
-// so the pilot flies from any screen.
+// act here, on the plot's streams, the parameter editor, the radio screen's ends and the
+// orientation check; every other key is the cockpit's, so the pilot flies from any screen. Showing
+// the radio screen gives it the QR's streams, leaving it gives them back to the plot.
 #pragma once
 
 #include <stdint.h>
@@ -12,6 +13,7 @@
 
 #include <pc/core/console_log.hpp>
 #include <pc/core/key.hpp>
+#include <pc/core/orientation_check.hpp>
 #include <pc/core/parameter_editor.hpp>
 #include <pc/core/parameter_sync.hpp>
 #include <pc/core/screen_keys.hpp>
@@ -30,8 +32,9 @@ class ScreenState {
  public:
   using Note = std::function<void(Severity, const std::string&)>;
 
-  ScreenState(StreamSession& streams, ParameterEditor& editor, ParameterSync& parameters, Note note)
-      : streams_(streams), editor_(editor), parameters_(parameters), note_(std::move(note)) {}
+  ScreenState(StreamSession& streams, ParameterEditor& editor, ParameterSync& parameters, OrientationCheck& check,
+              Note note)
+      : streams_(streams), editor_(editor), parameters_(parameters), check_(check), note_(std::move(note)) {}
 
   enum class Taken : uint8_t {
     no,         // the cockpit's key
@@ -41,6 +44,14 @@ class ScreenState {
   // A key, before the cockpit's key map. The prompt takes the typing; the abort keys and ^C still
   // act, and close it. `now_s`: the console's clock, for the plot.
   Taken key(Key key, double now_s);
+
+  // The orientation check's screen, from its first step (the console has checked the QR is in safe).
+  void show_orientation_check() {
+    help_ = false;
+    prompt_.reset();
+    screen_ = Screen::orientation;
+    check_.start();
+  }
 
   void toggle_help() { help_ = !help_; }
   // A screen opened by a key of the cockpit's (the motor test), and back to the cockpit.
@@ -64,6 +75,7 @@ class ScreenState {
   StreamSession& streams_;
   ParameterEditor& editor_;
   ParameterSync& parameters_;
+  OrientationCheck& check_;
   Note note_;
   Screen screen_ = Screen::cockpit;
   bool help_ = false;

@@ -84,6 +84,20 @@ void SimulatorControls::turn() {
                             " axis in 4 s (with gyro_turns = 2 and a calibration: that axis' gyro scale)");
 }
 
+bool SimulatorControls::hand_tilt(size_t axis) {
+  // 45 deg out in a third of a second, held as long, back as fast: at most 212 deg/s, inside the
+  // gyro's 500, and a step answered in under 1.5 s.
+  static constexpr struct {
+    char axis;
+    const char* said;
+  } kTilts[] = {{'x', "right side down"}, {'y', "nose up"}, {'z', "nose right"}};
+  if (!present_ || axis >= 3) return false;
+  commands_.emplace_back(std::string("tilt ") + kTilts[axis].axis + " 45 1\n");
+  note_(Severity::info,
+        std::string("sim: the hand tilts the QR ") + kTilts[axis].said + " 45 deg, holds it and sets it down");
+  return true;
+}
+
 bool SimulatorControls::take_mode_request(wire::Mode mode, bool in_safe, const TelemetryModel& telemetry) {
   switch (radio_arming(mode, in_safe, present_, telemetry)) {
     case RadioArming::console: return false;

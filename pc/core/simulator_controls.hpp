@@ -1,9 +1,11 @@
 // The console's end of the simulator's truth channel (docs/simulator.md section 5): the hand of
-// the person at the desk (a push, set down upright, turned for the gyro's scale), the simulated
+// the person at the desk (a push, set down upright, turned for the gyro's scale, tilted for the
+// orientation check), the simulated
 // radio's switches, and the truth lines that come back. Only a QR the console started in qrsim has
 // one; on a real QR each of these keys says so and does nothing.
 #pragma once
 
+#include <stddef.h>
 #include <stdint.h>
 
 #include <array>
@@ -31,6 +33,11 @@ class SimulatorControls {
 
   // The simulator's keys (push, reset, turn, the radio's arm switch off); false for any other.
   bool act(Action action);
+
+  // The orientation check's hand (orientation_check.hpp): it tilts the QR 45 deg the positive
+  // way about body axis `axis` (0 x, 1 y, 2 z), holds it and sets it down as it was, in 1 s
+  // (`tilt x 45 1`). False, and nothing sent, without a simulator: a person's hand does it.
+  bool hand_tilt(size_t axis);
 
   // A mode request while the simulator's radio flies (radio_pilot.hpp): the pilot's hand on the
   // transmitter moves its switches instead. True when it was the radio's to take, done or refused.

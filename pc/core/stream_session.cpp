@@ -1,5 +1,6 @@
 #include <pc/core/stream_session.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <sstream>
 
@@ -38,13 +39,19 @@ void StreamSession::table_unanswered() {
   hooks_.note(Severity::warning, "the QR does not answer the observable table request: no plots from this firmware");
 }
 
+void StreamSession::stream_unanswered() {
+  in_flight_.reset();
+  stalled_ = true;
+}
+
 void StreamSession::link_up() {
   table_given_up_ = false;
   table_owed_ = true;
   table_asked_ = false;
-  streaming_ = false;
-  asked_.reset();
-  request_owed_ = !plot_.traces().empty();
+  stalled_ = false;
+  in_flight_.reset();
+  // A QR that starts anew runs no stream: what the screens want is asked for again.
+  for (uint8_t s = 0; s < kStreams; ++s) asked_[s] = running_[s] = StreamPlan{};
 }
 
 void StreamSession::pick(const std::string& names) {
@@ -90,8 +97,20 @@ void StreamSession::slower() {
 
 void StreamSession::selection_changed() {
   plot_.clear_points();
-  streaming_ = false;
-  request_owed_ = true;
+  stalled_ = false;
+}
+
+void StreamSession::open_radio() {
+  radio_open_ = true;
+  radio_.start();
+  stalled_ = false;
+  radio_state_.clear();
+  note_radio_state();
+}
+
+void StreamSession::close_radio() {
+  radio_open_ = false;
+  stalled_ = false;
 }
 
 std::string StreamSession::cost_text(uint32_t telemetry_hz) const {
@@ -104,6 +123,34 @@ std::string StreamSession::cost_text(uint32_t telemetry_hz) const {
   return std::to_string(n) + " x " + std::to_string(catalog_.control_hz() / divider) +
          " Hz = " + std::to_string(samples) + " samples/s: " + std::to_string(bytes) + " of " + std::to_string(room) +
          " B/s" + (bytes > room ? " OVER" : "");
+}
+
+StreamPlan StreamSession::wanted(uint8_t stream) const {
+  if (radio_streams()) {
+    const uint16_t divider = static_cast<uint16_t>(std::max(1, catalog_.control_hz() / kRadioStreamHz));
+    const auto first = rc_ids_->begin() + stream * wire::kStreamObservablesMax;
+    return StreamPlan{std::vector<uint8_t>(first, first + wire::kStreamObservablesMax), divider};
+  }
+  if (stream != kPlotStream || plot_.traces().empty()) return StreamPlan{};
+  return StreamPlan{plot_.ids(), plot_.divider(catalog_.control_hz())};
+}
+
+void StreamSession::note_radio_state() {
+  radio_streaming_ = false;
+  if (!catalog_.complete()) {
+    radio_state_ = "no table yet";
+  } else if (!rc_ids_) {
+    radio_state_ = "the QR's table has no rc_ch1..rc_ch16: this firmware sends no channels";
+  } else {
+    uint8_t running = 0;
+    for (uint8_t s = 0; s < kStreams; ++s) running += running_[s] == wanted(s) ? 1 : 0;
+    radio_streaming_ = running == kStreams;
+    if (radio_streaming_) {
+      radio_state_ = std::to_string(kRadioChannels) + " channels at " + std::to_string(kRadioStreamHz) + " Hz";
+    } else if (radio_state_.rfind("refused", 0) != 0) {
+      radio_state_ = "asking the QR (" + std::to_string(running) + " of " + std::to_string(kStreams) + " streams)";
+    }
+  }
 }
 
 void StreamSession::tick(LinkSession& link, uint32_t now_ms) {
@@ -126,16 +173,29 @@ void StreamSession::tick(LinkSession& link, uint32_t now_ms) {
     return;
   }
   if (state_.rfind("no table", 0) == 0) state_ = "table of " + std::to_string(catalog_.count()) + " observables";
-  if (!request_owed_ || catalog_.control_hz() == 0) return;
-  request_owed_ = false;
+  if (!rc_ids_) {
+    std::vector<uint8_t> ids;
+    for (uint8_t ch = 1; ch <= kRadioChannels; ++ch) {
+      if (const std::optional<uint8_t> id = catalog_.find("rc_ch" + std::to_string(ch))) ids.push_back(*id);
+    }
+    if (ids.size() == kRadioChannels) rc_ids_ = ids;
+  }
+  if (radio_open_) note_radio_state();
+  if (in_flight_ || stalled_ || catalog_.control_hz() == 0) return;
+  for (uint8_t s = 0; s < kStreams; ++s) {
+    const StreamPlan plan = wanted(s);
+    if (plan != asked_[s]) return ask(link, s, plan, now_ms);
+  }
+}
+
+void StreamSession::ask(LinkSession& link, uint8_t stream, const StreamPlan& plan, uint32_t now_ms) {
   wire::StreamRequest request;
-  request.stream = kPlotStream;
-  const std::vector<uint8_t> ids = plot_.ids();
-  request.divider = ids.empty() ? uint16_t{0} : plot_.divider(catalog_.control_hz());
-  for (size_t i = 0; i < ids.size(); ++i) request.id[i] = ids[i];
-  asked_ = request;
-  streaming_ = false;
-  state_ = ids.empty() ? "stopping" : "asking the QR";
+  request.stream = stream;
+  request.divider = plan.divider;
+  for (size_t i = 0; i < plan.ids.size(); ++i) request.id[i] = plan.ids[i];
+  asked_[stream] = plan;
+  in_flight_.emplace(stream, plan);
+  if (stream == kPlotStream && !radio_streams()) state_ = plan.ids.empty() ? "stopping" : "asking the QR";
   link.request(request, now_ms);
 }
 
@@ -144,23 +204,36 @@ void StreamSession::on_answer(wire::MessageType type, wire::NackReason reason, u
     if (reason != wire::NackReason::none) hooks_.note(Severity::warning, "QR refused the observable table request");
     return;
   }
-  if (type != wire::MessageType::stream_request || !asked_) return;
-  const wire::StreamRequest asked = *asked_;
-  asked_.reset();
+  if (type != wire::MessageType::stream_request || !in_flight_) return;
+  const auto [stream, plan] = *in_flight_;
+  in_flight_.reset();
+  answered(stream, plan, reason, telemetry_hz);
+}
+
+void StreamSession::answered(uint8_t stream, const StreamPlan& plan, wire::NackReason reason, uint32_t telemetry_hz) {
+  const bool radio = radio_streams() && plan == wanted(stream);
   if (reason != wire::NackReason::none) {
     const wire::NackReasonSpec* spec = wire::find_nack_reason(reason);
-    state_ = std::string("refused: ") + (spec != nullptr ? spec->name : "?");
-    hooks_.note(Severity::warning, std::string("QR refused the stream: ") + (spec != nullptr ? spec->text : "refused") +
-                                       " (" + cost_text(telemetry_hz) + ")");
+    const std::string refused = std::string("refused: ") + (spec != nullptr ? spec->name : "?");
+    const std::string why = spec != nullptr ? spec->text : "refused";
+    if (radio) {
+      radio_state_ = refused;
+      hooks_.note(Severity::warning, "QR refused the radio's channels: " + why);
+    } else if (stream == kPlotStream) {
+      state_ = refused;
+      hooks_.note(Severity::warning, "QR refused the stream: " + why + " (" + cost_text(telemetry_hz) + ")");
+    }
     return;
   }
-  if (asked.divider == 0) {
+  running_[stream] = plan;
+  unpackers_[stream].start(static_cast<uint8_t>(plan.ids.size()));
+  if (radio) return note_radio_state();
+  if (stream != kPlotStream || radio_streams()) return;
+  if (plan.divider == 0) {
     state_ = "stopped";
     return;
   }
-  streaming_ = true;
   state_ = "streaming";
-  unpacker_.start(asked.count());
   open_csv();
 }
 
@@ -176,12 +249,28 @@ void StreamSession::open_csv() {
 }
 
 void StreamSession::on(const wire::ObservableSamples& m, double now_s) {
-  // Frames of an older selection, or before the QR said yes, are not this plot's.
-  if (!streaming_ || m.stream() != kPlotStream) return;
+  // Frames of an older plan, or before the QR said yes, are not the screens'.
+  const uint8_t stream = m.stream();
+  if (stream >= kStreams || (in_flight_ && in_flight_->first == stream)) return;
+  const StreamPlan plan = wanted(stream);
+  if (plan.divider == 0 || running_[stream] != plan) return;
+  if (radio_streams()) {
+    const size_t first = size_t{stream} * wire::kStreamObservablesMax;
+    unpackers_[stream].unpack(m, [&](const int16_t* bits) {
+      for (size_t i = 0; i < plan.ids.size(); ++i)
+        radio_.on_channel(static_cast<uint8_t>(first + i), static_cast<uint16_t>(bits[i]));
+    });
+    return;
+  }
+  if (stream == kPlotStream) on_plot_samples(m, now_s);
+}
+
+void StreamSession::on_plot_samples(const wire::ObservableSamples& m, double now_s) {
+  wire::SampleUnpacker& unpacker = unpackers_[kPlotStream];
   const std::vector<Trace>& traces = plot_.traces();
   const double period_s = static_cast<double>(plot_.divider(catalog_.control_hz())) / catalog_.control_hz();
   std::vector<std::vector<double>> samples;
-  unpacker_.unpack(m, [&](const int16_t* bits) {
+  unpacker.unpack(m, [&](const int16_t* bits) {
     std::vector<double> values;
     for (size_t i = 0; i < traces.size(); ++i) {
       const ObservableRow* row = catalog_.row(traces[i].id);
@@ -190,7 +279,7 @@ void StreamSession::on(const wire::ObservableSamples& m, double now_s) {
     samples.push_back(std::move(values));
   });
   // The newest sample of the frame was taken last; the others a period apart before it.
-  const uint32_t first_index = unpacker_.received() + unpacker_.lost() - static_cast<uint32_t>(samples.size());
+  const uint32_t first_index = unpacker.received() + unpacker.lost() - static_cast<uint32_t>(samples.size());
   for (size_t j = 0; j < samples.size(); ++j) {
     const double t = now_s - static_cast<double>(samples.size() - 1 - j) * period_s;
     plot_.add_sample(t, samples[j]);

@@ -1,7 +1,11 @@
 // The console's side of observable streams (docs/protocol.md section 13): it learns the QR's
-// observable table at connect, asks for the plot's selection as stream 0, unpacks the samples into
-// the PlotModel and writes every one to a CSV in the log folder (a new file for each selection,
-// units in the column names). The cost of a selection is shown before it is asked for; the QR
+// observable table at connect and asks the QR's four streams for what the screens show: the
+// plot's selection as stream 0, or, while the radio screen is open, the radio's sixteen channels
+// (rc_ch1..rc_ch16) as all four, four channels each (section 13.5; the plot's stream waits). One
+// stream_request is out at a time (the resend queue holds one request of a type), and a stream is
+// asked again only when what it should carry changes. The plot's samples go into the PlotModel
+// and to a CSV in the log folder (a new file for each selection, units in the column names), the
+// radio's into the RadioSetup. The cost of a selection is shown before it is asked for; the QR
 // has the last word (nack over_budget).
 #pragma once
 
@@ -13,6 +17,7 @@
 #include <optional>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <common/observable_messages.hpp>
@@ -22,13 +27,24 @@
 #include <pc/core/link_session.hpp>
 #include <pc/core/observable_catalog.hpp>
 #include <pc/core/plot_model.hpp>
+#include <pc/core/radio_setup.hpp>
 
 namespace qrterm {
 
-// The plot's traces travel as this stream; the QR has room for more (other clients, later screens).
+// The plot's traces travel as this stream; the radio screen takes all of them while it is open.
 inline constexpr uint8_t kPlotStream = 0;
+inline constexpr uint8_t kStreams = wire::kStreamCount;
+static_assert(kStreams * wire::kStreamObservablesMax == kRadioChannels, "four streams of four carry the channels");
 // A table with rows missing is asked for again this often.
 inline constexpr uint32_t kTableRetryMs = 2000;
+
+// A stream as the console wants the QR to run it: these observables, in sample order, every
+// `divider` control periods; divider 0 and no observables: stopped.
+struct StreamPlan {
+  std::vector<uint8_t> ids;
+  uint16_t divider = 0;
+  bool operator==(const StreamPlan&) const = default;
+};
 
 class StreamSession {
  public:
@@ -47,10 +63,24 @@ class StreamSession {
   // observable_get went unanswered: a firmware without streams. Not asked again until the link
   // comes up anew.
   void table_unanswered();
+  // stream_request went unanswered: asked again when what a stream should carry changes, or the
+  // link comes up anew.
+  void stream_unanswered();
   // The link came up (again): the QR may be a new one.
   void link_up();
-  // Asks for the table while rows are missing, and for the selection when it changed.
+  // Asks for the table while rows are missing, and for a stream whose plan changed.
   void tick(LinkSession& link, uint32_t now_ms);
+
+  // --- the radio screen: opening it starts its RadioSetup (ends counted from then) and gives it
+  // the four streams; closing it gives stream 0 back to the plot and stops the others.
+  void open_radio();
+  void close_radio();
+  const RadioSetup& radio() const { return radio_; }
+  RadioSetup& radio() { return radio_; }
+  // "16 channels at 25 Hz", "asking the QR (2 of 4 streams)", "refused: over_budget", ...
+  const std::string& radio_state() const { return radio_state_; }
+  // The QR runs the four streams as the radio screen asked.
+  bool radio_streaming() const { return radio_streaming_; }
 
   // --- the pilot
   // Adds the observables named in `names` (separated by spaces), as many as fit.
@@ -68,7 +98,7 @@ class StreamSession {
   // "streaming", "asking the QR", "refused: ...", "no table yet (12/31)".
   const std::string& state() const { return state_; }
   uint32_t samples_received() const { return received_; }
-  uint32_t samples_lost() const { return unpacker_.lost(); }
+  uint32_t samples_lost() const { return unpackers_[kPlotStream].lost(); }
   // Arrival to the last sample's time on the screen is the screen's business; this is when the
   // newest samples arrived (console seconds), for the latency figure.
   double last_arrival_s() const { return last_arrival_s_; }
@@ -76,14 +106,27 @@ class StreamSession {
  private:
   void selection_changed();
   void open_csv();
+  // The radio's channels' rows in the QR's table, once it has all sixteen.
+  bool radio_streams() const { return radio_open_ && rc_ids_.has_value(); }
+  StreamPlan wanted(uint8_t stream) const;
+  void ask(LinkSession& link, uint8_t stream, const StreamPlan& plan, uint32_t now_ms);
+  void answered(uint8_t stream, const StreamPlan& plan, wire::NackReason reason, uint32_t telemetry_hz);
+  void on_plot_samples(const wire::ObservableSamples& m, double now_s);
+  void note_radio_state();
 
   Hooks hooks_;
   ObservableCatalog catalog_;
   PlotModel plot_;
-  wire::SampleUnpacker unpacker_;
-  std::optional<wire::StreamRequest> asked_;  // sent, not answered yet
-  bool request_owed_ = false;                 // the selection or rate changed since the last request
-  bool streaming_ = false;                    // the QR acked the current selection
+  RadioSetup radio_;
+  bool radio_open_ = false;
+  std::optional<std::vector<uint8_t>> rc_ids_;  // rc_ch1..rc_ch16's ids in the QR's table
+  std::string radio_state_ = "no table yet";
+  bool radio_streaming_ = false;
+  wire::SampleUnpacker unpackers_[kStreams];
+  StreamPlan asked_[kStreams];                               // the last plan asked for, answered or not
+  StreamPlan running_[kStreams];                             // the last plan the QR acked
+  std::optional<std::pair<uint8_t, StreamPlan>> in_flight_;  // sent, not answered yet
+  bool stalled_ = false;                                     // a request went unanswered
   bool table_owed_ = true;
   uint32_t table_asked_ms_ = 0;
   bool table_asked_ = false;

@@ -13,6 +13,21 @@ struct JoystickError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The device opened for its raw events: the joystick wizard reads them before there is a map.
+class RawJoystick {
+ public:
+  // Throws JoystickError when the device cannot be opened.
+  explicit RawJoystick(const std::string& path);
+  ~RawJoystick();
+  RawJoystick(const RawJoystick&) = delete;
+  RawJoystick& operator=(const RawJoystick&) = delete;
+
+  int fd() const { return fd_; }
+
+ private:
+  int fd_ = -1;
+};
+
 class JoystickDevice {
  public:
   // Throws JoystickError when the device cannot be opened.

@@ -95,28 +95,29 @@ void Cockpit::draw_mode_and_link(const Console& console, int width) {
 
 void Cockpit::draw_system(const Console& console, int width) {
   const TelemetryModel& t = console.telemetry();
+  put(2, 0, "battery", 0, A_BOLD);
   if (t.system) {
     const wire::TelemetrySystem& s = *t.system;
     const bool low = t.flag(wire::kFlagBatteryWarning);
-    put(2, 0, "battery", 0, A_BOLD);
     put(2, 8, text("%5.2f V", s.battery_mv / 1000.0), low ? kError : kInfo, low ? A_BOLD | A_REVERSE : A_NORMAL);
+    // The charge and the time to the QR's battery panic; yellow once it is near (battery_gauge.hpp).
+    if (const std::optional<BatteryReading> charge = console.battery()) {
+      put(2, 16, charge_text(*charge), charge->near_panic ? kWarning : kInfo, charge->near_panic ? A_BOLD : A_NORMAL);
+    }
     // On the simulator the board's clock is simulated time, which stands still while a tick runs:
     // load and loop time read 0 and the misses count the host's scheduling, so none is shown. A QR
     // whose board has no clock (loop time 0) gets the same.
     if (console.flying_simulator() || s.loop_time_us == 0) {
-      put(2, 18,
-          console.flying_simulator() ? "cpu n/a   loop n/a   deadline misses n/a (simulator)"
-                                     : "cpu n/a   loop n/a (the board has no clock)",
+      put(2, 37,
+          console.flying_simulator() ? "cpu n/a  loop n/a  misses n/a (simulator)"
+                                     : "cpu n/a  loop n/a (the board has no clock)",
           kDim);
     } else {
-      put(2, 18,
-          text("cpu %5.1f %%   loop %5u us   deadline misses %u", s.cpu_load / 10.0, s.loop_time_us,
-               s.deadline_misses));
+      put(2, 37, text("cpu %5.1f %%  loop %5u us  misses %u", s.cpu_load / 10.0, s.loop_time_us, s.deadline_misses));
     }
   } else {
-    put(2, 0, "battery", 0, A_BOLD);
     put(2, 8, "-- V", kDim);
-    put(2, 18, "cpu -- %   loop -- us   deadline misses --", kDim);
+    put(2, 37, "cpu -- %  loop -- us  misses --", kDim);
   }
   int column = 0;
   put(3, column, "QR", 0, A_BOLD);
@@ -395,7 +396,7 @@ void Cockpit::draw_help(int rows, int width) {
   const int per_column = (count + columns - 1) / columns;
   const int column_width = std::max(kEntry, std::min(38, (width - 2) / columns));
   const int box_width = std::min(width, columns * column_width + 2);
-  const int box_height = std::min(rows - kTop, per_column + 2);
+  const int box_height = std::min(rows - kTop, per_column + 2);  // the title, the entries, a margin below
   const int top = kTop + std::max(0, (rows - kTop - box_height) / 2);
   const int left = std::max(0, (width - box_width) / 2);
   for (int r = 0; r < box_height; ++r) put(top + r, left, std::string(static_cast<size_t>(box_width), ' '), kTitle);
@@ -476,6 +477,10 @@ void Cockpit::compose(const Console& console) {
   } else if (console.screen() == Screen::motor_test) {
     const int below = draw_motor_test_screen(console, 4, width);
     draw_log(console, below, rows - below, width);
+  } else if (console.screen() == Screen::radio) {
+    draw_radio_screen(console, 4, rows - 4, width);
+  } else if (console.screen() == Screen::orientation) {
+    draw_orientation_screen(console, 4, rows - 4, width);
   } else {
     draw_engines_and_attitude(console, width);
     draw_pilot(console, width);

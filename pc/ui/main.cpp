@@ -25,6 +25,7 @@
 #include <pc/platform/signals.hpp>
 #include <pc/platform/sim_process.hpp>
 #include <pc/ui/cockpit.hpp>
+#include <pc/ui/joystick_wizard_screen.hpp>
 #include <pc/ui/main_loop.hpp>
 #include <pc/ui/terminal.hpp>
 
@@ -243,6 +244,30 @@ void say_goodbye(const ConsoleLog& log, const Console& console, const StartedPar
   std::fprintf(stderr, "qrterm: logs in %s\n", log_folder.c_str());
 }
 
+// qrterm --joystick-wizard: the wizard's screen instead of the cockpit; no QR, no simulator, no
+// log folder. The map it writes is what the next start reads.
+int run_wizard(const Options& options) {
+  struct stat info {};
+  if (::stat(options.joystick_map.c_str(), &info) == 0 && S_ISDIR(info.st_mode))
+    throw Failure{kUsageError, options.joystick_map + " is a folder: --joystick-map names a file"};
+  std::unique_ptr<RawJoystick> joystick;
+  try {
+    joystick = std::make_unique<RawJoystick>(options.joystick);
+  } catch (const JoystickError& e) {
+    throw Failure{kUsageError, std::string(e.what()) + "\n  plug one in, or name it with --joystick PATH"};
+  }
+  install_signal_handlers();
+  WizardOutcome outcome;
+  {
+    Terminal terminal;
+    outcome = run_joystick_wizard({joystick->fd(), options.joystick, options.joystick_map}, terminal);
+  }
+  std::fprintf(stderr, "qrterm: %s\n", outcome.message.c_str());
+  if (outcome.status == 0 && options.joystick_map != Options{}.joystick_map)
+    std::fprintf(stderr, "  fly with it: qrterm --joystick-map %s\n", options.joystick_map.c_str());
+  return outcome.status;
+}
+
 int run(int argc, char** argv) {
   const ParsedCommandLine parsed = parse_command_line(std::vector<std::string>(argv + 1, argv + argc));
   if (!parsed.error.empty()) throw Failure{kUsageError, parsed.error};
@@ -252,6 +277,7 @@ int run(int argc, char** argv) {
     return 0;
   }
   if (!::isatty(STDIN_FILENO) || !::isatty(STDOUT_FILENO)) throw Failure{kUsageError, "qrterm needs a terminal"};
+  if (options.joystick_wizard) return run_wizard(options);
 
   const StartedParams params = load_params(options.params);
   std::unique_ptr<JoystickDevice> joystick = open_joystick(options);
@@ -265,6 +291,7 @@ int run(int argc, char** argv) {
   setup.first_seq = static_cast<uint8_t>(::time(nullptr));
   setup.simulator = line.sim != nullptr;
   setup.params_file = options.params;
+  setup.battery_cells = options.battery_cells;
   Console console(log, files.for_console(), setup, monotonic_ms());
   note_start(console, line, files.folder(), params, joystick.get(), options);
 

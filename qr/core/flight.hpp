@@ -176,6 +176,8 @@ class Flight {
     for (int i = 0; i < 4; ++i) out[i] = rpm_[i];
     return rpm_heard_;
   }
+  // The radio's channel `ch` (0..15) as last received, CRSF units; 0 before an RC frame.
+  uint16_t rc_channel(uint8_t ch) const { return radio_.channel(ch); }
   // Engine i's RPM as last heard (0 until then).
   uint16_t engine_rpm(uint8_t i) const { return rpm_[i]; }
   // The pilot's input as of the last control frame this tick's link task read.

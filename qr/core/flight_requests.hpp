@@ -12,7 +12,7 @@ namespace qr {
 constexpr bool feeds_estimator(uint8_t id) {
   using wire::ParamId;
   return id == static_cast<uint8_t>(ParamId::attitude_c1) || id == static_cast<uint8_t>(ParamId::attitude_c2) ||
-         id == static_cast<uint8_t>(ParamId::accel_lag_ms);
+         id == static_cast<uint8_t>(ParamId::accel_lag_ms) || id == static_cast<uint8_t>(ParamId::imu_orientation);
 }
 
 template <class Flight>

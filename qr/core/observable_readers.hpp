@@ -5,8 +5,8 @@
 //   - a number of the chain's (its Numbers: a Q format in flight; an angle in rad, a rate in
 //     rad/s, a moment in thrust units), which observe() converts by the row's scale (value in the
 //     row's unit = wire value x 10^scale), or
-//   - an integer already in the row's units (raw counts, engine units, mV, us, cycles, rpm, and
-//     the safety machine's tilt_mrad and height_mm), which it takes as it is;
+//   - an integer already in the row's units (raw counts, engine units, mV, us, cycles, rpm, CRSF
+//     channel units, and the safety machine's tilt_mrad and height_mm), which it takes as it is;
 // then saturated to the row's 16-bit type. observe<id>(flight) is that value as it travels.
 // Telemetry, the logs and the simulator's view read the observable where they carry the same
 // quantity, so the conversion to wire units is written once, here, from the table's scale.
@@ -18,6 +18,7 @@
 
 #include <stdint.h>
 
+#include <common/drivers/crsf.hpp>
 #include <common/observable_table.hpp>
 #include <common/units.hpp>
 #include <qr/core/chain/decimal_units.hpp>
@@ -73,6 +74,11 @@ template <class Flight>
 [[gnu::noinline, gnu::cold]] uint16_t task_cycles(const Flight& f, uint8_t task) {
   const auto* stats = f.task_stats();
   return stats == nullptr ? uint16_t{0} : wire::saturate_u16(stats->task[task].last);
+}
+// The radio's channel as last received. Out of line: sixteen rows share it.
+template <class Flight>
+[[gnu::noinline, gnu::cold]] uint16_t rc_channel(const Flight& f, uint8_t ch) {
+  return f.rc_channel(ch);
 }
 }  // namespace observable_detail
 
@@ -138,6 +144,10 @@ constexpr auto observable_source(const Flight& f) {
   else if constexpr (id == rpm_right) return f.engine_rpm(1);
   else if constexpr (id == rpm_back) return f.engine_rpm(2);
   else if constexpr (id == rpm_left) return f.engine_rpm(3);
+  // rc_ch<N>: one row per radio channel in channel order (observable_table.hpp asserts it).
+  else if constexpr (static_cast<uint8_t>(id) >= wire::kFirstRcChannelObservable &&
+                     static_cast<uint8_t>(id) < wire::kFirstRcChannelObservable + drivers::kCrsfChannelCount)
+    return observable_detail::rc_channel(f, static_cast<uint8_t>(id) - wire::kFirstRcChannelObservable);
   else static_assert(observable_detail::kNoReader<id>, "an observable of the table without its line here");
 }
 

@@ -1,5 +1,6 @@
 #include <stddef.h>
 
+#include <common/battery_rest.hpp>
 #include <qr/core/control_rate.hpp>
 #include <qr/core/safety.hpp>
 
@@ -137,23 +138,6 @@ template <size_t I = 0>
   }
 }
 
-// The voltage the pack would show at rest: the measured one plus the sag the engines' load
-// causes. Motor current goes with shaft power, which goes with the cube of rotor speed, and the
-// mixer makes the engine command proportional to rotor speed (engine_mixer.hpp): the load is
-// sum (e_i / 1000)^3 / 4, 0 at rest and 1 at all engines full. In per mille:
-// e^3 / (4 10^6) for each engine (e^3 <= 10^9 fits 32 bits; divisions by constants).
-uint16_t rested_mv(uint16_t measured_mv, const EngineCommand& engines, uint16_t sag_full_mv) {
-  // Engines at rest (every tick on the ground): no load, no sag, no cubes to take.
-  if ((engines.value[0] | engines.value[1] | engines.value[2] | engines.value[3]) == 0) return measured_mv;
-  uint32_t load_permille = 0;
-  for (const uint16_t e : engines.value) {
-    const uint32_t v = e < kEngineMax ? e : kEngineMax;
-    load_permille += v * v * v / 4000000u;
-  }
-  const uint32_t rested = measured_mv + sag_full_mv * load_permille / 1000u;
-  return static_cast<uint16_t>(rested > 0xFFFFu ? 0xFFFFu : rested);
-}
-
 uint16_t scale(uint16_t v, uint32_t num, uint32_t den) {
   return static_cast<uint16_t>(static_cast<uint32_t>(v) * num / den);
 }
@@ -279,7 +263,9 @@ void SafetyMachine::supervise(const Situation& s) {
   }
   // First-order low-pass, alpha = 2^-k per tick with 2^k the control rate rounded up to a power of
   // two: a time constant of 1.02 s at 1 kHz and at 500 Hz. Starts at the first sample (no transient from zero).
-  const uint32_t sample_q8 = static_cast<uint32_t>(rested_mv(s.battery_mv, s.engines, limits_.battery_sag_mv)) << 8;
+  const uint32_t sample_q8 = static_cast<uint32_t>(
+                                 wire::battery_rested_mv(s.battery_mv, s.engines.value, limits_.battery_sag_mv))
+                             << 8;
   if (battery_q8_ == 0) battery_q8_ = sample_q8;
   battery_q8_ = static_cast<uint32_t>(
       static_cast<int32_t>(battery_q8_) +

@@ -175,10 +175,13 @@ class TruthChannel {
         } else if (command.kind == TruthCommand::Kind::turn) {
           const std::string refused = qr.world().start_hand_turn(command.turn);
           send(refused.empty() ? "ok turn\n" : "error turn: " + refused + "\n");
+        } else if (command.kind == TruthCommand::Kind::tilt) {
+          const std::string refused = qr.world().start_hand_tilt(command.tilt);
+          send(refused.empty() ? "ok tilt\n" : "error tilt: " + refused + "\n");
         } else if (!qr.board().engines().all_zero()) {
           send("error reset: the engines are running (safe first)\n");
         } else if (qr.world().held()) {
-          send("error reset: a turn is under way\n");
+          send("error reset: " + qr.world().hand_refused() + "\n");
         } else {
           qr.world().plant().set_state(reset_state(qr.world().plant().state()));
           send("ok reset\n");

@@ -55,6 +55,26 @@ bool parse_turn_command(const std::vector<std::string>& words, TruthCommand& com
   return false;
 }
 
+// "tilt AXIS DEG SECONDS", DEG within +-90.
+bool parse_tilt_command(const std::vector<std::string>& words, TruthCommand& command, std::string& error) {
+  sim::HandTiltSpec spec;
+  if (words.size() != 4) {
+    error = "tilt needs AXIS DEG SECONDS (AXIS x, y or z)";
+  } else if (!sim::body_axis_from_text(words[1], spec.axis)) {
+    error = "tilt: axis is x, y or z, not '" + words[1].substr(0, 40) + "'";
+  } else if (!parse_real(words[2], spec.degrees) || !parse_real(words[3], spec.seconds)) {
+    error = "tilt: bad number in '" + words[2].substr(0, 40) + " " + words[3].substr(0, 40) + "'";
+  } else {
+    const std::string problem = sim::hand_tilt_problem(spec);
+    if (problem.empty()) {
+      command = TruthCommand{.kind = TruthCommand::Kind::tilt, .tilt = spec};
+      return true;
+    }
+    error = "tilt: " + problem;
+  }
+  return false;
+}
+
 }  // namespace
 
 bool parse_truth_command(std::string_view line, TruthCommand& push, std::string& error) {
@@ -73,9 +93,10 @@ bool parse_truth_command(std::string_view line, TruthCommand& push, std::string&
   }
   if (words[0] == "radio") return parse_radio_command(words, push, error);
   if (words[0] == "turn") return parse_turn_command(words, push, error);
+  if (words[0] == "tilt") return parse_tilt_command(words, push, error);
   if (words[0] != "push") {
     error = "unknown command '" + words[0].substr(0, 40) +
-            "' (push TX TY TZ SECONDS, reset, turn AXIS N SECONDS, radio arm MODE, radio off)";
+            "' (push TX TY TZ SECONDS, reset, turn AXIS N SECONDS, tilt AXIS DEG SECONDS, radio arm MODE, radio off)";
     return false;
   }
   if (words.size() != 5) {

@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include <common/mode.hpp>
+#include <sim/hand_tilt.hpp>
 #include <sim/hand_turn.hpp>
 #include <sim/quadrotor.hpp>
 #include <sim/vec3.hpp>
@@ -21,15 +22,18 @@ namespace qrsim {
 // "turn AXIS N SECONDS": a hand turns the vehicle N whole turns about body axis AXIS (x, y or z)
 // in that long and sets it down as it was (sim/hand_turn.hpp), for a gyro scale calibration;
 // refused while an engine runs, as a reset is.
+// "tilt AXIS DEG SECONDS": the same hand tilts it to DEG about body axis AXIS, holds it and sets
+// it down as it was (sim/hand_tilt.hpp), for the console's orientation check; refused as a turn is.
 // "radio arm MODE" (MODE manual, yaw or full): the radio's mode switch to MODE and its arm switch
 // off, then on (qrsim --rc crsf, serve_radio.hpp). "radio off": the arm switch off.
 struct TruthCommand {
-  enum class Kind : uint8_t { push, reset, turn, radio_arm, radio_off };
+  enum class Kind : uint8_t { push, reset, turn, tilt, radio_arm, radio_off };
   Kind kind = Kind::push;
   sim::Vec3 torque;  // push only
   double seconds = 0;
   wire::Mode mode = wire::Mode::manual;  // radio_arm only
   sim::HandTurnSpec turn;                // turn only
+  sim::HandTiltSpec tilt;                // tilt only
 };
 
 // One command line (without its newline). True with `command` filled in; false with `error`

@@ -35,10 +35,10 @@ struct Loops {
     yaw.set_gains(p.get(ParamId::yaw_p), p.get(ParamId::yaw_i));
   }
   Moments<Thrust> answer(int axis) {
-    const Angle off = Angle(kProbeAngleRad);
+    const Angle off = kProbeAngle<Angle>;
     Thrust m = axis == 0   ? roll.moment(Angle{}, off, Rate{})
                : axis == 1 ? pitch.moment(Angle{}, off, Rate{})
-                           : yaw.moment(Rate{}, Rate(kProbeYawRate));
+                           : yaw.moment(Rate{}, kProbeYawRate<Rate>);
     if (axis == wrong) m = -m;
     Moments<Thrust> out;
     (axis == 0 ? out.roll : axis == 1 ? out.pitch : out.yaw) = m;

@@ -1,8 +1,8 @@
 // Fuzz target: arbitrary lines into the simulator's truth channel (qrsim --truth-fd,
 // qr/sim_runner/truth_channel.cpp). Beyond what ASan and UBSan catch: a refused line says why; an
 // accepted push is finite and within the channel's bounds (10 N m, 10 s); an accepted turn keeps
-// the hand turn's limits (sim/hand_turn.hpp); an accepted radio arm names a mode the radio's arm
-// switch arms.
+// the hand turn's limits (sim/hand_turn.hpp), an accepted tilt the hand tilt's (sim/hand_tilt.hpp);
+// an accepted radio arm names a mode the radio's arm switch arms.
 #include <stddef.h>
 #include <stdint.h>
 
@@ -27,6 +27,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (push.kind == qrsim::TruthCommand::Kind::reset || push.kind == qrsim::TruthCommand::Kind::radio_off) return 0;
   if (push.kind == qrsim::TruthCommand::Kind::turn) {
     require(sim::hand_turn_problem(push.turn).empty() && push.turn.turns != 0);
+    return 0;
+  }
+  if (push.kind == qrsim::TruthCommand::Kind::tilt) {
+    require(sim::hand_tilt_problem(push.tilt).empty() && std::isfinite(push.tilt.degrees) && push.tilt.degrees != 0 &&
+            std::fabs(push.tilt.degrees) <= 90);
     return 0;
   }
   if (push.kind == qrsim::TruthCommand::Kind::radio_arm) {

@@ -74,6 +74,19 @@ TEST(SimulatorControls, TheTurnKeyTakesTheAxesInTheCalibrationsOrder) {
   EXPECT_TRUE(simulator.take_commands().empty()) << "taken once";
 }
 
+// The orientation check's hand: one tilt a step, the positive way about x, y, z; without a
+// simulator nothing is sent and the check asks the pilot's hand instead.
+TEST(SimulatorControls, TheOrientationChecksHandTiltsAboutEachBodyAxis) {
+  Said said;
+  SimulatorControls simulator(true, said.hook());
+  for (size_t axis = 0; axis < 3; ++axis) EXPECT_TRUE(simulator.hand_tilt(axis));
+  EXPECT_EQ(simulator.take_commands(), (std::vector<std::string>{"tilt x 45 1\n", "tilt y 45 1\n", "tilt z 45 1\n"}));
+  EXPECT_EQ(said.lines.back().text, "sim: the hand tilts the QR nose right 45 deg, holds it and sets it down");
+  SimulatorControls none(false, said.hook());
+  EXPECT_FALSE(none.hand_tilt(0));
+  EXPECT_TRUE(none.take_commands().empty());
+}
+
 TEST(SimulatorControls, ATruthLineIsKeptForTheScreenAndDrawnInRadians) {
   Said said;
   SimulatorControls simulator(true, said.hook());

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The motor test screen (issue 33), in tmux, on the firmware in qrsim flying a miswired vehicle
 # with DShot ESCs: engines 2 and 4 swapped at their outputs, the back motor turning the wrong way.
-# 9 opens the screen in safe, y says the propellers are off, a digit spins that engine, and the
+# 6 opens the screen in safe, y says the propellers are off, a digit spins that engine, and the
 # screen names the rotor the simulator's truth saw turn and its way. Engine 1 is right (the QR ends
 # its 2 s by itself); engine 2 turns the left rotor (a key stops it at once); engine 3 turns the
 # wrong way, and its ESC's spin direction set from the screen puts it right.
@@ -25,8 +25,8 @@ e2e_pane "$qrterm" --sim "$sim" --sim-arg --vehicle --sim-arg "$work/miswired.tx
   --no-joystick --log-dir "$work/logs" --params "$work/params.txt"
 wait_for 'MODE +safe ' 30 "start: safe"
 
-keys 9
-wait_for 'Are the propellers OFF\?' 3 "9: the motor test asks for the propellers first"
+keys 6
+wait_for 'Are the propellers OFF\?' 3 "6: the motor test asks for the propellers first"
 keys y
 wait_for '1-4: spin that engine' 2 "y: engines to choose"
 

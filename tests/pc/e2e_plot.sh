@@ -4,7 +4,7 @@
 # the phi trace went up (plain characters: the pane runs under the C locale); then ask for more
 # than the line carries and see the QR's refusal with its reason. In the same flight, on the
 # cockpit: the flying/landed row and the hover lift the QR learnt, Home sending that lift, and the
-# descent warning before the ground.
+# descent warning before the ground; the battery row's time left once the flight has drained the pack.
 set -euo pipefail
 
 qrterm=${1:?usage: e2e_plot.sh QRTERM QRSIM}
@@ -17,7 +17,7 @@ e2e_start
 export LC_ALL=C
 e2e_pane "$qrterm" --sim "$sim" --no-joystick --log-dir "$work/logs" --params "$work/params.txt"
 wait_for 'MODE +safe ' 30 "start: safe"
-wait_for 'cpu n/a +loop n/a +deadline misses n/a \(simulator\)' 5 "no CPU figures that mean nothing on the simulator"
+wait_for 'cpu n/a +loop n/a +misses n/a \(simulator\)' 5 "no CPU figures that mean nothing on the simulator"
 keys 3
 wait_for 'QR calibrated' 30 "calibrated"
 wait_for 'MODE +safe ' 5 "back in safe"
@@ -84,8 +84,8 @@ wait_for 'QR refused the stream: the line cannot carry it' 3 "with its reason in
 # QR learnt; 100 below it the vehicle sinks, and SINKING comes up beside the mode while the
 # simulator's true height is still well above the ground, with one line in the log; the pilot's
 # PgUp stops the descent and the warning goes.
-keys Tab Tab
-wait_for 'cockpit \(Tab\)' 2 "Tab Tab: the cockpit"
+keys Tab Tab Tab
+wait_for 'cockpit \(Tab\)' 2 "Tab Tab Tab: the cockpit (past the parameter and radio screens)"
 hover=$(screen | sed -nE 's/.* hover lift ([0-9]+).*/\1/p' | head -1)
 [[ -n $hover ]] || fail "no hover lift on the QR row"
 keys Home
@@ -120,6 +120,10 @@ wait_for 'plot \(Tab\)' 2 "Tab: the plot again"
 
 keys Escape
 wait_for 'MODE +panic ' 3 "ESC aborts from the plot screen"
+# Seconds of flight have drained the simulated pack: the battery row (on every screen) says how
+# long it lasts, measured from a few seconds after the take-off; the landing flies on meanwhile.
+wait_for '^battery +[0-9.]+ V 3S [0-9]+ % [0-9]+:[0-9]{2} left ' 8 "the battery row: the time left, from the charge's fall"
+echo "e2e: ok: $(screen | grep -E '^battery' | cut -c1-36)"
 # The lift above (54 presses, above the hover command) has been climbing for seconds: the panic
 # lands at its descent rate (panic_descent_mm_s, 0.5 m/s) from there before it settles in safe.
 wait_for 'MODE +safe ' 40 "panic lands and settles in safe"

@@ -197,12 +197,12 @@ size_t count_of(const qrterm_test::Bench& b, wire::MessageType type) {
                                            [type](const wire::Frame& f) { return f.type == type; }));
 }
 
-// The console: 9 opens the bench in safe only; on it the digits choose engines (no mode changes),
+// The console: 6 opens the bench in safe only; on it the digits choose engines (no mode changes),
 // the QR's test and its end come back to the bench, and so does a refusal.
 TEST(ConsoleMotorTest, TheKeyOpensTheBenchInSafeOnlyAndItsKeysAreItsOwn) {
   qrterm_test::Bench b;
   b.connect();
-  b.key('9');
+  b.key('6');
   ASSERT_EQ(b.console.screen(), qrterm::Screen::motor_test);
   b.key('y');
   b.key('2');
@@ -236,7 +236,7 @@ TEST(ConsoleMotorTest, TheKeyOpensTheBenchInSafeOnlyAndItsKeysAreItsOwn) {
   b.key('2');
   ASSERT_TRUE(b.run_until(
       [&] { return b.console.telemetry().attitude && b.console.telemetry().attitude->mode == Mode::manual; }, 200));
-  b.key('9');
+  b.key('6');
   EXPECT_EQ(b.console.screen(), qrterm::Screen::cockpit);
   EXPECT_TRUE(b.logged("the motor test opens in safe only"));
 }

@@ -130,4 +130,32 @@ TEST(ParamFile, SavedFileReplacesTheOldOneWhole) {
   ::rmdir(folder);
 }
 
+// One parameter written into the file the moment it is known (the orientation check's
+// imu_orientation): the file's other values kept, a missing file made from the defaults, a file
+// that does not read left as it is.
+TEST(ParamFile, OneParameterWrittenKeepsTheRest) {
+  const std::string path = ::testing::TempDir() + "param_file_one.txt";
+  std::remove(path.c_str());
+  ASSERT_EQ(qrterm::write_param_to_file(path, wire::ParamId::imu_orientation, 1), "");
+  std::string text;
+  ASSERT_TRUE(qrterm::read_file(path, text));
+  qrterm::ParamFileContents read = parse_param_file(text);
+  EXPECT_EQ(read.values.get(wire::ParamId::imu_orientation), 1);
+  EXPECT_EQ(read.values.get(wire::ParamId::yaw_p), spec_of(wire::ParamId::yaw_p).default_value);
+
+  ASSERT_EQ(qrterm::write_file_atomically(path, "yaw_p = 250\nimu_orientation = 3\n"), "");
+  ASSERT_EQ(qrterm::write_param_to_file(path, wire::ParamId::imu_orientation, 5), "");
+  ASSERT_TRUE(qrterm::read_file(path, text));
+  read = parse_param_file(text);
+  EXPECT_EQ(read.values.get(wire::ParamId::imu_orientation), 5);
+  EXPECT_EQ(read.values.get(wire::ParamId::yaw_p), 250 * (1 << spec_of(wire::ParamId::yaw_p).frac_bits));
+
+  ASSERT_EQ(qrterm::write_file_atomically(path, "yaw_p = 250\nyawp = 3\n"), "");
+  const std::string refused = qrterm::write_param_to_file(path, wire::ParamId::imu_orientation, 2);
+  EXPECT_EQ(refused.rfind(path + ":2: unknown parameter \"yawp\"", 0), 0u) << refused;
+  ASSERT_TRUE(qrterm::read_file(path, text));
+  EXPECT_EQ(text, "yaw_p = 250\nyawp = 3\n") << "left as it was";
+  std::remove(path.c_str());
+}
+
 }  // namespace

@@ -117,6 +117,7 @@ struct KnownFlight {
   uint32_t tick_us() const { return static_cast<uint32_t>(known(Id::time_ms)) * 1000u + 999u; }
   const KnownStats* task_stats() const { return &stats_; }
   uint16_t engine_rpm(uint8_t i) const { return static_cast<uint16_t>(known(Id::rpm_front) + i); }
+  uint16_t rc_channel(uint8_t ch) const { return static_cast<uint16_t>(known(Id::rc_ch1) + ch); }
 };
 
 const char* name_of(uint8_t id) { return wire::kObservableTable[id].name; }

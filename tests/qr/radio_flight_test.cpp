@@ -9,6 +9,8 @@
 #include <common/drivers/erpm.hpp>
 #include <common/drivers/rc_sticks.hpp>
 #include <common/messages.hpp>
+#include <common/observable_table.hpp>
+#include <qr/core/observable_readers.hpp>
 
 #include "fake_flight.hpp"
 
@@ -136,6 +138,19 @@ TEST_F(RadioFlightTest, ThePilotChangesInSafeOnly) {
   EXPECT_EQ(flight.mode(), Mode::manual);
 }
 
+// How the IMU sits in the frame changes in safe only too: in flight it would turn the attitude
+// under the loops (qr/core/chain/imu_mounting.hpp).
+TEST_F(RadioFlightTest, TheImuOrientationChangesInSafeOnly) {
+  run_ms(50);
+  ASSERT_EQ(request_mode(Mode::manual), NackReason::none);
+  EXPECT_EQ(set_param(wire::ParamId::imu_orientation, 1), NackReason::not_from_this_mode);
+  EXPECT_EQ(set_param(wire::ParamId::imu_orientation, 0), NackReason::none) << "the value in force: no change";
+  ASSERT_EQ(request_mode(Mode::safe), NackReason::none);
+  run_ms(3000);
+  ASSERT_EQ(flight.mode(), Mode::safe);
+  EXPECT_EQ(set_param(wire::ParamId::imu_orientation, 1), NackReason::none);
+}
+
 TEST_F(RadioFlightTest, AnArmSwitchOnWhenTheRadioBecomesThePilotDoesNotArm) {
   arm(true);
   make_radio_the_pilot();
@@ -208,6 +223,20 @@ TEST_F(RadioFlightTest, LinkStatisticsAndThePilotGoToTelemetry) {
   EXPECT_EQ(r.uplink_lq, 97u);
   EXPECT_EQ(r.uplink_snr, -3);
   EXPECT_EQ(r.downlink_lq, 88u);
+}
+
+// The radio screen's channels (docs/console.md): all sixteen as the transmitter sent them, before
+// the channel map and whoever the pilot is; 0 until an RC frame came.
+TEST_F(RadioFlightTest, AllSixteenChannelsReachTheirObservablesAsSent) {
+  const auto rc_ch = [this](uint8_t ch) { return read_observable(flight, wire::kFirstRcChannelObservable + ch); };
+  for (uint8_t ch = 0; ch < drivers::kCrsfChannelCount; ++ch) EXPECT_EQ(rc_ch(ch), 0) << "channel " << ch + 1;
+  for (uint8_t ch = 0; ch < drivers::kCrsfChannelCount; ++ch)
+    radio.value[ch] = static_cast<uint16_t>(drivers::kCrsfChannelMin + 100 * ch + ch);
+  radio.value[15] = drivers::kCrsfChannelMax;
+  run_ms(30);
+  for (uint8_t ch = 0; ch < drivers::kCrsfChannelCount; ++ch)
+    EXPECT_EQ(rc_ch(ch), radio.value[ch]) << "channel " << ch + 1;
+  EXPECT_EQ(flight.pilot(), Pilot::pc) << "the PC flies: the channels are read all the same";
 }
 
 TEST_F(RadioFlightTest, NoRadioNoRadioTelemetry) {

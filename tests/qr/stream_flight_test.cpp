@@ -65,7 +65,7 @@ struct StreamFlightTest : test::FakeFlight<> {
 
 TEST_F(StreamFlightTest, TheWholeTableComesOverTheWireWithNamesAndUnits) {
   send(wire::ObservableGet{++seq, wire::kAllObservables});
-  // A row a tick while the line has room: 68 rows of about four frames each, some 0.3 s at
+  // A row a tick while the line has room: 84 rows of about four frames each, some 0.4 s at
   // 1 kHz and twice that at 500 Hz.
   run_ms(1500);
   std::map<uint8_t, wire::ObservableInfo> info;

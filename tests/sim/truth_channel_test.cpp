@@ -58,6 +58,34 @@ TEST(TruthChannel, ParsesATurn) {
   }
 }
 
+// A hand tilt: axis, angle in degrees, seconds; the limits of sim/hand_tilt.hpp.
+TEST(TruthChannel, ParsesATilt) {
+  qrsim::TruthCommand command;
+  std::string error;
+  ASSERT_TRUE(qrsim::parse_truth_command(" tilt y -30 2\r", command, error)) << error;
+  EXPECT_EQ(command.kind, qrsim::TruthCommand::Kind::tilt);
+  EXPECT_EQ(command.tilt.axis, sim::BodyAxis::y);
+  EXPECT_EQ(command.tilt.degrees, -30);
+  EXPECT_EQ(command.tilt.seconds, 2);
+  const struct {
+    const char* line;
+    const char* error;
+  } bad[] = {
+      {"tilt", "tilt needs AXIS DEG SECONDS (AXIS x, y or z)"},
+      {"tilt x 45", "tilt needs AXIS DEG SECONDS (AXIS x, y or z)"},
+      {"tilt w 45 2", "tilt: axis is x, y or z, not 'w'"},
+      {"tilt x far 2", "tilt: bad number in 'far 2'"},
+      {"tilt x 0 2", "tilt: the angle is a tilt: not 0, within +-90 degrees"},
+      {"tilt x -120 2", "tilt: the angle is a tilt: not 0, within +-90 degrees"},
+      {"tilt x 45 0.2", "tilt: a tilt takes 0.5 .. 60 s"},
+      {"tilt x 90 0.5", "tilt: peak rate 3 pi |A| / (2 S) = 14.80 rad/s is beyond the gyro's 8 rad/s: take longer"},
+  };
+  for (const auto& b : bad) {
+    EXPECT_FALSE(qrsim::parse_truth_command(b.line, command, error)) << b.line;
+    EXPECT_EQ(error, b.error) << b.line;
+  }
+}
+
 // The radio's switches (qrsim --serve --rc crsf): arm one of the three modes its mode switch
 // picks, or the arm switch off; anything else names what the radio takes.
 TEST(TruthChannel, ParsesTheRadiosSwitches) {

@@ -3,6 +3,7 @@
 // they are soldered to, and a motor turning the wrong way.
 #include <gtest/gtest.h>
 
+#include <qr/core/chain/imu_mounting.hpp>
 #include <sim/quadrotor.hpp>
 #include <sim/rotor.hpp>
 #include <sim/vehicle.hpp>
@@ -122,6 +123,35 @@ TEST(Wiring, AnEscsDirectionTurnsTheRotorItsOutputDrives) {
   plant.set_output_reversed(0, false);
   EXPECT_EQ(plant.rotors()[3].spin, +1);
   EXPECT_EQ(plant.rotors()[3].lift, -kReversedThrustShare) << "back as wired";
+}
+
+// The firmware's imu_orientation = k + 4 u (qr/core/chain/imu_mounting.hpp) undoes the mounting
+// imu_mount_yaw_deg = 90 k, imu_upside_down = u: every body vector comes back as it was.
+TEST(Wiring, EachImuOrientationUndoesItsMounting) {
+  const Vec3 probes[] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {3, -5, 7}};
+  for (int k = 0; k < 4; ++k) {
+    for (int u = 0; u < 2; ++u) {
+      Wiring w;
+      w.imu_yaw_deg = 90 * k;
+      w.imu_upside_down = u;
+      for (const Vec3& v : probes) {
+        const Vec3 board = imu_gyro_axes(w, v);
+        qr::SensorSample s;
+        s.gyro[0] = static_cast<int16_t>(board.x);
+        s.gyro[1] = static_cast<int16_t>(board.y);
+        s.gyro[2] = static_cast<int16_t>(board.z);
+        s.accel[0] = s.gyro[0];
+        s.accel[1] = s.gyro[1];
+        s.accel[2] = s.gyro[2];
+        const qr::SensorSample body = qr::chain::mounted(qr::chain::imu_mounting(k + 4 * u), s);
+        for (int i = 0; i < 3; ++i) {
+          const double want = i == 0 ? v.x : i == 1 ? v.y : v.z;
+          EXPECT_EQ(body.gyro[i], want) << "yaw " << 90 * k << " upside down " << u << " axis " << i;
+          EXPECT_EQ(body.accel[i], want);
+        }
+      }
+    }
+  }
 }
 
 }  // namespace

@@ -152,8 +152,12 @@ class FlightChain : public chain::DecimalReadouts<FlightChain<Num, SampleHz>> {
   }
   const chain::GyroTurns<SampleHz>& gyro_turns() const { return turns_; }
   // The attitude estimator starts over from the accelerometer's angles, with no bias, at its next
-  // run (for a vehicle at rest: its divisors changed on the ground).
-  void restart_estimator() { estimator_.restart(); }
+  // run (for a vehicle at rest: its divisors or the IMU's mounting changed on the ground); the
+  // filters start over too, so those angles are the new mounting's, not a mix of the old.
+  void restart_estimator() {
+    filters_.restart();
+    estimator_.restart();
+  }
   void enter_calibration() {
     turns_.cancel();
     turns_ended_ = false;
@@ -411,8 +415,8 @@ class FlightChain : public chain::DecimalReadouts<FlightChain<Num, SampleHz>> {
       chain::AttitudeController<Num, SampleHz> roll, pitch;
       chain::YawRateController<Num, SampleHz> yaw;
       chain::Moments<Thrust> answer(int axis) {
-        constexpr Angle kOff = Angle(chain::kProbeAngleRad);
-        constexpr Rate kTurning = Rate(chain::kProbeYawRate);
+        constexpr Angle kOff = chain::kProbeAngle<Angle>;
+        constexpr Rate kTurning = chain::kProbeYawRate<Rate>;
         if (axis == 0) return {roll.moment(Angle{}, kOff, Rate{}), {}, {}};
         if (axis == 1) return {{}, pitch.moment(Angle{}, kOff, Rate{}), {}};
         return {{}, {}, yaw.moment(Rate{}, kTurning)};

@@ -45,8 +45,10 @@ constexpr AxisMoments moments_of(const EngineCommand& e) {
 // The probe's known errors: the estimate 3 degrees (0.05 rad) off its set-point of 0 on roll and
 // pitch, the yaw rate 0.5 rad/s off 0; positive, so each answer must be negative. The lift the
 // mixer mixes them into: a hover's, where no moment is scaled away.
-inline constexpr double kProbeAngleRad = 0.05;
-inline constexpr double kProbeYawRate = 0.5;
+template <class Angle>
+inline constexpr Angle kProbeAngle = Angle(0.05);
+template <class Rate>
+inline constexpr Rate kProbeYawRate = Rate(0.5);
 inline constexpr uint16_t kProbeLift = 500;
 
 // The first axis whose loop, answering a positive error, makes a positive moment on its own axis

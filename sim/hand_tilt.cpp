@@ -1,0 +1,70 @@
+#include <sim/hand_tilt.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+namespace sim {
+namespace {
+
+constexpr double kRadPerDeg = std::numbers::pi / 180;
+
+}  // namespace
+
+double hand_tilt_peak_rate(const HandTiltSpec& spec) {
+  return 3 * std::numbers::pi * std::abs(spec.degrees * kRadPerDeg) / (2 * spec.seconds);
+}
+
+std::string hand_tilt_problem(const HandTiltSpec& spec) {
+  if (!(spec.degrees != 0 && std::abs(spec.degrees) <= kMaxHandTiltDegrees)) {
+    return "the angle is a tilt: not 0, within +-90 degrees";
+  }
+  if (!(spec.seconds >= kMinHandTurnSeconds && spec.seconds <= kMaxHandTurnSeconds)) {
+    return "a tilt takes 0.5 .. 60 s";
+  }
+  if (hand_tilt_peak_rate(spec) > kMaxHandTurnRate) {
+    char text[120];
+    std::snprintf(text, sizeof text,
+                  "peak rate 3 pi |A| / (2 S) = %.2f rad/s is beyond the gyro's 8 rad/s: take longer",
+                  hand_tilt_peak_rate(spec));
+    return text;
+  }
+  return "";
+}
+
+HandTilt::HandTilt(const Quat& start, const HandTiltSpec& spec, uint64_t start_us)
+    : start_(start), axis_(unit_of(spec.axis)), radians_(spec.degrees * kRadPerDeg), start_us_(start_us),
+      end_us_(start_us + static_cast<uint64_t>(std::llround(spec.seconds * 1e6))) {
+  // On the clock's whole microseconds, so the profile ends exactly at end_us_.
+  third_s_ = static_cast<double>(end_us_ - start_us_) * 1e-6 / 3;
+}
+
+double HandTilt::elapsed_s(uint64_t now_us) const {
+  if (now_us <= start_us_) return 0;
+  return static_cast<double>(std::min(now_us, end_us_) - start_us_) * 1e-6;
+}
+
+double HandTilt::angle(uint64_t now_us) const {
+  if (done(now_us)) return 0;
+  const double t = elapsed_s(now_us);
+  if (t < third_s_) return radians_ * (1 - std::cos(std::numbers::pi * t / third_s_)) / 2;
+  if (t < 2 * third_s_) return radians_;
+  return radians_ * (1 + std::cos(std::numbers::pi * (t - 2 * third_s_) / third_s_)) / 2;
+}
+
+Vec3 HandTilt::rate(uint64_t now_us) const {
+  if (done(now_us)) return {};
+  const double t = elapsed_s(now_us);
+  const double peak = radians_ * std::numbers::pi / (2 * third_s_);
+  if (t < third_s_) return axis_ * (peak * std::sin(std::numbers::pi * t / third_s_));
+  if (t < 2 * third_s_) return {};
+  return axis_ * (-peak * std::sin(std::numbers::pi * (t - 2 * third_s_) / third_s_));
+}
+
+Quat HandTilt::attitude(uint64_t now_us) const {
+  if (done(now_us)) return start_;
+  return turned_about(start_, axis_, angle(now_us));
+}
+
+}  // namespace sim
