@@ -35,7 +35,9 @@ struct FlightRequests {
     // Who flies (docs/safety.md rule 17) and how the IMU sits in the frame change in safe only;
     // the value in force is no change (a console sends every parameter at its start, whatever
     // the mode).
-    for (const wire::ParamId safe_only : {wire::ParamId::pilot, wire::ParamId::imu_orientation}) {
+    // An array, not a braced list: the RV32 toolchain has no <initializer_list> (freestanding).
+    static constexpr wire::ParamId kSafeOnly[] = {wire::ParamId::pilot, wire::ParamId::imu_orientation};
+    for (const wire::ParamId safe_only : kSafeOnly) {
       if (p.id == static_cast<uint8_t>(safe_only) && p.value != f.params_.get(safe_only) &&
           f.safety_.mode() != Mode::safe) {
         answer = NackReason::not_from_this_mode;
