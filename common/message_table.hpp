@@ -36,6 +36,10 @@ enum class MessageType : uint8_t {
   stream_request = 0x41,
   // Four bits from every other PC -> QR type: no two-bit change makes it one of them.
   log_resend = 0x6C,
+  // Its only neighbour two bits away is param_get.
+  motor_test = 0x77,
+  // Two bits from log_stop and motor_test, of other lengths: no byte left is further from all.
+  esc_direction = 0x7B,
   // QR -> PC
   ack = 0x81,
   nack = 0x82,
@@ -94,6 +98,8 @@ inline constexpr MessageSpec kMessageTable[] = {
     {MessageType::observable_get, 2, true, Direction::pc_to_qr, "observable_get", false},
     {MessageType::stream_request, 8, true, Direction::pc_to_qr, "stream_request", false},
     {MessageType::log_resend, 9, true, Direction::pc_to_qr, "log_resend", false},
+    {MessageType::motor_test, 4, true, Direction::pc_to_qr, "motor_test", true},
+    {MessageType::esc_direction, 3, true, Direction::pc_to_qr, "esc_direction", true},
     {MessageType::ack, 2, false, Direction::qr_to_pc, "ack", false},
     {MessageType::nack, 3, false, Direction::qr_to_pc, "nack", false},
     {MessageType::param_report, 5, false, Direction::qr_to_pc, "param_report", false},

@@ -19,15 +19,16 @@ struct MessageList {
 };
 
 // One struct per row of kMessageTable. The static checks below keep the two in step.
-using AllMessages = MessageList<Control, ModeChange, ParamSet, ParamGet, LogStart, LogStop, LogDownload, Exit, Ack,
-                                Nack, ParamReport, DebugText, TelemetryAttitude, TelemetryRates, TelemetryEngines,
-                                TelemetrySetpoints, TelemetrySystem, TelemetryLink, SensorLogPart, TelemetryLogPart,
-                                TelemetryTask, LogStatus, TelemetryHeight, TelemetryRadio, TelemetryRpm, ObservableGet,
-                                StreamRequest, ObservableInfo, ObservableText, ObservableSamples, LogResend>;
+using AllMessages =
+    MessageList<Control, ModeChange, ParamSet, ParamGet, LogStart, LogStop, LogDownload, Exit, Ack, Nack, ParamReport,
+                DebugText, TelemetryAttitude, TelemetryRates, TelemetryEngines, TelemetrySetpoints, TelemetrySystem,
+                TelemetryLink, SensorLogPart, TelemetryLogPart, TelemetryTask, LogStatus, TelemetryHeight,
+                TelemetryRadio, TelemetryRpm, ObservableGet, StreamRequest, ObservableInfo, ObservableText,
+                ObservableSamples, LogResend, MotorTest, EscDirection>;
 
 // What the QR receives: it never decodes a message of the other direction (its parser drops them).
 using PcToQrMessages = MessageList<Control, ModeChange, ParamSet, ParamGet, LogStart, LogStop, LogDownload, Exit,
-                                   ObservableGet, StreamRequest, LogResend>;
+                                   ObservableGet, StreamRequest, LogResend, MotorTest, EscDirection>;
 
 template <class... Msgs>
 constexpr bool covers_table(MessageList<Msgs...>) {

@@ -11,7 +11,7 @@ namespace wire {
 // IN4073 numbers its height mode 7, after a raw mode (6) this project does not have. The numbers
 // here stay dense, because every table of modes (this one, the QR's task sets, the console's) is
 // indexed by them: height hold is 6, acro (issue 31's worked example of adding a mode,
-// docs/architecture.md) 7.
+// docs/architecture.md) 7, the motor test 8.
 enum class Mode : uint8_t {
   safe = 0,
   panic = 1,
@@ -21,9 +21,10 @@ enum class Mode : uint8_t {
   full_control = 5,
   height_hold = 6,
   acro = 7,
+  motor_test = 8,
 };
 
-inline constexpr uint8_t kModeCount = 8;
+inline constexpr uint8_t kModeCount = 9;
 
 // The radio's mode switch (docs/safety.md rule 17): the position at which its arm switch arms a
 // mode. The switch has three positions (common/drivers/rc_sticks.hpp: RcSticks::mode_position 0,
@@ -59,6 +60,11 @@ inline constexpr ModeSpec kModeTable[] = {
     // learning, not for flips: the tilt watchdog still applies, and a panic lands. The radio's
     // mode switch has no position left for it: the console's key enters it.
     {Mode::acro, "acro", "acro", true, true, true, Mode::safe, false, ModeSwitch::none},
+    // One engine at a low level for 2 s, on the bench with the propellers off, to find an engine on
+    // the wrong output or turning the wrong way (docs/safety.md rule 21). Its own request enters it
+    // (motor_test: which engine, how fast), never a mode change; it does not fly (no watchdog's
+    // panic, no idle floor: it ends by itself, or at once, in safe).
+    {Mode::motor_test, "motor test", "motor", false, false, false, Mode::safe, false, ModeSwitch::none},
 };
 static_assert(sizeof(kModeTable) / sizeof(kModeTable[0]) == kModeCount, "one row per mode");
 

@@ -167,6 +167,49 @@ struct LogResend {
   constexpr void want(size_t bit) { parts[bit / 8] = static_cast<uint8_t>(parts[bit / 8] | (1u << (bit % 8))); }
 };
 
+// The motor test (docs/safety.md rule 22): one engine (0 front, 1 right, 2 back, 3 left) at
+// `level` engine units for 2 s, on the bench with the propellers off, so that an engine on the
+// wrong output or turning the wrong way is found there. The level is at most 20 % of full: enough
+// to see a motor turn, too little to lift the vehicle with its propellers on.
+inline constexpr uint16_t kMotorTestMaxLevel = 200;
+
+struct MotorTest {
+  static constexpr MessageType kType = MessageType::motor_test;
+  uint8_t seq = 0;
+  uint8_t engine = 0;
+  uint16_t level = 0;
+
+  constexpr bool operator==(const MotorTest&) const = default;
+
+  template <class Self, class Visit>
+  static constexpr void fields(Self& m, Visit& v) {
+    v(m.seq);
+    v(m.engine);
+    v(m.level);
+  }
+  constexpr bool valid() const { return engine < 4 && level <= kMotorTestMaxLevel; }
+};
+
+// A DShot ESC's spin direction, set and saved in the ESC (DShot "spin direction 1" or "2", then
+// "save settings"): the bench's cure for a motor the motor test found turning the wrong way, on
+// boards whose ESCs take DShot commands, in safe with every engine stopped (docs/safety.md rule 18).
+struct EscDirection {
+  static constexpr MessageType kType = MessageType::esc_direction;
+  uint8_t seq = 0;
+  uint8_t engine = 0;     // 0 front, 1 right, 2 back, 3 left
+  uint8_t direction = 1;  // 1: spin direction 1 (the ESC's normal), 2: spin direction 2 (reversed)
+
+  constexpr bool operator==(const EscDirection&) const = default;
+
+  template <class Self, class Visit>
+  static constexpr void fields(Self& m, Visit& v) {
+    v(m.seq);
+    v(m.engine);
+    v(m.direction);
+  }
+  constexpr bool valid() const { return engine < 4 && (direction == 1 || direction == 2); }
+};
+
 // The console is closing: the QR goes to safe (through panic if flying) and stops.
 struct Exit {
   static constexpr MessageType kType = MessageType::exit;

@@ -37,6 +37,12 @@ void Quadrotor::set_engines(const std::array<uint16_t, kRotorCount>& commands) {
   }
 }
 
+void Quadrotor::set_output_reversed(int output, bool reversed) {
+  const auto rotor = static_cast<size_t>(vehicle_.wiring.rotor_of_output[static_cast<size_t>(output)]);
+  const RotorGeometry wired = rotor_geometry(vehicle_)[rotor];
+  rotors_[rotor] = reversed ? turned_the_other_way(wired) : wired;
+}
+
 void Quadrotor::set_disturbance(const Vec3& torque_body, const Vec3& force_world) {
   disturbance_torque_ = torque_body;
   disturbance_force_ = force_world;

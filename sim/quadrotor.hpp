@@ -58,6 +58,11 @@ class Quadrotor {
   // mass, in body axes. At rest and level that is the ground's push, (0, 0, -g).
   Vec3 specific_force() const;
   double rotor_phase(int rotor) const { return phase_[static_cast<size_t>(rotor)]; }
+  // Where each rotor sits and which way it turns (rotor order: front, right, back, left).
+  const std::array<RotorGeometry, kRotorCount>& rotors() const { return rotors_; }
+  // Output `output`'s ESC turns its motor the other way (a DShot ESC's spin direction 2): the
+  // rotor that output drives turns opposite to the way the vehicle's wiring makes it turn.
+  void set_output_reversed(int output, bool reversed);
 
   const Battery& battery() const { return battery_; }
   double battery_volts() const { return volts_; }

@@ -12,9 +12,7 @@ std::array<RotorGeometry, kRotorCount> rotor_geometry(const VehicleParams& v) {
       {{0, -l, up}, -1},  // 3 left, counter-clockwise
   }};
   for (size_t i = 0; i < kRotorCount; ++i) {
-    if (v.wiring.reversed[i] == 0) continue;
-    rotors[i].spin = -rotors[i].spin;
-    rotors[i].lift = -kReversedThrustShare;
+    if (v.wiring.reversed[i] != 0) rotors[i] = turned_the_other_way(rotors[i]);
   }
   return rotors;
 }

@@ -22,6 +22,15 @@ struct RotorGeometry {
 
 std::array<RotorGeometry, kRotorCount> rotor_geometry(const VehicleParams& vehicle);
 
+// The rotor with its motor turning the other way (two phase wires swapped, or an ESC's spin
+// direction 2), its propeller as it was: the spin opposite, and a blade meeting the air backwards
+// pushes down at kReversedThrustShare (sim/wiring.hpp); turned back, it lifts as made.
+inline RotorGeometry turned_the_other_way(RotorGeometry rotor) {
+  rotor.spin = -rotor.spin;
+  rotor.lift = rotor.lift > 0 ? -kReversedThrustShare : 1.0;
+  return rotor;
+}
+
 // The speed the motor settles at for `command` (0..1000) with `volts` across the ESC: the
 // command is a share of full speed, full speed is proportional to the voltage (docs/conventions.md:
 // commands are proportional to rotor speed).

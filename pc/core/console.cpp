@@ -85,7 +85,14 @@ Console::Console(ConsoleLog& log, ConsoleFiles files, const Setup& setup, uint32
           [this](size_t axis) { return simulator_.hand_tilt(axis); },
           [this](int orientation) { return set_imu_orientation(orientation); }}),
       screens_(streams_, editor_, parameters_, check_, note_hook()),
-      requests_(link_, telemetry_, controls_, input_, simulator_, note_hook()) {}
+      requests_(link_, telemetry_, controls_, input_, simulator_, note_hook()),
+      bench_(MotorBench::Hooks{
+          [this](uint8_t engine, uint16_t level) { return requests_.motor_test(engine, level, now_ms_); },
+          [this] { requests_.mode(wire::Mode::safe, now_ms_); },
+          [this](uint8_t engine, uint8_t direction) {
+            link_.request(wire::EscDirection{0, engine, direction}, now_ms_);
+          },
+          [this] { return telemetry_.rpm.has_value(); }, [this] { screens_.show(Screen::cockpit); }, note_hook()}) {}
 
 void Console::set_time(uint32_t now_ms) { now_ms_ = now_ms; }
 
@@ -98,6 +105,7 @@ void Console::note(Severity severity, const std::string& text) { log_.add(now_ms
 void Console::truth_line(const std::string& line) {
   if (const std::optional<PlotModel::TrueState> truth = simulator_.on_line(line, now_ms_)) {
     streams_.plot().add_truth(uptime_ms() / 1000.0, *truth);
+    if (simulator_.rotors()) bench_.rotors(*simulator_.rotors());
   }
 }
 
@@ -117,6 +125,11 @@ uint32_t Console::telemetry_hz() const {
 
 void Console::key(Key key, uint32_t now_ms) {
   set_time(now_ms);
+  // The motor test's screen takes every key but the abort and exit keys, which act as anywhere
+  // (and end a test at the QR too): a key meant for the cockpit must stop an engine, not fly.
+  if (screens_.screen() == Screen::motor_test && key != kKeyEscape && key != kKeyInterrupt) {
+    return bench_.key(key, now_ms);
+  }
   const ScreenState::Taken taken = screens_.key(key, uptime_ms() / 1000.0);
   if (taken == ScreenState::Taken::by_screen) input_.screen_key();
   if (taken != ScreenState::Taken::no) return;
@@ -155,6 +168,7 @@ void Console::act(Action action, uint32_t now_ms) {
     case Action::log_download: downloader_.start(telemetry_.log_status, now_ms_); break;
     case Action::params_read: parameters_.read_back(link_, now_ms_); break;
     case Action::tasks_print: print_tasks(); break;
+    case Action::motor_test: open_motor_test(); break;
     case Action::orientation_check: open_orientation_check(); break;
     case Action::lift_hover: {
       const Notice said = lift_to_hover(controls_, telemetry_.height ? telemetry_.height->hover_lift : 0);
@@ -163,6 +177,16 @@ void Console::act(Action action, uint32_t now_ms) {
     }
     default: break;
   }
+}
+
+// The bench is for a QR in safe, on a live link: there is nothing to test otherwise, and a key
+// that opened it in flight would leave the pilot on a screen that takes every key.
+void Console::open_motor_test() {
+  if (link_state_ != LinkState::up || !telemetry_.attitude || telemetry_.attitude->mode != wire::Mode::safe) {
+    return note(Severity::warning, "the motor test opens in safe only, with the link up (0: safe)");
+  }
+  screens_.show(Screen::motor_test);
+  bench_.open();
 }
 
 void Console::abort(const std::string& why) { requests_.abort(why, link_state_ == LinkState::closed, now_ms_); }
@@ -226,6 +250,7 @@ void Console::on_frame(const wire::Frame& frame) {
 void Console::on_attitude(const wire::TelemetryAttitude& attitude) {
   const std::optional<wire::TelemetryAttitude> before = telemetry_.attitude;
   telemetry_.on(attitude);
+  bench_.mode(attitude.mode);
   check_.on_mode(attitude.mode);
   for (const Notice& notice : attitude_notices(before, attitude)) note(notice.severity, notice.text);
   recordings_.telemetry_row(now_ms_ - start_ms_, telemetry_, requests_.last_control());
@@ -306,6 +331,7 @@ void Console::on_answer(wire::MessageType type, wire::NackReason reason, const A
     return streams_.on_answer(type, reason, telemetry_hz());
   }
   if (type == wire::MessageType::mode_change) return requests_.on_mode_answer(reason);
+  if (type == wire::MessageType::motor_test) return bench_.answer(reason);
   if (refused) {
     note(Severity::warning, std::string("QR refused the ") + request_what(type) + ": " + reason_text(reason));
   } else if (request_accepted(type) != nullptr) {
@@ -319,6 +345,7 @@ void Console::on_gave_up(const wire::ResendEvent& event) {
   // quiet; it gives up by itself when nothing comes.
   if (event.type == wire::MessageType::log_download || event.type == wire::MessageType::log_resend) return;
   if (event.type == wire::MessageType::observable_get) return streams_.table_unanswered();
+  if (event.type == wire::MessageType::motor_test) return bench_.unanswered();
   if (event.type == wire::MessageType::stream_request) streams_.stream_unanswered();
   note(Severity::error, std::string("no answer from the QR to the ") + request_what(event.type) + " request (" +
                             std::to_string(wire::kMaxSends) + " sends)");
@@ -381,6 +408,7 @@ void Console::tick(uint32_t now_ms) {
   }
 
   downloader_.tick(now_ms);
+  bench_.tick(now_ms);
   exit_.tick(now_ms);
 }
 

@@ -13,6 +13,7 @@
 //   the log folder         Recordings (rx.hex, telemetry.csv; files for the others)
 //   the simulator          SimulatorControls (truth channel), radio_pilot (the radio as the pilot)
 //   before the first flight OrientationCheck (is the IMU mounted as the QR takes it?)
+//   the motor test         MotorBench (its screen's steps, the truth of which rotor turned)
 #pragma once
 
 #include <stddef.h>
@@ -36,6 +37,7 @@
 #include <pc/core/key.hpp>
 #include <pc/core/link_session.hpp>
 #include <pc/core/log_downloader.hpp>
+#include <pc/core/motor_bench.hpp>
 #include <pc/core/orientation_check.hpp>
 #include <pc/core/parameter_editor.hpp>
 #include <pc/core/parameter_sync.hpp>
@@ -119,6 +121,7 @@ class Console {
   const StreamSession& streams() const { return streams_; }
   const ParameterEditor& parameter_editor() const { return editor_; }
   const ParameterSync& parameter_sync() const { return parameters_; }
+  const MotorBench& motor_bench() const { return bench_; }
   const OrientationCheck& orientation_check() const { return check_; }
   const std::string& params_file() const { return params_file_; }  // the parameter file the console keeps
   uint32_t telemetry_hz() const;
@@ -164,6 +167,7 @@ class Console {
   void on_system(const wire::TelemetrySystem& system);
   void on_log_status(const wire::LogStatus& status);
   void on_link_state(LinkState state);
+  void open_motor_test();
 
   ConsoleLog& log_;
   Recordings recordings_;
@@ -191,6 +195,7 @@ class Console {
   OrientationCheck check_;
   ScreenState screens_;
   PilotRequests requests_;
+  MotorBench bench_;
 };
 
 }  // namespace qrterm

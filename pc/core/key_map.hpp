@@ -1,7 +1,7 @@
 // The keyboard, as one table: key -> action. The IN4073 map (ESC, 0-5, 7, a/z, arrows, q/w, u/j,
 // i/k, o/l) plus our keys for the coarse lift and the hover, the filter constants, logs,
-// parameters, the simulator's push, reset, turn and radio arm switch, the orientation check, and
-// help.
+// parameters, the simulator's push, reset, turn and radio arm switch, the orientation check, the
+// motor test, and help.
 #pragma once
 
 #include <stddef.h>
@@ -63,6 +63,8 @@ inline constexpr KeyBinding kKeyMap[] = {
     {'y', Action::sim_turn},
     {'m', Action::sim_radio_off},
     {'9', Action::orientation_check},  // beside the mode keys: a step before the first flight, in safe
+    // IN4073's raw-mode key, a mode this firmware does not have: the other bench step, in safe.
+    {'6', Action::motor_test},
     {'h', Action::help},
     {'?', Action::help},
 };

@@ -29,6 +29,20 @@ void PilotRequests::mode(wire::Mode mode, uint32_t now_ms) {
   link_.request(wire::ModeChange{0, mode}, now_ms);
 }
 
+bool PilotRequests::motor_test(uint8_t engine, uint16_t level, uint32_t now_ms) {
+  std::string reason = input_.refuses_flight();
+  if (reason.empty()) reason = controls_.not_neutral_reason();
+  if (!reason.empty()) {
+    note_(Severity::warning, "not asking for the motor test: " + reason);
+    return false;
+  }
+  note_(Severity::info, "motor test: engine " + std::to_string(engine + 1) + " at " + std::to_string(level / 10) +
+                            " % for 2 s (any key stops it)");
+  send_control(now_ms);  // the QR judges the lift by the last control it received, as for a mode
+  link_.request(wire::MotorTest{0, engine, level}, now_ms);
+  return true;
+}
+
 void PilotRequests::toggle_height_hold(uint32_t now_ms) {
   const bool holding = telemetry_.attitude && telemetry_.attitude->mode == wire::Mode::height_hold;
   mode(holding ? wire::Mode::full_control : wire::Mode::height_hold, now_ms);

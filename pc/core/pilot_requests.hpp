@@ -31,6 +31,9 @@ class PilotRequests {
         note_(std::move(note)) {}
 
   void mode(wire::Mode mode, uint32_t now_ms);
+  // The motor test of one engine (0..3) at `level` (docs/safety.md rule 22), checked as leaving
+  // safe is; false when not asked for (the reason is in the log).
+  bool motor_test(uint8_t engine, uint16_t level, uint32_t now_ms);
   // Height hold is a toggle: the QR's mode as last heard says which way (it is entered from full
   // control, and left back to it).
   void toggle_height_hold(uint32_t now_ms);

@@ -20,6 +20,8 @@ constexpr RequestText kRequestTexts[] = {
     {wire::MessageType::exit, nullptr, "exit"},
     {wire::MessageType::observable_get, nullptr, "observable table request"},
     {wire::MessageType::stream_request, nullptr, "stream request"},
+    {wire::MessageType::motor_test, nullptr, "motor test"},
+    {wire::MessageType::esc_direction, nullptr, "ESC direction"},  // the QR's debug text says how it ended
 };
 
 const RequestText& request_text(wire::MessageType type) {

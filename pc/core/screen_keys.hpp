@@ -2,7 +2,9 @@
 // looked up before the cockpit's key map, and only on their screen; every other key (the abort
 // keys, modes, lift and the trims, exit) still does what the cockpit's map says, so the pilot flies
 // from any screen. Tab cycles the cockpit, plot, parameter and radio screens; the orientation check
-// is entered by its key in safe (key_map.hpp) and left by Tab, to the cockpit.
+// is entered by its key in safe (key_map.hpp) and left by Tab, to the cockpit. The motor test's
+// screen (motor_bench.hpp) is entered by its key in safe too; it takes every key but the abort and
+// exit keys (any key stops a spinning engine).
 #pragma once
 
 #include <stddef.h>
@@ -12,11 +14,11 @@
 
 namespace qrterm {
 
-enum class Screen : uint8_t { cockpit, plot, parameters, radio, orientation };
-inline constexpr size_t kScreenCount = 5;
+enum class Screen : uint8_t { cockpit, plot, parameters, radio, orientation, motor_test };
+inline constexpr size_t kScreenCount = 6;
 inline constexpr size_t kTabScreens = 4;  // the screens Tab goes round, the first four
-inline constexpr const char* kScreenNames[kScreenCount] = {"cockpit", "plot", "parameters", "radio",
-                                                           "orientation check"};
+inline constexpr const char* kScreenNames[kScreenCount] = {"cockpit",           "plot",      "parameters", "radio",
+                                                           "orientation check", "motor test"};
 
 enum class ScreenAction : uint8_t {
   none,

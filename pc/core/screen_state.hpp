@@ -54,6 +54,12 @@ class ScreenState {
   }
 
   void toggle_help() { help_ = !help_; }
+  // A screen opened by a key of the cockpit's (the motor test), and back to the cockpit.
+  void show(Screen screen) {
+    help_ = false;
+    prompt_.reset();
+    screen_ = screen;
+  }
   // Any key but the help key closes the help, and still acts.
   void close_help() { help_ = false; }
 

@@ -38,6 +38,23 @@ bool field(const std::string& line, const char* name, double& out) {
   return end != line.c_str() + at + key.size();
 }
 
+// "rotors=A,B,C,D" in a truth line: four numbers.
+std::optional<std::array<double, 4>> rotor_field(const std::string& line) {
+  const std::string key = " rotors=";
+  const size_t at = line.find(key);
+  if (at == std::string::npos) return std::nullopt;
+  std::array<double, 4> speeds{};
+  const char* p = line.c_str() + at + key.size();
+  for (size_t i = 0; i < speeds.size(); ++i) {
+    if (i > 0 && *p++ != ',') return std::nullopt;
+    char* end = nullptr;
+    speeds[i] = std::strtod(p, &end);
+    if (end == p) return std::nullopt;
+    p = end;
+  }
+  return speeds;
+}
+
 }  // namespace
 
 bool SimulatorControls::act(Action action) {
@@ -112,6 +129,7 @@ std::optional<PlotModel::TrueState> SimulatorControls::on_line(const std::string
     const int64_t offset = static_cast<int64_t>(now_ms) - std::llround(t_s * 1000);
     if (!clock_offset_ms_ || offset < *clock_offset_ms_) clock_offset_ms_ = offset;
   }
+  if (const std::optional<std::array<double, 4>> rotors = rotor_field(line)) rotors_ = rotors;
   if (!field(line, "roll", roll) || !field(line, "pitch", pitch) || !field(line, "yaw", yaw) ||
       !field(line, "height", height)) {
     return std::nullopt;

@@ -8,6 +8,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include <array>
 #include <functional>
 #include <optional>
 #include <string>
@@ -51,6 +52,9 @@ class SimulatorControls {
 
   // "truth roll +1.2 pitch -0.5 yaw +10.0 height 1.50 m", or empty: no line yet.
   const std::string& truth() const { return truth_; }
+  // Each rotor's speed in the last truth line, rad/s, front, right, back, left, positive clockwise
+  // seen from above; empty before a line that has them.
+  const std::optional<std::array<double, 4>>& rotors() const { return rotors_; }
   // The simulator's clock on the console's (ms to add to a QR time): from the truth lines, the
   // smallest difference seen, so the one that waited least on its way. Empty without truth lines.
   std::optional<int64_t> clock_offset_ms() const { return clock_offset_ms_; }
@@ -61,6 +65,7 @@ class SimulatorControls {
   bool present_;
   Note note_;
   std::string truth_;
+  std::optional<std::array<double, 4>> rotors_;
   std::optional<int64_t> clock_offset_ms_;
   std::vector<std::string> commands_;
   int next_turn_axis_ = 0;  // the y key's next axis: z, x, y

@@ -26,7 +26,7 @@ double degrees_per_s(int32_t thousandths_rad_s) { return thousandths_rad_s * 1e-
 
 short mode_color(wire::Mode mode) {
   if (mode == wire::Mode::panic) return kAlarm;
-  if (is_flight_mode(mode)) return kWarning;
+  if (is_flight_mode(mode) || mode == wire::Mode::motor_test) return kWarning;  // engines may turn
   return mode == wire::Mode::calibration ? kQr : kInfo;
 }
 
@@ -474,6 +474,9 @@ void Cockpit::compose(const Console& console) {
     draw_plot_screen(console, 4, rows - 4, width, braille_);
   } else if (console.screen() == Screen::parameters) {
     draw_parameter_screen(console, 4, rows - 4, width);
+  } else if (console.screen() == Screen::motor_test) {
+    const int below = draw_motor_test_screen(console, 4, width);
+    draw_log(console, below, rows - below, width);
   } else if (console.screen() == Screen::radio) {
     draw_radio_screen(console, 4, rows - 4, width);
   } else if (console.screen() == Screen::orientation) {

@@ -127,12 +127,18 @@ concept OverrunCountingBoard = requires(const B& b) {
 };
 
 // Optional: DShot ESCs that take special commands (common/drivers/dshot_commands.hpp), sent in
-// place of the throttle frames while an engine is stopped.
-//   bool esc_command(uint8_t command)   for every engine; false: refused (no such ESCs, or an
-//                                       engine turns)
+// place of the throttle frames while an engine is stopped, a frame a control period.
+//   bool esc_command(uint8_t command, uint8_t engines)   to the engines of the mask (bit i: engine
+//                                       i); false: refused (no such ESCs, or one of them turns)
+struct EscCommand {
+  uint8_t command = 0;  // 0: none
+  uint8_t engines = 0;  // bit i: engine i
+};
+inline constexpr uint8_t kEveryEngine = 0x0F;
+
 template <class B>
-concept EscCommandBoard = requires(B& b, uint8_t command) {
-  {b.esc_command(command)};
+concept EscCommandBoard = requires(B& b, uint8_t command, uint8_t engines) {
+  {b.esc_command(command, engines)};
 };
 
 }  // namespace qr

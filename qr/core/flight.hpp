@@ -23,6 +23,7 @@
 #include <common/request_dedup.hpp>
 #include <qr/core/board.hpp>
 #include <qr/core/control_rate.hpp>
+#include <qr/core/esc_direction.hpp>
 #include <qr/core/flight_log.hpp>
 #include <qr/core/flight_tasks.hpp>
 #include <qr/core/flight_telemetry.hpp>
@@ -95,11 +96,25 @@ class Flight {
     }
     rpm_heard_ = true;
   }
-  // A DShot command for the ESCs this tick, 0 for none (boards whose ESCs take them,
-  // EscCommandBoard): the lost-model beacon (lost_model_beacon.hpp, docs/safety.md rule 18).
-  uint8_t esc_command_due() const {
+  // A DShot command for the ESCs this tick, command 0 for none (boards whose ESCs take them,
+  // EscCommandBoard; docs/safety.md rule 18): an ESC's direction the pilot set on the bench
+  // (esc_direction.hpp), to its engine; else the lost-model beacon (lost_model_beacon.hpp), to all.
+  EscCommand esc_command_due() {
+    if (esc_direction_.pending()) {
+      const EscCommand due = esc_direction_.due(safety_.mode(), engines_, tick_us_);
+      if (!esc_direction_.pending()) say_esc_direction(false);  // dropped: out of safe, or an engine turned
+      return due;
+    }
     const uint32_t timeout_us = static_cast<uint32_t>(params_.get(wire::ParamId::link_timeout_ms)) * 1000u;
-    return lost_model_beacon(safety_.mode(), engines_, tick_us_, situation().last_frame_us, timeout_us, kPeriodUs);
+    const uint8_t beacon = lost_model_beacon(safety_.mode(), engines_, tick_us_, situation().last_frame_us, timeout_us,
+                                             kPeriodUs);
+    return {beacon, kEveryEngine};
+  }
+  // Whether the board took the command due: a direction goes on to its save, and the pilot is told
+  // how it ended.
+  void esc_command_sent(bool taken) {
+    bool saved = false;
+    if (esc_direction_.pending() && esc_direction_.sent(taken, tick_us_, saved)) say_esc_direction(saved);
   }
   bool tx_peek(uint8_t& byte) const { return tx_.peek(byte); }
   void tx_pop() { tx_.pop(); }
@@ -234,6 +249,7 @@ class Flight {
     door_mode_ = to;
   }
   void announce_mode();
+  void say_esc_direction(bool saved);
   void say_calibration_verdict();
   void report_sensor_faults();
   void say_sensor_faults();
@@ -278,6 +294,7 @@ class Flight {
   wire::RequestDedup dedup_;
   wire::ParameterValues params_;
   SafetyMachine safety_;
+  EscDirection esc_direction_;  // an ESC's direction being set on the bench
   Chain chain_;
   FlightTelemetry telemetry_;
 

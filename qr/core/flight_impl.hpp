@@ -52,6 +52,16 @@ template <SignalChain Chain>
   say("\n");
 }
 
+// How a bench's ESC direction ended: "ESC 3: spin direction 2, saved", or not set.
+template <SignalChain Chain>
+[[gnu::noinline]] void Flight<Chain>::say_esc_direction(bool saved) {
+  char line[] = "ESC 0: spin direction 0";
+  line[4] = static_cast<char>('1' + esc_direction_.engine());
+  line[22] = static_cast<char>('0' + esc_direction_.direction());
+  say(line);
+  say(saved ? ", saved\n" : " not set (an engine turned, or no DShot ESC took it)\n");
+}
+
 // A calibration that refused its offsets, or whose sign probe found a loop pushing its error
 // further (rule 21), says so and names the axis: the pilot's next request would be refused.
 template <SignalChain Chain>

@@ -1,5 +1,5 @@
 // Applying the pilot's messages: each decoded message from the console becomes a change to the
-// flight (sticks, a mode request, a parameter, a log command); for a request, `answer` is what
+// flight (sticks, a mode request, a motor test, a parameter, a log command); for a request, `answer` is what
 // its ack or nack says. Included by flight_link.hpp, whose on_frame() dispatches to it.
 #pragma once
 
@@ -35,7 +35,9 @@ struct FlightRequests {
     // Who flies (docs/safety.md rule 17) and how the IMU sits in the frame change in safe only;
     // the value in force is no change (a console sends every parameter at its start, whatever
     // the mode).
-    for (const wire::ParamId safe_only : {wire::ParamId::pilot, wire::ParamId::imu_orientation}) {
+    // An array, not a braced list: the RV32 toolchain has no <initializer_list> (freestanding).
+    static constexpr wire::ParamId kSafeOnly[] = {wire::ParamId::pilot, wire::ParamId::imu_orientation};
+    for (const wire::ParamId safe_only : kSafeOnly) {
       if (p.id == static_cast<uint8_t>(safe_only) && p.value != f.params_.get(safe_only) &&
           f.safety_.mode() != Mode::safe) {
         answer = NackReason::not_from_this_mode;
@@ -68,6 +70,10 @@ struct FlightRequests {
     answer = NackReason::unknown_parameter;
   }
   void operator()(const wire::Exit&) { f.safety_.request_exit(f.situation()); }
+  void operator()(const wire::EscDirection& d) {
+    answer = f.esc_direction_.request(d.engine, d.direction, f.safety_.mode(), f.engines_, f.tick_us_);
+  }
+  void operator()(const wire::MotorTest& m) { answer = f.safety_.request_motor_test(m.engine, m.level, f.situation()); }
   void operator()(const wire::ObservableGet& g) {
     answer = kObservableStreams ? f.streams_.request_table(g.id) : NackReason::not_supported;
   }

@@ -184,6 +184,8 @@ inline constexpr FlightMode<Flight> kFlightModes[kModeCount] = {
        f.chain().enter_attitude_control();
        f.chain().enter_yaw_control();
      }},
+    // Safe's rows: no mixer runs; the safety machine gives the one engine its level.
+    {Mode::motor_test, task_sets::set(task_sets::kSafe), chain::kOpenLoop, nullptr},
 };
 
 // The distinct sets, each compiled once, and which of them each mode runs (modes_in_order and the

@@ -1,5 +1,5 @@
 // The QR's LEDs: one per state the pilot must see at a glance. Bit 0 safe, bit 1 panic, bit 2 a
-// flight mode (engines may turn), bit 3 battery warning.
+// flight mode or the motor test (engines may turn), bit 3 battery warning.
 #pragma once
 
 #include <stdint.h>
@@ -12,7 +12,8 @@ inline constexpr uint8_t kLedSafe = 1, kLedPanic = 2, kLedFlying = 4, kLedBatter
 
 constexpr uint8_t led_pattern(wire::Mode mode, bool battery_warning) {
   return static_cast<uint8_t>((mode == wire::Mode::safe ? kLedSafe : 0) | (mode == wire::Mode::panic ? kLedPanic : 0) |
-                              (wire::flies(mode) ? kLedFlying : 0) | (battery_warning ? kLedBatteryWarning : 0));
+                              (wire::flies(mode) || mode == wire::Mode::motor_test ? kLedFlying : 0) |
+                              (battery_warning ? kLedBatteryWarning : 0));
 }
 
 }  // namespace qr

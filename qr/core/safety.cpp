@@ -28,9 +28,12 @@ struct Guard {
 };
 
 constexpr Guard kGuards[] = {
-    // One pilot at a time: while the radio flies, only its arm switch enters a flight mode.
+    // One pilot at a time: while the radio flies, only its arm switch enters a flight mode, and the
+    // PC spins no engine (its lift, which would stop a motor test, is nobody's).
     {NackReason::radio_is_pilot,
-     [](Mode, Mode to, const Situation& s, const SafetyLimits&) { return s.pilot != s.requester && rule(to).flies; }},
+     [](Mode, Mode to, const Situation& s, const SafetyLimits&) {
+       return s.pilot != s.requester && (rule(to).flies || to == Mode::motor_test);
+     }},
     {NackReason::not_from_this_mode,
      [](Mode from, Mode to, const Situation&, const SafetyLimits&) { return from != rule(to).entered_from; }},
     // Leaving safe: the pilot's hands and the engines at rest (height hold is entered in flight).
@@ -159,9 +162,20 @@ SafetyLimits safety_limits(const wire::ParameterValues& p) {
   return l;
 }
 
+NackReason SafetyMachine::refusal(Mode to, const Situation& s) const {
+  for (const Guard& g : kGuards) {
+    if (g.blocks(mode_, to, s, limits_)) return g.reason;
+  }
+  return NackReason::none;
+}
+
 NackReason SafetyMachine::request(uint8_t wanted, const Situation& s) {
+  // Any mode request ends a motor test at once, in safe (rule 22); it is then judged from there.
+  if (mode_ == Mode::motor_test) enter(Mode::safe);
   if (wanted >= kModeCount) return NackReason::unknown_mode;
   const Mode to = static_cast<Mode>(wanted);
+  // The motor test says its engine and level: its own request enters it, never a mode change.
+  if (to == Mode::motor_test) return NackReason::bad_value;
   if (to == mode_) return NackReason::none;
 
   // The pilot's toggle out of height hold: back to full control, flying on.
@@ -179,11 +193,26 @@ NackReason SafetyMachine::request(uint8_t wanted, const Situation& s) {
     return NackReason::none;
   }
 
-  for (const Guard& g : kGuards) {
-    if (g.blocks(mode_, to, s, limits_)) return g.reason;
-  }
+  const NackReason refused = refusal(to, s);
+  if (refused != NackReason::none) return refused;
   held_lift_ = s.controls.lift;
   enter(to);
+  return NackReason::none;
+}
+
+NackReason SafetyMachine::request_motor_test(uint8_t engine, uint16_t level, const Situation& s) {
+  // A motor test asked for during one ends it: the pilot starts the next from safe.
+  if (mode_ == Mode::motor_test) {
+    enter(Mode::safe);
+    return NackReason::not_from_this_mode;
+  }
+  if (engine >= 4 || level > wire::kMotorTestMaxLevel) return NackReason::bad_value;
+  const NackReason refused = refusal(Mode::motor_test, s);
+  if (refused != NackReason::none) return refused;
+  test_engine_ = engine;
+  test_level_ = level;
+  test_start_us_ = s.now_us;
+  enter(Mode::motor_test);
   return NackReason::none;
 }
 
@@ -219,6 +248,7 @@ void SafetyMachine::calibration_finished() {
 
 void SafetyMachine::sticks_moved(const ControlInput& c) {
   if (mode_ == Mode::height_hold && c.lift != held_lift_) enter(Mode::full_control);
+  if (mode_ == Mode::motor_test && c.lift > 0) enter(Mode::safe);
 }
 
 void SafetyMachine::supervise(const Situation& s) {
@@ -264,6 +294,13 @@ void SafetyMachine::supervise(const Situation& s) {
   // Height hold without its barometer: back to full control, where the pilot's lift flies (rule 20).
   if (mode_ == Mode::height_hold && !s.barometer_healthy) enter(Mode::full_control);
 
+  // The motor test ends by itself after its time, and at once when the pilot's link falls silent:
+  // a console that can no longer stop it must not leave an engine turning (rule 22).
+  if (mode_ == Mode::motor_test &&
+      (s.now_us - test_start_us_ >= limits_.motor_test_us || s.now_us - s.last_frame_us > limits_.link_timeout_us)) {
+    enter(Mode::safe);
+  }
+
   if (mode_ == Mode::panic) {
     const uint32_t elapsed = s.now_us - panic_start_us_;
     // A panic entered in this very call sees the chain's verdict from before its descent began
@@ -296,6 +333,10 @@ EngineCommand SafetyMachine::limit_engines(const EngineCommand& wanted, const Si
     for (int i = 0; i < 4; ++i) {
       out.value[i] = t < limits_.panic_hold_us ? hold : t < end ? scale(hold, end - t, limits_.panic_ramp_us) : 0;
     }
+    return out;
+  }
+  if (mode_ == Mode::motor_test) {
+    out.value[test_engine_] = test_level_;  // the others stay zero
     return out;
   }
   if (!rule(mode_).flies || s.controls.lift == 0) return out;

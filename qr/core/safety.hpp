@@ -6,6 +6,7 @@
 #include <stdint.h>
 
 #include <common/parameter_table.hpp>
+#include <common/requests.hpp>
 #include <qr/core/board.hpp>
 #include <qr/core/flight_types.hpp>
 
@@ -45,6 +46,7 @@ struct SafetyLimits {
   uint16_t battery_sag_mv;               // the sag at all engines full (battery_sag_mv parameter)
   uint32_t battery_trip_us = 100000;     // the battery measure below the panic level this long: panic
   uint16_t battery_hysteresis_mv = 100;  // the warning ends only this far above its level
+  uint32_t motor_test_us = 2000000;      // a motor test spins its engine this long (rule 22)
 };
 
 // The limits the parameters say (the defaults when `p` is default-constructed).
@@ -98,6 +100,11 @@ class SafetyMachine {
   // A pilot's mode request. Safe and panic are always obeyed (a flight mode reaches safe
   // through panic); anything else is checked against the guard table.
   NackReason request(uint8_t mode, const Situation& s);
+  // The motor test (rule 22): `engine` (0..3) alone at `level` (at most wire::kMotorTestMaxLevel)
+  // for motor_test_us, entered from safe through the guards of leaving safe; the radio as the
+  // pilot refuses it. It ends by itself in safe; a mode request or another motor test, the lift
+  // above zero in a control frame, or the pilot's link silent for the link timeout end it at once.
+  NackReason request_motor_test(uint8_t engine, uint16_t level, const Situation& s);
   // Exit: to safe (through panic if flying), then stopped.
   void request_exit(const Situation& s);
   void calibration_finished();
@@ -113,6 +120,7 @@ class SafetyMachine {
 
   // The pilot's sticks as each control frame brings them, before the chain uses them: any change
   // of the lift ends height hold at once, back to full control.
+  // The lift above zero ends a motor test.
   void sticks_moved(const ControlInput& c);
 
   // The radio's switches as each valid RC frame brings them while the radio is the pilot (rule
@@ -130,7 +138,8 @@ class SafetyMachine {
   void supervise(const Situation& s);
 
   // The last word on engine values: zero unless flying or panicking, the panic profile in
-  // panic, and while flying with lift an idle floor so no engine stalls.
+  // panic, and while flying with lift an idle floor so no engine stalls; in a motor test its
+  // engine at its level, the others zero.
   EngineCommand limit_engines(const EngineCommand& wanted, const Situation& s) const;
 
  private:
@@ -139,6 +148,7 @@ class SafetyMachine {
     entered_ = static_cast<uint8_t>(entered_ | (1u << index(to)));
   }
   void enter_panic(PanicCause cause, const Situation& s);
+  NackReason refusal(Mode to, const Situation& s) const;
 
   SafetyLimits limits_;
   Mode mode_ = Mode::safe;
@@ -158,8 +168,11 @@ class SafetyMachine {
   uint16_t hold_level_ = 0;        // the cut's level, engine units
   uint32_t flying_q8_ = 0;         // flying_lift() x 256
   uint16_t held_lift_ = 0;         // the lift stick when height hold was entered
-  bool arm_seen_off_ = false;      // the radio's arm switch was off in a frame since it last armed
-  bool arm_on_ = false;            // the arm switch in the last RC frame
+  uint8_t test_engine_ = 0;        // the motor test's engine, its level and its start
+  uint16_t test_level_ = 0;
+  uint32_t test_start_us_ = 0;
+  bool arm_seen_off_ = false;  // the radio's arm switch was off in a frame since it last armed
+  bool arm_on_ = false;        // the arm switch in the last RC frame
   bool radio_heard_ = false;
   uint32_t radio_heard_us_ = 0;  // the last RC frame's time: a longer silence than the timeout is a loss
 };

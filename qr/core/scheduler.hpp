@@ -15,7 +15,8 @@
 // a radio receiver (RadioBoard) gives the context (radio_space, radio_receive) a bounded number of
 // radio bytes per tick; after the engines, a board whose ESCs answer (EscAnswerBoard) hands their
 // answers to the context (esc_answers), and one whose ESCs take commands (EscCommandBoard) is sent
-// the context's (esc_command_due).
+// the context's (esc_command_due), and the context is told whether the board took it
+// (esc_command_sent).
 //
 // Every rate, phase and budget is in the context's task table (task.hpp); no task divides itself.
 //
@@ -120,8 +121,9 @@ concept EscAnswerContext = requires(C& c, const EscAnswers& answers) {
   c.esc_answers(answers);
 };
 template <class C>
-concept EscCommandContext = requires(const C& c) {
-  {c.esc_command_due()};
+concept EscCommandContext = requires(C& c) {
+  { c.esc_command_due() } -> SameAs<EscCommand>;
+  c.esc_command_sent(bool{});  // whether the board took it
 };
 
 template <Board B, SchedulerContext Context>
@@ -195,8 +197,8 @@ class Scheduler {
       if (board_.esc_answers(answers)) context_.esc_answers(answers);
     }
     if constexpr (EscCommandBoard<B> && EscCommandContext<Context>) {
-      const uint8_t command = context_.esc_command_due();
-      if (command != 0) board_.esc_command(command);
+      const EscCommand due = context_.esc_command_due();
+      if (due.command != 0) context_.esc_command_sent(board_.esc_command(due.command, due.engines));
     }
     board_.set_leds(context_.leds());
     for (uint16_t n = 0; n < limits_.tx_bytes_per_tick && context_.tx_peek(byte); ++n) {

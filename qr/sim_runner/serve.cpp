@@ -289,7 +289,7 @@ class ServeSession {
     reports_.step(out_, wall_us, now);
     if (truth_.open() && now >= next_truth_us_) {
       next_truth_us_ = now - now % 20000 + 20000;
-      truth_.send(truth_line(static_cast<double>(now) * 1e-6, qr_.world().plant().state()));
+      truth_.send(truth_line(static_cast<double>(now) * 1e-6, qr_.world().plant()));
     }
     if (options_.status && now >= next_status_us_) {
       next_status_us_ += 1000000;

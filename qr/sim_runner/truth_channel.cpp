@@ -133,14 +133,21 @@ sim::PlantState reset_state(const sim::PlantState& now) {
   return state;
 }
 
-std::string truth_line(double t_s, const sim::PlantState& state) {
+std::string truth_line(double t_s, const sim::Quadrotor& plant) {
+  const sim::PlantState& state = plant.state();
   const sim::Euler e = sim::to_euler(state.attitude);
   constexpr double kDeg = 57.29577951308232;
+  double turning[sim::kRotorCount] = {};
+  // To the 0.1 rad/s printed, and + 0.0: a still counter-clockwise rotor reads 0.0, not -0.0.
+  for (size_t i = 0; i < sim::kRotorCount; ++i) {
+    turning[i] = std::round(state.rotor_speed[i] * plant.rotors()[i].spin * 10) / 10 + 0.0;
+  }
   char text[256];
   std::snprintf(text, sizeof text,
-                "truth t=%.3f roll=%.2f pitch=%.2f yaw=%.2f height=%.3f north=%.3f east=%.3f climb=%.3f\n", t_s,
-                e.roll * kDeg, e.pitch * kDeg, e.yaw * kDeg, -state.position.z, state.position.x, state.position.y,
-                -state.velocity.z);
+                "truth t=%.3f roll=%.2f pitch=%.2f yaw=%.2f height=%.3f north=%.3f east=%.3f climb=%.3f "
+                "rotors=%.1f,%.1f,%.1f,%.1f\n",
+                t_s, e.roll * kDeg, e.pitch * kDeg, e.yaw * kDeg, -state.position.z, state.position.x, state.position.y,
+                -state.velocity.z, turning[0], turning[1], turning[2], turning[3]);
   return text;
 }
 

@@ -43,8 +43,10 @@ bool parse_truth_command(std::string_view line, TruthCommand& command, std::stri
 // The plant's state after a reset from `now`: level at the ground, still, heading and place kept.
 sim::PlantState reset_state(const sim::PlantState& now);
 
-// "truth t=12.340 roll=1.23 pitch=-0.50 yaw=10.00 height=1.500 north=0.100 east=-0.020 climb=0.000"
-// (degrees, metres, m/s upward), with a newline.
-std::string truth_line(double t_s, const sim::PlantState& state);
+// "truth t=12.340 roll=1.23 pitch=-0.50 yaw=10.00 height=1.500 north=0.100 east=-0.020 climb=0.000
+// rotors=0.0,-104.7,0.0,0.0" (degrees, metres, m/s upward; each rotor's speed in rad/s, front,
+// right, back, left, positive clockwise seen from above: which rotor turns, and which way, for a
+// motor test), with a newline.
+std::string truth_line(double t_s, const sim::Quadrotor& plant);
 
 }  // namespace qrsim

@@ -111,6 +111,8 @@ inline std::vector<GoldenFrame> golden_frames() {
       golden("G36", TelemetryRadio{kRadioPilot | kRadioLinkUp, 60, 100, 9, 5, 3, 70, 98, -4},
              "4D A0 03 3C 64 09 05 03 46 62 FC 68"),
       golden("G37", TelemetryRpm{{20026, 19873, 20110, 19950}}, "4D A3 3A 4E A1 4D 8E 4E EE 4D B3"),
+      golden("G38", MotorTest{10, 1, 100}, "4D 77 0A 01 64 00 AA 6F 90 B1"),
+      golden("G39", EscDirection{11, 2, 2}, "4D 7B 0B 02 02 F1 1B D7 5C"),
   };
 }
 

@@ -158,6 +158,11 @@ void fly_from_the_pc(FrameJudge& judge) {
     pilot.request_mode(Mode::safe);  // through panic, as from every flying mode
     ASSERT_TRUE(s.in_mode(Mode::safe, 10));
   }
+  // The motor test, by its own request: an engine for 2 s on the ground, then safe by itself.
+  pilot.request(wire::MotorTest{0, 1, 100});
+  ASSERT_TRUE(s.answered(wire::MessageType::motor_test));
+  ASSERT_TRUE(s.in_mode(Mode::motor_test));
+  ASSERT_TRUE(s.in_mode(Mode::safe, 3));
 
   // A log line every this many periods fills the logs in about 12 s: during the flight, so the
   // lines hold full control and height hold, and the log-full bits are set while telemetry runs.

@@ -31,6 +31,13 @@ wire::FrameBytes submit(wire::ResendQueue& queue, uint8_t which, uint8_t value, 
                                               {value, wire::kNoObservable, wire::kNoObservable, wire::kNoObservable}},
                           now);
     case 8: return queue.submit(wire::LogResend{0, wire::LogKind::telemetry, value, {value, value, 0, 0, value}}, now);
+    case 9:
+      return queue.submit(wire::MotorTest{0, static_cast<uint8_t>(value % 4),
+                                          static_cast<uint16_t>(value % (wire::kMotorTestMaxLevel + 1))},
+                          now);
+    case 10:
+      return queue.submit(wire::EscDirection{0, static_cast<uint8_t>(value % 4), static_cast<uint8_t>(value % 2 + 1)},
+                          now);
     default: return queue.submit(wire::Exit{}, now);
   }
 }

@@ -23,6 +23,22 @@ struct FakeQr::Handler {
   void operator()(const wire::Control& c) {
     qr.control = c;
     ++qr.controls_received;
+    if (qr.mode == wire::Mode::motor_test && c.lift > 0) qr.mode = wire::Mode::safe;
+  }
+  void operator()(const wire::MotorTest& m) {
+    if (qr.mode != wire::Mode::safe) {
+      if (qr.mode == wire::Mode::motor_test) qr.mode = wire::Mode::safe;
+      answer = wire::NackReason::not_from_this_mode;
+    } else if (qr.refuse_leaving_safe != wire::NackReason::none) {
+      answer = qr.refuse_leaving_safe;
+    } else if (!neutral(qr.control)) {
+      answer = wire::NackReason::controls_not_neutral;
+    } else {
+      qr.mode = wire::Mode::motor_test;
+      qr.mode_since_ms_ = qr.now_ms_;
+      qr.test_engine_ = m.engine;
+      qr.test_level_ = m.level;
+    }
   }
   void operator()(const wire::ModeChange& m) { answer = qr.change_mode(m.mode); }
   void operator()(const wire::ParamSet& p) {
@@ -68,6 +84,7 @@ struct FakeQr::Handler {
 
 wire::NackReason FakeQr::change_mode(wire::Mode wanted) {
   if (!wire::valid_mode(wanted)) return wire::NackReason::unknown_mode;
+  if (mode == wire::Mode::motor_test) mode = wire::Mode::safe;  // any mode request ends a motor test
   if (wanted == wire::Mode::safe || wanted == wire::Mode::panic) {
     // Safe is reached from flight through panic; in safe or calibration a panic lands in safe.
     const bool flying = flight_mode(mode);
@@ -137,6 +154,7 @@ void FakeQr::tick(uint32_t now_ms) {
     mode = wire::Mode::safe;
   }
   if (mode == wire::Mode::panic && now_ms - mode_since_ms_ >= kPanicMs) mode = wire::Mode::safe;
+  if (mode == wire::Mode::motor_test && now_ms - mode_since_ms_ >= kMotorTestMs) mode = wire::Mode::safe;
   update_engines();
   if (telemetry && wire::reached(now_ms, next_telemetry_ms_)) {
     next_telemetry_ms_ = now_ms + kTelemetryPeriodMs;
@@ -146,7 +164,9 @@ void FakeQr::tick(uint32_t now_ms) {
 
 void FakeQr::update_engines() {
   for (uint16_t& e : engine) {
-    if (mode == wire::Mode::panic) {
+    if (mode == wire::Mode::motor_test) {
+      e = &e == &engine[test_engine_ % 4] ? test_level_ : 0;
+    } else if (mode == wire::Mode::panic) {
       e = std::min<uint16_t>(e, 350);
     } else if (flight_mode(mode)) {
       e = control.lift == 0 ? 0 : std::max<uint16_t>(control.lift, 180);

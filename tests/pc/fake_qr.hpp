@@ -1,7 +1,8 @@
 // A scripted stand-in for the QR, built from the wire library: it parses what the console sends,
 // answers requests (with the QR's dedup, so resends are answered and not applied twice), keeps a
 // small safety machine (modes entered from safe with neutral controls, calibration first for yaw
-// and full, panic then safe, link loss panics), sends telemetry, and serves logs. Tests script it:
+// and full, panic then safe, link loss panics, a motor test's engine for 2 s), sends telemetry,
+// and serves logs. Tests script it:
 // silence it, make it refuse, drop log parts. Not the firmware: the end-to-end test flies that.
 #pragma once
 
@@ -24,6 +25,7 @@ class FakeQr {
  public:
   static constexpr uint32_t kCalibrationMs = 500;
   static constexpr uint32_t kPanicMs = 1000;
+  static constexpr uint32_t kMotorTestMs = 2000;
   static constexpr uint32_t kLinkTimeoutMs = 250;
   static constexpr uint32_t kTelemetryPeriodMs = 20;
   static constexpr uint16_t kLogCapacity = 2340;
@@ -77,6 +79,8 @@ class FakeQr {
   void send_telemetry();
   void send_log(wire::LogKind log, uint16_t first, uint16_t count);
   void update_engines();
+  uint8_t test_engine_ = 0;  // the motor test's engine and level
+  uint16_t test_level_ = 0;
   wire::LogStatus log_status() const;
 
   wire::FrameParser parser_{wire::Listen::pc_to_qr};

@@ -262,6 +262,49 @@ TEST_F(FlightTest, AStopIsAppliedEvenWhenItIsAResend) {
   EXPECT_EQ(flight.mode(), Mode::panic);
 }
 
+// Rule 22 through the wire: the motor test's request spins its engine alone, acked, for 2 s to the
+// tick; a control frame with lift ends it in the tick that reads it; a level above the cap is
+// malformed (nack bad_value).
+TEST_F(FlightTest, AMotorTestSpinsItsEngineForTwoSecondsAndTheLiftEndsIt) {
+  run_ms(100);
+  send(wire::MotorTest{++seq, 1, 120});
+  uint32_t spinning_ticks = 0;
+  bool others_still = true;
+  for (uint32_t t = 0; t < 2500; ++t) {
+    if (t % 20 == 0) send(sticks);
+    pass_ms([&] {
+      const EngineCommand e = board.engines;
+      if (e.value[1] == 120) ++spinning_ticks;
+      others_still = others_still && e.value[0] == 0 && e.value[2] == 0 && e.value[3] == 0;
+    });
+    receive();
+  }
+  ASSERT_EQ(got<wire::Ack>().size(), 1u);
+  EXPECT_EQ(got<wire::Ack>()[0].type, wire::MessageType::motor_test);
+  EXPECT_EQ(spinning_ticks, 2000000u / kPeriodUs) << "the right engine at its level for 2 s to the tick";
+  EXPECT_TRUE(others_still);
+  EXPECT_EQ(flight.mode(), Mode::safe);
+  EXPECT_NE(debug_text().find("mode: motor test\nmode: safe\n"), std::string::npos);
+
+  send(wire::MotorTest{++seq, 3, 200});
+  run_ms(500);
+  ASSERT_EQ(flight.mode(), Mode::motor_test);
+  ASSERT_EQ(board.engines.value[3], 200);
+  sticks.lift = 1;
+  send(sticks);
+  for (uint32_t ms = 0; ms < kPeriodUs / 1000; ++ms) pass_ms();  // one control period: one tick
+  EXPECT_EQ(flight.mode(), Mode::safe) << "the tick that reads the lift";
+  EXPECT_TRUE(board.engines.all_zero());
+
+  sticks.lift = 0;
+  run_ms(100);
+  send(wire::MotorTest{++seq, 0, wire::kMotorTestMaxLevel + 1});
+  run_ms(5);
+  ASSERT_FALSE(got<wire::Nack>().empty());
+  EXPECT_EQ(got<wire::Nack>().back().reason, NackReason::bad_value);
+  EXPECT_EQ(flight.mode(), Mode::safe);
+}
+
 TEST_F(FlightTest, OutOfRangeControlsAreNotLifeAndEndInTheLinkLossPanic) {
   request_mode(Mode::manual);
   run_ms(5);

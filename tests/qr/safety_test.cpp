@@ -16,8 +16,8 @@ bool same(const EngineCommand& a, const EngineCommand& b) {
   }
   return true;
 }
-constexpr Mode kAllModes[] = {Mode::safe,        Mode::panic,        Mode::manual,     Mode::calibration,
-                              Mode::yaw_control, Mode::full_control, Mode::height_hold};
+constexpr Mode kAllModes[] = {Mode::safe,        Mode::panic,        Mode::manual,      Mode::calibration,
+                              Mode::yaw_control, Mode::full_control, Mode::height_hold, Mode::motor_test};
 
 struct Safety : ::testing::Test {
   SafetyLimits limits = safety_limits(wire::ParameterValues{});
@@ -39,6 +39,11 @@ struct Safety : ::testing::Test {
     if (mode == Mode::panic) {
       enter(Mode::manual);
       ASSERT_EQ(machine.request(m(Mode::panic), s), NackReason::none);
+      return;
+    }
+    if (mode == Mode::motor_test) {  // its own request: the front engine at 10 %
+      ASSERT_EQ(machine.request_motor_test(0, 100, s), NackReason::none);
+      ASSERT_EQ(machine.mode(), mode);
       return;
     }
     if (mode == Mode::height_hold) {  // from full control, flying, with a height estimate
@@ -797,6 +802,121 @@ TEST_F(Safety, ExitWhileFlyingGoesThroughPanic) {
   EXPECT_TRUE(machine.stopped());
 }
 
+// Rule 22: the motor test. The engines the machine gives are what the next tick's situation sees.
+struct MotorTestSafety : Safety {
+  static constexpr EngineCommand kWanted{{999, 999, 999, 999}};  // what no mixer may pass in a test
+  // Runs as the flight does for `us`: the watchdogs, then the engines, once a control period.
+  void spin_for(uint32_t us, bool link_alive = true) {
+    for (uint32_t t = 0; t < us; t += kPeriodUs) {
+      s.now_us += kPeriodUs;
+      if (link_alive) s.last_frame_us = s.now_us;
+      machine.supervise(s);
+      s.engines = machine.limit_engines(kWanted, s);
+    }
+  }
+  void start(uint8_t engine = 2, uint16_t level = 150) {
+    at(1000);
+    ASSERT_EQ(machine.request_motor_test(engine, level, s), NackReason::none);
+    s.engines = machine.limit_engines(kWanted, s);
+  }
+  bool only(uint8_t engine, uint16_t level) const {
+    EngineCommand expected;
+    expected.value[engine] = level;
+    return same(s.engines, expected);
+  }
+};
+
+TEST_F(MotorTestSafety, ItSpinsOneEngineAtItsLevelForTwoSecondsThenSafe) {
+  start(2, 150);
+  EXPECT_EQ(machine.mode(), Mode::motor_test);
+  EXPECT_TRUE(only(2, 150)) << "the back engine at its level, the others zero";
+  spin_for(limits.motor_test_us - kPeriodUs);
+  EXPECT_EQ(machine.mode(), Mode::motor_test);
+  EXPECT_TRUE(only(2, 150)) << "throughout its 2 s";
+  spin_for(kPeriodUs);
+  EXPECT_EQ(machine.mode(), Mode::safe) << "2 s after it began";
+  EXPECT_TRUE(s.engines.all_zero());
+  spin_for(1000000);
+  EXPECT_EQ(machine.mode(), Mode::safe);
+  EXPECT_TRUE(s.engines.all_zero()) << "a second later: the test does not come back";
+}
+
+TEST_F(MotorTestSafety, ItIsEnteredFromSafeOnlyThroughTheGuardsOfLeavingSafe) {
+  at(1000);
+  EXPECT_EQ(machine.request_motor_test(4, 100, s), NackReason::bad_value) << "no fifth engine";
+  EXPECT_EQ(machine.request_motor_test(0, wire::kMotorTestMaxLevel + 1, s), NackReason::bad_value)
+      << "above the cap, 20 % of full";
+  EXPECT_EQ(machine.request(m(Mode::motor_test), s), NackReason::bad_value) << "a mode change says no engine";
+  s.controls.lift = 1;
+  EXPECT_EQ(machine.request_motor_test(0, 100, s), NackReason::controls_not_neutral) << "the lift at zero";
+  s.controls = ControlInput{};
+  s.engines.value[1] = 5;
+  EXPECT_EQ(machine.request_motor_test(0, 100, s), NackReason::engines_running);
+  s.engines = EngineCommand{};
+  s.battery_mv = 10000;
+  EXPECT_EQ(machine.request_motor_test(0, 100, s), NackReason::battery_low);
+  s.battery_mv = 12000;
+  s.pilot = Pilot::radio;
+  EXPECT_EQ(machine.request_motor_test(0, 100, s), NackReason::radio_is_pilot) << "one pilot at a time";
+  s.pilot = Pilot::pc;
+  EXPECT_EQ(machine.mode(), Mode::safe);
+  enter(Mode::manual);
+  EXPECT_EQ(machine.request_motor_test(0, 100, s), NackReason::not_from_this_mode);
+  EXPECT_EQ(machine.mode(), Mode::manual);
+  restart();
+  at(1000);
+  s.calibrated = false;
+  EXPECT_EQ(machine.request_motor_test(3, wire::kMotorTestMaxLevel, s), NackReason::none)
+      << "the cap itself, uncalibrated: a bench test needs no sensor";
+  EXPECT_EQ(machine.mode(), Mode::motor_test);
+}
+
+// A stop, any other mode request or motor test, the lift above zero, the pilot's link lost: each
+// ends the test at once in safe, long before its 2 s.
+TEST_F(MotorTestSafety, AnyRequestTheLiftOrALostLinkEndsItAtOnce) {
+  const struct {
+    const char* what;
+    void (*end)(MotorTestSafety&);
+  } kEnds[] = {
+      {"a stop", [](MotorTestSafety& t) { EXPECT_EQ(t.machine.request(m(Mode::safe), t.s), NackReason::none); }},
+      {"the abort", [](MotorTestSafety& t) { EXPECT_EQ(t.machine.request(m(Mode::panic), t.s), NackReason::none); }},
+      {"an unknown mode",
+       [](MotorTestSafety& t) { EXPECT_EQ(t.machine.request(kModeCount, t.s), NackReason::unknown_mode); }},
+      {"a flight mode",
+       [](MotorTestSafety& t) {
+         EXPECT_EQ(t.machine.request(m(Mode::manual), t.s), NackReason::engines_running) << "judged from safe";
+       }},
+      {"another motor test",
+       [](MotorTestSafety& t) {
+         EXPECT_EQ(t.machine.request_motor_test(1, 100, t.s), NackReason::not_from_this_mode);
+       }},
+      {"the lift",
+       [](MotorTestSafety& t) {
+         t.machine.sticks_moved(ControlInput{1, 0, 0, 0});
+       }},
+      {"the exit", [](MotorTestSafety& t) { t.machine.request_exit(t.s); }},
+  };
+  for (const auto& e : kEnds) {
+    restart();
+    start();
+    spin_for(500000);
+    ASSERT_EQ(machine.mode(), Mode::motor_test) << e.what;
+    machine.sticks_moved(ControlInput{0, 300, -300, 300});  // the sticks but the lift do not end it
+    ASSERT_EQ(machine.mode(), Mode::motor_test) << e.what;
+    e.end(*this);
+    EXPECT_EQ(machine.mode(), Mode::safe) << e.what;
+    EXPECT_TRUE(machine.limit_engines(kWanted, s).all_zero()) << e.what;
+  }
+
+  restart();
+  start();
+  spin_for(100000);
+  spin_for(limits.link_timeout_us, false);
+  EXPECT_EQ(machine.mode(), Mode::motor_test) << "silent for the link timeout itself";
+  spin_for(kPeriodUs, false);
+  EXPECT_EQ(machine.mode(), Mode::safe) << "the pilot's link silent past its timeout";
+  EXPECT_TRUE(s.engines.all_zero());
+}
 
 // Rule 17: the radio. The machine sees the arm switch as each RC frame brings it; a frame every
 // 7 ms (150 Hz) as a receiver sends them.

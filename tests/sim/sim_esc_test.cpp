@@ -30,6 +30,32 @@ TEST(SimEsc, ACommandLeavesTheMotorAsItIs) {
   EXPECT_EQ(esc.receive(drivers::dshot_frame(21, true, DshotLine::bidirectional)), 0u);
 }
 
+// The spin direction, as BLHeli_32, Bluejay and AM32 take it: at the 6th frame in a row with the
+// motor stopped, and kept by a save likewise; fewer in a row, or a throttle frame between, count
+// for nothing.
+TEST(SimEsc, ASpinDirectionTakesEffectAtItsSixthFrameInARowAndASaveKeepsIt) {
+  qrsim::SimEsc esc;
+  const auto command = [&](drivers::DshotCommand c) {
+    esc.receive(drivers::dshot_frame(static_cast<uint16_t>(c), true, DshotLine::bidirectional));
+  };
+  esc.receive(drivers::dshot_frame(0, false, DshotLine::bidirectional));
+  for (int i = 0; i < 5; ++i) command(drivers::DshotCommand::spin_direction_2);
+  EXPECT_FALSE(esc.reversed()) << "five in a row";
+  esc.receive(drivers::dshot_frame(0, false, DshotLine::bidirectional));  // a stop frame between
+  command(drivers::DshotCommand::spin_direction_2);
+  EXPECT_FALSE(esc.reversed()) << "the count starts again";
+  for (int i = 0; i < 5; ++i) command(drivers::DshotCommand::spin_direction_2);
+  EXPECT_TRUE(esc.reversed()) << "six in a row";
+  EXPECT_FALSE(esc.saved_reversed());
+  for (int i = 0; i < 6; ++i) command(drivers::DshotCommand::save_settings);
+  EXPECT_TRUE(esc.saved_reversed());
+  // Under throttle it ignores them.
+  esc.receive(drivers::dshot_frame(drivers::dshot_throttle(100), false, DshotLine::bidirectional));
+  for (int i = 0; i < 6; ++i) command(drivers::DshotCommand::spin_direction_1);
+  EXPECT_TRUE(esc.reversed());
+  EXPECT_EQ(esc.commands_while_turning(), 6u);
+}
+
 // 600 rad/s on 7 pole pairs: 5730 RPM, 40 107 eRPM, a period of 1496 us (code: shift 2, 374).
 TEST(SimEsc, TheAnswerIsTheRotorsPeriod) {
   const drivers::ErpmReading r = drivers::decode_erpm_answer(qrsim::SimEsc::answer(600.0, 7));

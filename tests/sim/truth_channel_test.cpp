@@ -149,11 +149,16 @@ TEST(TruthChannel, RefusesBadLines) {
 }
 
 TEST(TruthChannel, TruthLineFormat) {
+  sim::Quadrotor plant(sim::default_vehicle());
   sim::PlantState s;
   s.position = {0.1, -0.02, -1.5};
   s.velocity = {0, 0, -0.25};
-  EXPECT_EQ(qrsim::truth_line(12.34, s),
-            "truth t=12.340 roll=0.00 pitch=0.00 yaw=0.00 height=1.500 north=0.100 east=-0.020 climb=0.250\n");
+  s.rotor_speed = {0, 104.72, 0, 0.04};
+  plant.set_state(s);
+  EXPECT_EQ(qrsim::truth_line(12.34, plant),
+            "truth t=12.340 roll=0.00 pitch=0.00 yaw=0.00 height=1.500 north=0.100 east=-0.020 climb=0.250 "
+            "rotors=0.0,-104.7,0.0,0.0\n")
+      << "the right rotor turns counter-clockwise seen from above; a still one is 0.0, unsigned";
 }
 
 }  // namespace

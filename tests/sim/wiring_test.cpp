@@ -108,6 +108,23 @@ TEST(Wiring, AReversedMotorPushesDownAndTurnsTheOtherWay) {
   EXPECT_EQ(rotor_geometry(v)[0].lift, 1) << "the others untouched";
 }
 
+// An ESC set to spin direction 2 (a DShot command, qr/boards/sim/sim_esc.hpp) turns the rotor its
+// output drives the other way: a wrongly wired motor right again, a right one wrong.
+TEST(Wiring, AnEscsDirectionTurnsTheRotorItsOutputDrives) {
+  VehicleParams v = default_vehicle();
+  v.wiring.rotor_of_output = {3, 1, 2, 0};  // output 0 drives the left rotor
+  v.wiring.reversed = {0, 0, 0, 1};         // which turns the wrong way
+  Quadrotor plant(v);
+  ASSERT_EQ(plant.rotors()[3].spin, +1) << "the left rotor wired clockwise";
+  plant.set_output_reversed(0, true);
+  EXPECT_EQ(plant.rotors()[3].spin, -1) << "counter-clockwise, as the left rotor must";
+  EXPECT_EQ(plant.rotors()[3].lift, 1) << "and it lifts";
+  EXPECT_EQ(plant.rotors()[0].spin, +1) << "the front rotor untouched";
+  plant.set_output_reversed(0, false);
+  EXPECT_EQ(plant.rotors()[3].spin, +1);
+  EXPECT_EQ(plant.rotors()[3].lift, -kReversedThrustShare) << "back as wired";
+}
+
 // The firmware's imu_orientation = k + 4 u (qr/core/chain/imu_mounting.hpp) undoes the mounting
 // imu_mount_yaw_deg = 90 k, imu_upside_down = u: every body vector comes back as it was.
 TEST(Wiring, EachImuOrientationUndoesItsMounting) {

@@ -53,15 +53,17 @@ class FakeBoard {
     esc.fresh = 0;
     return true;
   }
-  // DShot special commands, recorded with the engine values the board was last given.
+  // DShot special commands, recorded with the engines they went to (bit i: engine i) and the
+  // engine values the board was last given. `esc_commands_taken` false: ESCs that take none.
   struct EscCommandSent {
     uint8_t command;
     EngineCommand engines;
     uint32_t at_us;
+    uint8_t to;
   };
-  bool esc_command(uint8_t command) {
-    esc_commands.push_back({command, engines, now_us_});
-    return true;
+  bool esc_command(uint8_t command, uint8_t to) {
+    esc_commands.push_back({command, engines, now_us_, to});
+    return esc_commands_taken;
   }
   LogArea log_area() { return {log_memory, sizeof log_memory}; }
   uint32_t rx_overruns() const { return overruns; }  // scripted: bytes the receiver "lost"
@@ -77,6 +79,7 @@ class FakeBoard {
   std::deque<uint8_t> radio;
   EscAnswers esc;
   std::vector<EscCommandSent> esc_commands;
+  bool esc_commands_taken = true;
   std::vector<uint8_t> tx;
   size_t tx_capacity = 1u << 20;
   std::vector<uint32_t> kick_times_us;  // when each tick's kick was taken

@@ -83,6 +83,11 @@ void SimBoard::set_engines(qr::EngineCommand engines) {
     if (corrupt_every_ != 0 && dshot_frames_ % corrupt_every_ == 0)
       frame ^= static_cast<uint16_t>(1u << (dshot_frames_ % 16));
     run[i] = escs_[i].receive(frame);
+    // An ESC set to spin direction 2 turns its motor, and the rotor on it, the other way.
+    if (escs_[i].reversed() != esc_reversed_[i]) {
+      esc_reversed_[i] = escs_[i].reversed();
+      world_.plant().set_output_reversed(static_cast<int>(i), esc_reversed_[i]);
+    }
   }
   world_.plant().set_engines(run);
   answered_ = true;
@@ -104,10 +109,12 @@ bool SimBoard::esc_answers(qr::EscAnswers& answers) {
   return true;
 }
 
-bool SimBoard::esc_command(uint8_t command) {
+bool SimBoard::esc_command(uint8_t command, uint8_t engines) {
   if (!dshot_) return false;
   bool all = true;
-  for (size_t i = 0; i < 4; ++i) all = sequencers_[i].request(command, engines_.value[i]) && all;
+  for (size_t i = 0; i < 4; ++i) {
+    if ((engines >> i & 1u) != 0) all = sequencers_[i].request(command, engines_.value[i]) && all;
+  }
   return all;
 }
 

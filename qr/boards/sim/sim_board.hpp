@@ -74,9 +74,10 @@ class SimBoard {
   // ---- qr::RadioBoard, qr::EscAnswerBoard, qr::EscCommandBoard ----
   bool radio_read(uint8_t& byte);
   bool esc_answers(qr::EscAnswers& answers);
-  // A DShot special command for every engine (with --esc dshot; false without, or while an engine
-  // turns): each engine's sequencer sends it in place of its next throttle frames.
-  bool esc_command(uint8_t command);
+  // A DShot special command for the engines of the mask, bit i engine i (with --esc dshot; false
+  // without, or while one of them turns): each one's sequencer sends it in place of its next
+  // throttle frames.
+  bool esc_command(uint8_t command, uint8_t engines);
 
   // ---- qr::I2cBoard ----
   using I2cBus = SimI2cBus;
@@ -158,6 +159,7 @@ class SimBoard {
   bool answered_ = false;
   drivers::DshotCommandSequencer sequencers_[4];
   std::array<SimEsc, 4> escs_{};
+  std::array<bool, 4> esc_reversed_{};  // what the plant was last told of each ESC's direction
   bool real_time_ = false;
   HostTiming host_;
   std::chrono::steady_clock::time_point wall_start_{};

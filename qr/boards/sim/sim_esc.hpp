@@ -2,7 +2,9 @@
 // board sent, decodes it as an ESC firmware does (a frame with a bad check is dropped and the
 // motor keeps the last good value; a special command leaves the motor as it is) and answers, as a
 // bidirectional ESC, with its motor's electrical period from the simulated rotor speed
-// (common/drivers/dshot.hpp, erpm.hpp; docs/drivers.md).
+// (common/drivers/dshot.hpp, erpm.hpp; docs/drivers.md). Of the commands it acts on the spin
+// direction, as BLHeli_32, Bluejay and AM32 do: "spin direction 1" or "2" (normal, reversed) and
+// "save settings" each take effect at their 6th frame in a row with the motor stopped.
 #pragma once
 
 #include <stdint.h>
@@ -10,6 +12,7 @@
 #include <cmath>
 
 #include <common/drivers/dshot.hpp>
+#include <common/drivers/dshot_commands.hpp>
 #include <common/drivers/erpm.hpp>
 
 namespace qrsim {
@@ -26,12 +29,22 @@ class SimEsc {
     ++accepted_;
     if (d.value == 0 || d.value >= drivers::kDshotThrottleMin) {
       engine_ = drivers::dshot_engine(d.value);
+      in_a_row_ = 0;  // a setting needs its frames in a row
     } else {
       ++commands_;
-      if (engine_ != 0) ++commands_while_turning_;  // an ESC ignores them; the flight must not send them
+      if (engine_ != 0) {
+        ++commands_while_turning_;  // an ESC ignores them; the flight must not send them
+      } else {
+        take_command(static_cast<uint8_t>(d.value));
+      }
     }
     return engine_;
   }
+
+  // The motor turns the other way than its wiring makes it turn (spin direction 2 set).
+  bool reversed() const { return reversed_; }
+  // The direction kept in the ESC's memory by its last "save settings" (2: reversed).
+  bool saved_reversed() const { return saved_reversed_; }
 
   // The answer to the frame: the electrical period of a motor turning at `rotor_rad_s` with
   // `pole_pairs`, as 21 line bits.
@@ -49,7 +62,21 @@ class SimEsc {
   uint64_t commands_while_turning() const { return commands_while_turning_; }
 
  private:
+  void take_command(uint8_t command) {
+    in_a_row_ = command == last_command_ ? static_cast<uint8_t>(in_a_row_ + 1) : uint8_t{1};
+    last_command_ = command;
+    if (in_a_row_ != drivers::dshot_repeats(command)) return;  // once, at the frame that completes it
+    using drivers::DshotCommand;
+    if (command == static_cast<uint8_t>(DshotCommand::spin_direction_1)) reversed_ = false;
+    if (command == static_cast<uint8_t>(DshotCommand::spin_direction_2)) reversed_ = true;
+    if (command == static_cast<uint8_t>(DshotCommand::save_settings)) saved_reversed_ = reversed_;
+  }
+
   uint16_t engine_ = 0;
+  uint8_t last_command_ = 0;
+  uint8_t in_a_row_ = 0;
+  bool reversed_ = false;
+  bool saved_reversed_ = false;
   uint64_t rejected_ = 0;
   uint64_t accepted_ = 0;
   uint64_t commands_ = 0;
