@@ -97,6 +97,7 @@ class FlightChain : public chain::DecimalReadouts<FlightChain<Num, SampleHz>> {
     pilot_.set_max_tilt(p.get(ParamId::max_tilt_mrad));
     mixer_.set_idle(p.get(ParamId::idle_level));
     mounting_ = chain::imu_mounting(p.get(ParamId::imu_orientation));
+    mounted_as_drawn_ = p.get(ParamId::imu_orientation) == 0;
   }
 
   // Latest sticks -> set-points (angles, yaw rate) and open-loop moments; every tick.
@@ -109,7 +110,7 @@ class FlightChain : public chain::DecimalReadouts<FlightChain<Num, SampleHz>> {
   // Task "filter": one raw sample, turned from the IMU board's axes into the body's
   // (imu_mounting.hpp), through the low-pass filters.
   void filter(const SensorSample& s) {
-    sample_ = chain::mounted(mounting_, s);
+    sample_ = mounted_as_drawn_ ? s : chain::mounted(mounting_, s);  // as drawn: no copy to turn
     filters_.update(sample_);
     for (int i = 0; i < 3; ++i) clipped_[i] += clips_[i].update(sample_.gyro[i]);
   }
@@ -429,8 +430,15 @@ class FlightChain : public chain::DecimalReadouts<FlightChain<Num, SampleHz>> {
     wrong_sign_ = chain::probe_signs(loops, mixer, mixer_.thrust_of_lift(chain::kProbeLift));
     monitor_.arm();
   }
-  // One tick of the wrong-way monitor, in its units: the last mix's moments, the rates now.
+  // One tick of the wrong-way monitor, in its units: the last mix's moments, the rates now. Judged
+  // only with the engines turning and the sticks asking for no motion (a rate the pilot asked
+  // for, braked as the stick comes back, is no wrong answer: sign_check.hpp); the conversions
+  // only then.
   [[gnu::noinline]] void watch_signs() {
+    const bool still = chain::magnitude(roll_target()) < kStillAngle &&
+                       chain::magnitude(pitch_target()) < kStillAngle &&
+                       chain::magnitude(yaw_rate_target()) < kStillRate;
+    if (!still || engines_.all_zero()) return;
     const int32_t moment[3] = {Num::round_to_int(moments_.roll), Num::round_to_int(moments_.pitch),
                                Num::round_to_int(moments_.yaw)};
     const int32_t rate[3] = {Num::round_to_int(fx::mul_wide(estimator_.p(), kThousand)),
@@ -438,7 +446,7 @@ class FlightChain : public chain::DecimalReadouts<FlightChain<Num, SampleHz>> {
                              Num::round_to_int(fx::mul_wide(estimator_.r(), kThousand))};
     const uint8_t loops = static_cast<uint8_t>((sources_.tilt != chain::Tilt::stick ? 3u : 0u) |
                                                (sources_.yaw != chain::Yaw::stick ? 4u : 0u));
-    const chain::SignAxis found = monitor_.update(moment, rate, loops, landed_.landed(), !engines_.all_zero());
+    const chain::SignAxis found = monitor_.update(moment, rate, loops, landed_.landed(), true);
     if (found != chain::SignAxis::none) wrong_sign_ = found;
   }
 
@@ -448,6 +456,8 @@ class FlightChain : public chain::DecimalReadouts<FlightChain<Num, SampleHz>> {
   Rate yaw_rate_target() const { return sources_.yaw == chain::Yaw::still ? Rate{} : pilot_.yaw_rate(); }
 
   static constexpr Count kThousand = Count(1000.0);
+  static constexpr Angle kStillAngle = Angle(0.05);  // 3 degrees of stick
+  static constexpr Rate kStillRate = Rate(0.1);
 
   static constexpr typename Num::Scale kDt = typename Num::Scale(1.0 / SampleHz);
 
@@ -478,6 +488,7 @@ class FlightChain : public chain::DecimalReadouts<FlightChain<Num, SampleHz>> {
   bool attitude_entered_ = false;  // full control entered: the next control_attitude() integrates
   bool yaw_entered_ = false;       // yaw or full control entered: the next control_yaw() integrates
   drivers::ChipToBody mounting_ = chain::kImuMountings[0];  // imu_orientation's row
+  bool mounted_as_drawn_ = true;
   chain::WrongWayMonitor monitor_;
   chain::SignAxis wrong_sign_ = chain::SignAxis::none;
 };
