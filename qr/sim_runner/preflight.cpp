@@ -60,7 +60,10 @@ void Preflight::upload(Pilot& pilot) const {
 }
 
 void Preflight::ask(wire::Mode mode, Pilot& pilot) {
-  if (mode == wire::Mode::calibration) calibration_asked_ = true;
+  if (mode == wire::Mode::calibration) {
+    calibration_asked_ = true;
+    text_at_ask_ = pilot.view().debug_text.size();
+  }
   requested_ = mode;
   pilot.request_mode(mode);
 }
@@ -74,11 +77,12 @@ bool Preflight::calibrated_on_ground(wire::Mode mode, const Pilot& pilot) const 
          !pilot.request_pending(wire::MessageType::param_set) && !pilot.request_pending(wire::MessageType::mode_change);
 }
 
-// Back in safe from the calibration it asked for, without the calibrated flag, nothing waiting.
+// Back in safe from the calibration it asked for, and the QR said it refused it (Flight's
+// say_calibration_verdict): the flag alone could lag the mode on a damaged line.
 bool Preflight::calibration_refused(wire::Mode mode, const Pilot& pilot) const {
   const ConsoleView& view = pilot.view();
   return calibrating_seen_ && mode == wire::Mode::safe && (view.flags & wire::kFlagCalibrated) == 0 &&
-         !pilot.request_pending(wire::MessageType::mode_change);
+         view.debug_text.find("calibration refused", text_at_ask_) != std::string::npos;
 }
 
 }  // namespace qrsim

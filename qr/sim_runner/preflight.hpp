@@ -5,6 +5,7 @@
 // came to share it.
 #pragma once
 
+#include <stddef.h>
 #include <stdint.h>
 
 #include <utility>
@@ -67,6 +68,7 @@ class Preflight {
   wire::Mode requested_ = wire::Mode::safe;
   bool calibration_asked_ = false;
   bool calibrating_seen_ = false;  // telemetry showed the calibration mode
+  size_t text_at_ask_ = 0;         // the QR's debug text so far when the calibration was asked for
 };
 
 }  // namespace qrsim

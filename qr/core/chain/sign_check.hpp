@@ -38,7 +38,10 @@ struct AxisMoments {
 
 constexpr AxisMoments moments_of(const EngineCommand& e) {
   int32_t w[4] = {};
-  for (int i = 0; i < 4; ++i) w[i] = static_cast<int32_t>(e.value[i]) * e.value[i];  // <= 10^6
+  for (int i = 0; i < 4; ++i) {
+    const int32_t v = e.value[i];
+    w[i] = v * v;  // <= 10^6
+  }
   return {{w[3] - w[1], w[0] - w[2], w[1] + w[3] - w[0] - w[2]}};
 }
 
