@@ -55,7 +55,8 @@ class CrsfParser {
   }
   template <class OnFrame>
   void push(uint8_t byte, OnFrame&& on_frame) {
-    push(&byte, 1, on_frame);
+    const uint8_t one[1] = {byte};  // an array of one: cppcheck took &byte for an object indexed past itself
+    push(one, 1, on_frame);
   }
 
   const CrsfCounters& counters() const { return counters_; }
