@@ -43,7 +43,8 @@ static_assert(kFlightTaskCount == wire::kTaskCount, "one wire task number per ro
 // bitwise CRC-24, about 600, and the parameter fan-out's divisions, 4002 with the landing's
 // descent rate among the parameters; the estimator's its restart from the
 // accelerometer, the safety machine's a mode announcement, the calibration's the run that
-// finishes: offsets, and the height reference's one division). The logger's is not measured by
+// finishes: offsets, the height reference's one division, and the sign probe's three mixes,
+// about 1350, once per calibration: sign_check.hpp). The logger's is not measured by
 // the bench (it has no log memory) and is an estimate. The rv32 test Devboard.TaskBudgetsHold
 // fails when a measured maximum exceeds its budget. Phases keep the divided tasks off each
 // other's ticks: the accelerometer angles fall on ticks 0 mod 4, the height estimate and the
@@ -54,7 +55,7 @@ inline constexpr Task<Flight> kFlightTaskTable[kFlightTaskCount] = {
     // name          run                                                   divider  phase  budget
     {wire::kTaskNames[kLinkTask], [](Flight& f) { f.run_link(); }, 1, 0, 5500},
     {wire::kTaskNames[kFilterTask], [](Flight& f) { f.run_filter(); }, 1, 0, 700},
-    {wire::kTaskNames[kCalibrationTask], [](Flight& f) { f.run_calibration(); }, 1, 0, 400},
+    {wire::kTaskNames[kCalibrationTask], [](Flight& f) { f.run_calibration(); }, 1, 0, 1600},
     {wire::kTaskNames[kAccelAnglesTask], [](Flight& f) { f.chain().estimate_accel_angles(); },
      Flight::ChainType::kAccelDivider, 0, 1000},
     {wire::kTaskNames[kEstimatorTask], [](Flight& f) { f.chain().estimate(); }, 1, 0, 1500},
