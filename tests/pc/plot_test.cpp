@@ -58,18 +58,7 @@ TEST(StreamSession, SamplesReachThePlotAndTheCsvWithUnitsInTheColumnNames) {
                                                auto out = files.open(name);
                                                return out;
                                              }});
-  for (const wire::ObservableSpec& spec : wire::kObservableTable) {
-    const uint8_t id = static_cast<uint8_t>(spec.id);
-    session.on(wire::ObservableInfo{id, wire::kObservableCount, spec.type, spec.scale, 1000});
-    const std::string text = std::string(spec.name) + " " + spec.unit;
-    for (uint8_t part = 0; part * 7u <= text.size(); ++part) {
-      wire::ObservableText piece;
-      piece.id = id;
-      piece.part = part;
-      for (size_t i = 0; i < 7 && part * 7u + i < text.size(); ++i) piece.text[i] = text[part * 7u + i];
-      session.on(piece);
-    }
-  }
+  send_observable_table(session);
   session.pick("phi p nothing");
   EXPECT_EQ(session.plot().traces().size(), 2u);
   ASSERT_FALSE(notes.empty());
