@@ -112,8 +112,8 @@ class SafetyMachine {
   // The modes entered since the last call, one bit per mode (1 << index(mode)), then cleared.
   // Every transition goes through one place that sets its bit; the owner's one door
   // (Flight::change_modes) gives the chain the mode's sources and runs its entry action.
-  uint8_t take_entered() {
-    const uint8_t entered = entered_;
+  uint16_t take_entered() {
+    const uint16_t entered = entered_;
     entered_ = 0;
     return entered;
   }
@@ -145,14 +145,16 @@ class SafetyMachine {
  private:
   void enter(Mode to) {
     mode_ = to;
-    entered_ = static_cast<uint8_t>(entered_ | (1u << index(to)));
+    entered_ = static_cast<uint16_t>(entered_ | (1u << index(to)));
   }
   void enter_panic(PanicCause cause, const Situation& s);
   NackReason refusal(Mode to, const Situation& s) const;
 
   SafetyLimits limits_;
   Mode mode_ = Mode::safe;
-  uint8_t entered_ = 0;
+  // A bit per mode: a uint8_t dropped the motor test's (mode 8), whose door then never opened.
+  uint16_t entered_ = 0;
+  static_assert(kModeCount <= 16, "entered_: one bit per mode");
   bool exit_pending_ = false;
   bool stopped_ = false;
   bool battery_warning_ = false;
