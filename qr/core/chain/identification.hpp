@@ -58,13 +58,14 @@ class IdentificationSequence {
   // x^7 + x^6 + 1, a maximal-length Fibonacci register (period 2^7 - 1 = 127).
   static constexpr uint8_t kSeed = 0x5B;
   void advance() {
-    const uint8_t bit = static_cast<uint8_t>(((register_ >> 6) ^ (register_ >> 5)) & 1u);
-    register_ = static_cast<uint8_t>(((register_ << 1) | bit) & 0x7Fu);
+    const uint32_t r = register_;
+    const uint32_t bit = ((r >> 6) ^ (r >> 5)) & 1u;
+    register_ = static_cast<uint8_t>(((r << 1) | bit) & 0x7Fu);
   }
 
   Thrust amplitude_[kAxes];
   uint32_t tick_ = kTicks;  // not started: done
-  uint8_t register_ = kSeed;
+  uint8_t register_ = kSeed;  // 7 bits
 };
 
 }  // namespace qr::chain
