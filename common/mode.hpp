@@ -62,7 +62,7 @@ inline constexpr ModeSpec kModeTable[] = {
     // mode switch has no position left for it: the console's key enters it.
     {Mode::acro, "acro", "acro", true, true, true, Mode::safe, false, ModeSwitch::none},
     // One engine at a low level for 2 s, on the bench with the propellers off, to find an engine on
-    // the wrong output or turning the wrong way (docs/safety.md rule 21). Its own request enters it
+    // the wrong output or turning the wrong way (docs/safety.md rule 22). Its own request enters it
     // (motor_test: which engine, how fast), never a mode change; it does not fly (no watchdog's
     // panic, no idle floor: it ends by itself, or at once, in safe).
     {Mode::motor_test, "motor test", "motor", false, false, false, Mode::safe, false, ModeSwitch::none},

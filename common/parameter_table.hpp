@@ -102,7 +102,7 @@ namespace wire {
       "rate it summed (docs/signal-chain.md); back to 0 when it ends, found or not. 0: a calibration at rest") \
   ROW(imu_orientation, 40, 0, 0, 7, 0, "mounting", \
       "how the IMU's board sits in the frame: 0 as drawn; 1, 2, 3 turned 90, 180, 270 deg clockwise seen from " \
-      "above; 4..7 the same, then upside down (qr/core/chain/imu_mounting.hpp); the orientation check finds it; " \
+      "above; 4..7 the same, then upside down (common/drivers/imu_mounting.hpp); the orientation check finds it; " \
       "changed in safe only, then calibrate again")
 
 enum class ParamId : uint8_t {

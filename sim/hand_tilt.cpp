@@ -1,6 +1,5 @@
 #include <sim/hand_tilt.hpp>
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -34,15 +33,7 @@ std::string hand_tilt_problem(const HandTiltSpec& spec) {
 }
 
 HandTilt::HandTilt(const Quat& start, const HandTiltSpec& spec, uint64_t start_us)
-    : start_(start), axis_(unit_of(spec.axis)), radians_(spec.degrees * kRadPerDeg), start_us_(start_us),
-      end_us_(start_us + static_cast<uint64_t>(std::llround(spec.seconds * 1e6))) {
-  // On the clock's whole microseconds, so the profile ends exactly at end_us_.
-  third_s_ = static_cast<double>(end_us_ - start_us_) * 1e-6 / 3;
-}
-
-double HandTilt::elapsed_s(uint64_t now_us) const {
-  if (now_us <= start_us_) return 0;
-  return static_cast<double>(std::min(now_us, end_us_) - start_us_) * 1e-6;
+    : HandHold(start, spec.axis, spec.seconds, start_us), radians_(spec.degrees * kRadPerDeg), third_s_(seconds() / 3) {
 }
 
 double HandTilt::angle(uint64_t now_us) const {
@@ -60,11 +51,6 @@ Vec3 HandTilt::rate(uint64_t now_us) const {
   if (t < third_s_) return axis_ * (peak * std::sin(std::numbers::pi * t / third_s_));
   if (t < 2 * third_s_) return {};
   return axis_ * (-peak * std::sin(std::numbers::pi * (t - 2 * third_s_) / third_s_));
-}
-
-Quat HandTilt::attitude(uint64_t now_us) const {
-  if (done(now_us)) return start_;
-  return turned_about(start_, axis_, angle(now_us));
 }
 
 }  // namespace sim

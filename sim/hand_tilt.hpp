@@ -29,7 +29,7 @@ double hand_tilt_peak_rate(const HandTiltSpec& spec);
 // turn: kMinHandTurnSeconds .. kMaxHandTurnSeconds, kMaxHandTurnRate), otherwise what is wrong.
 std::string hand_tilt_problem(const HandTiltSpec& spec);
 
-class HandTilt {
+class HandTilt : public HandHold {
  public:
   // From the vehicle's attitude `start` at `start_us`, the tilt `spec` (which keeps the limits).
   HandTilt(const Quat& start, const HandTiltSpec& spec, uint64_t start_us);
@@ -40,17 +40,10 @@ class HandTilt {
   double angle(uint64_t now_us) const;
   Vec3 rate(uint64_t now_us) const;
   // start (x) rotation(axis, angle); at the end exactly `start` again.
-  Quat attitude(uint64_t now_us) const;
-  bool done(uint64_t now_us) const { return now_us >= end_us_; }
+  Quat attitude(uint64_t now_us) const { return attitude_at(now_us, angle(now_us)); }
 
  private:
-  double elapsed_s(uint64_t now_us) const;
-
-  Quat start_;
-  Vec3 axis_;
   double radians_;
-  uint64_t start_us_;
-  uint64_t end_us_;
   double third_s_;
 };
 

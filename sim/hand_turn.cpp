@@ -54,33 +54,25 @@ bool body_axis_from_text(const std::string& text, BodyAxis& axis) {
   return false;
 }
 
-HandTurn::HandTurn(const Quat& start, const HandTurnSpec& spec, uint64_t start_us)
-    : start_(start), axis_(unit_of(spec.axis)), turns_(spec.turns), start_us_(start_us),
-      end_us_(start_us + static_cast<uint64_t>(std::llround(spec.seconds * 1e6))) {
-  // The duration on the clock's whole microseconds, so the profile ends exactly at end_us_.
-  seconds_ = static_cast<double>(end_us_ - start_us_) * 1e-6;
-}
+HandHold::HandHold(const Quat& start, BodyAxis axis, double seconds, uint64_t start_us)
+    : start_(start), axis_(unit_of(axis)), start_us_(start_us),
+      end_us_(start_us + static_cast<uint64_t>(std::llround(seconds * 1e6))) {}
 
-double HandTurn::elapsed_s(uint64_t now_us) const {
+double HandHold::elapsed_s(uint64_t now_us) const {
   if (now_us <= start_us_) return 0;
   return static_cast<double>(std::min(now_us, end_us_) - start_us_) * 1e-6;
 }
 
 double HandTurn::angle(uint64_t now_us) const {
   if (done(now_us)) return kTwoPi * turns_;
-  const double phase = kTwoPi * elapsed_s(now_us) / seconds_;
+  const double phase = kTwoPi * elapsed_s(now_us) / seconds();
   return turns_ * (phase - std::sin(phase));
 }
 
 Vec3 HandTurn::rate(uint64_t now_us) const {
   if (done(now_us)) return {};
-  const double phase = kTwoPi * elapsed_s(now_us) / seconds_;
-  return axis_ * (kTwoPi * turns_ / seconds_ * (1 - std::cos(phase)));
-}
-
-Quat HandTurn::attitude(uint64_t now_us) const {
-  if (done(now_us)) return start_;
-  return turned_about(start_, axis_, angle(now_us));
+  const double phase = kTwoPi * elapsed_s(now_us) / seconds();
+  return axis_ * (kTwoPi * turns_ / seconds() * (1 - std::cos(phase)));
 }
 
 Vec3 held_specific_force(const Quat& attitude, double gravity) { return rotate_inverse(attitude, {0, 0, -gravity}); }

@@ -40,29 +40,44 @@ Vec3 unit_of(BodyAxis axis);
 // `start` turned by `angle` rad about the body's unit vector `axis`: start (x) rotation(axis, angle).
 Quat turned_about(const Quat& start, const Vec3& axis, double angle);
 
-class HandTurn {
+// What a hand holding the vehicle shares, whatever it does with it (a turn here, a tilt in
+// hand_tilt.hpp): where it took the vehicle, the body axis it moves it about, and when it lets go.
+class HandHold {
+ public:
+  bool done(uint64_t now_us) const { return now_us >= end_us_; }
+  uint64_t end_us() const { return end_us_; }
+
+ protected:
+  // The hold's `seconds` on the clock's whole microseconds, so a profile ends exactly at end_us().
+  HandHold(const Quat& start, BodyAxis axis, double seconds, uint64_t start_us);
+  double seconds() const { return static_cast<double>(end_us_ - start_us_) * 1e-6; }
+  double elapsed_s(uint64_t now_us) const;
+  // start (x) rotation(axis, angle) while held; at the end exactly `start` again.
+  Quat attitude_at(uint64_t now_us, double angle) const {
+    return done(now_us) ? start_ : turned_about(start_, axis_, angle);
+  }
+
+  Quat start_;
+  Vec3 axis_;
+  uint64_t start_us_;
+  uint64_t end_us_;
+};
+
+class HandTurn : public HandHold {
  public:
   // From the vehicle's attitude `start` at `start_us`, the turn `spec` (which keeps the limits).
-  HandTurn(const Quat& start, const HandTurnSpec& spec, uint64_t start_us);
+  HandTurn(const Quat& start, const HandTurnSpec& spec, uint64_t start_us)
+      : HandHold(start, spec.axis, spec.seconds, start_us), turns_(spec.turns) {}
 
   // The angle turned, rad, and the body rate, rad/s, at `now_us`: a raised-cosine rate, zero at
   // both ends, theta(t) = 2 pi N (t/S - sin(2 pi t/S) / (2 pi)).
   double angle(uint64_t now_us) const;
   Vec3 rate(uint64_t now_us) const;
   // start (x) rotation(axis, angle); at the end exactly `start` again.
-  Quat attitude(uint64_t now_us) const;
-  bool done(uint64_t now_us) const { return now_us >= end_us_; }
-  uint64_t end_us() const { return end_us_; }
+  Quat attitude(uint64_t now_us) const { return attitude_at(now_us, angle(now_us)); }
 
  private:
-  double elapsed_s(uint64_t now_us) const;
-
-  Quat start_;
-  Vec3 axis_;
   double turns_;
-  uint64_t start_us_;
-  uint64_t end_us_;
-  double seconds_;
 };
 
 // What an accelerometer at the centre of mass of a body held still against gravity reads: the

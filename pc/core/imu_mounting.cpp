@@ -3,13 +3,6 @@
 namespace qrterm {
 namespace {
 
-constexpr AxisMatrix kIdentity = {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
-// The board turned 90 deg clockwise seen from above (about the body's z, which points down): its
-// X arrow along the body's y, its Y arrow along the body's -x, so board = (v_y, -v_x, v_z).
-constexpr AxisMatrix kQuarterTurn = {{{0, 1, 0}, {-1, 0, 0}, {0, 0, 1}}};
-// Turned over about its own X arrow: its Y and Z read the other way.
-constexpr AxisMatrix kTurnedOver = {{{1, 0, 0}, {0, -1, 0}, {0, 0, -1}}};
-
 constexpr const char* kAxisNames[] = {"roll", "pitch", "yaw"};
 
 AxisMatrix product(const AxisMatrix& a, const AxisMatrix& b) {
@@ -38,10 +31,13 @@ int determinant(const AxisMatrix& a) {
 
 }  // namespace
 
+// The table's row says body axis i is sign[i] x board axis chip_axis[i]: the body from the board;
+// a rotation's inverse is its transpose.
 AxisMatrix board_from_body(int orientation) {
-  AxisMatrix m = kIdentity;
-  for (int k = 0; k < orientation % 4; ++k) m = product(kQuarterTurn, m);
-  return orientation >= 4 ? product(kTurnedOver, m) : m;
+  const drivers::ChipToBody& row = drivers::imu_mounting(orientation);
+  AxisMatrix body_from_board{};
+  for (size_t i = 0; i < 3; ++i) body_from_board[i][row.chip_axis[i]] = row.sign[i];
+  return transposed(body_from_board);
 }
 
 // The firmware turns the board's axes back into the body's by the inverse of in_force's mounting.

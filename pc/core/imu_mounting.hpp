@@ -1,8 +1,7 @@
-// The eight ways the IMU's board may sit in the frame (parameter imu_orientation; the firmware's
-// table is qr/core/chain/imu_mounting.hpp, which the console may not include: it is built here
-// from the same words, and a test holds the two equal), and which of them explains what the QR
-// reported while the vehicle was tilted right, nose up and turned right by hand (docs/console.md,
-// "The orientation check").
+// The eight ways the IMU's board may sit in the frame (parameter imu_orientation: the table the
+// firmware undoes them by, common/drivers/imu_mounting.hpp), as matrices, and which of them
+// explains what the QR reported while the vehicle was tilted right, nose up and turned right by
+// hand (docs/console.md, "The orientation check").
 //
 //   0 as docs/conventions.md draws it; 1, 2, 3: turned 90, 180, 270 degrees clockwise seen from
 //   above; 4..7: the same, then turned over about the board's own X arrow (upside down).
@@ -11,9 +10,11 @@
 #include <array>
 #include <string>
 
+#include <common/drivers/imu_mounting.hpp>
+
 namespace qrterm {
 
-inline constexpr int kImuOrientations = 8;
+inline constexpr int kImuOrientations = drivers::kImuOrientations;
 
 // A signed permutation of the three axes: row r, column c is +1 or -1 where axis r of one frame
 // is axis c of the other, else 0. Axes 0, 1, 2: x (roll), y (pitch), z (yaw).

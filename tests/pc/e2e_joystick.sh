@@ -16,17 +16,11 @@ e2e_start
 fifo=$work/js0
 mkfifo "$fifo"
 
-# struct js_event { u32 time; s16 value; u8 type; u8 number; }, little-endian, to fd 7.
-js() {
-  local type=$1 number=$2 value=$(($3 & 0xFFFF))
-  printf "$(printf '\\x00\\x00\\x00\\x00\\x%02x\\x%02x\\x%02x\\x%02x' $((value & 0xFF)) $((value >> 8)) "$type" "$number")" >&7
-}
-readonly AXIS=0x02 BUTTON=0x01 INIT=0x80
-throttle() { js $AXIS 3 "$1"; }  # the default map: axis 3, inverted (+32767 closed)
+throttle() { js_event $AXIS 3 "$1"; }  # the default map: axis 3, inverted (+32767 closed)
 initial_state() {
-  for axis in 0 1 2; do js $((AXIS | INIT)) "$axis" 0; done
-  js $((AXIS | INIT)) 3 32767
-  js $((BUTTON | INIT)) 0 0
+  for axis in 0 1 2; do js_event $((AXIS | INIT)) "$axis" 0; done
+  js_event $((AXIS | INIT)) 3 32767
+  js_event $((BUTTON | INIT)) 0 0
 }
 
 # Opened read-write, the FIFO does not wait for a reader; what is written waits in it for qrterm.
@@ -49,8 +43,8 @@ wait_for 'MODE +manual ' 3 "manual with the joystick neutral"
 throttle 0
 wait_for 'sending +lift +473 ' 2 "the throttle is the lift"
 
-js $BUTTON 0 1
-js $BUTTON 0 0
+js_event $BUTTON 0 1
+js_event $BUTTON 0 0
 wait_for 'ABORT \(joystick fire button\)' 2 "fire aborts"
 wait_for 'MODE +panic ' 2 "panic"
 throttle 32767

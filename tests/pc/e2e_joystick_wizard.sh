@@ -18,19 +18,13 @@ fifo=$work/js0
 map=$work/joystick.txt
 mkfifo "$fifo"
 
-# One js_event { u32 time; s16 value; u8 type; u8 number; }, little-endian, to descriptor 7.
-event() {
-  local type=$1 number=$2 value=$(($3 & 0xFFFF))
-  printf "$(printf '\\x00\\x00\\x00\\x00\\x%02x\\x%02x\\x%02x\\x%02x' $((value & 0xFF)) $((value >> 8)) "$type" "$number")" >&7
-}
-readonly AXIS=0x02 BUTTON=0x01 INIT=0x80
-axis() { for value in "${@:2}"; do event $AXIS "$1" "$value"; done; }
+axis() { for value in "${@:2}"; do js_event $AXIS "$1" "$value"; done; }
 plugged_in() {
-  event $((AXIS | INIT)) 0 0
-  event $((AXIS | INIT)) 1 983
-  event $((AXIS | INIT)) 2 32767
-  event $((AXIS | INIT)) 3 0
-  for button in 0 1 2 3; do event $((BUTTON | INIT)) "$button" 0; done
+  js_event $((AXIS | INIT)) 0 0
+  js_event $((AXIS | INIT)) 1 983
+  js_event $((AXIS | INIT)) 2 32767
+  js_event $((AXIS | INIT)) 3 0
+  for button in 0 1 2 3; do js_event $((BUTTON | INIT)) "$button" 0; done
 }
 
 exec 7<>"$fifo"  # read-write: the FIFO does not wait for a reader, and what is written waits for qrterm
@@ -57,8 +51,8 @@ axis 2 0 -32767 32767
 wait_for 'found: axis 2, moved -32767\.\.32767, reads - \(inverted\)' 2 "lift: axis 2, idle at +32767"
 keys Enter
 wait_for 'Step 6 of 6: fire' 2 "fire"
-event $BUTTON 2 1
-event $BUTTON 2 0
+js_event $BUTTON 2 1
+js_event $BUTTON 2 0
 wait_for 'deadband 60 per mille' 2 "review: the deadband"
 wait_for '^ +twice the 30 per mille roll read at rest' 1 "from roll resting at +983"
 wait_for 'Enter: write ' 1 "nothing refused"
@@ -89,8 +83,8 @@ wait_for 'MODE +manual ' 3 "manual"
 axis 2 0
 axis 0 -32767
 wait_for 'sending +lift +468 +roll +\+0 +pitch +\+1000 ' 2 "half throttle is lift 468, pulled back is pitch +1000"
-event $BUTTON 2 1
-event $BUTTON 2 0
+js_event $BUTTON 2 1
+js_event $BUTTON 2 0
 wait_for 'ABORT \(joystick fire button\)' 2 "button 2 aborts"
 exit_and_check_terminal
 echo "e2e: passed"

@@ -81,3 +81,11 @@ exit_and_check_terminal() {
   cmp -s "$work/stty.before" "$work/stty.after" || fail "terminal settings not restored"
   echo "e2e: ok: terminal restored"
 }
+
+# The joystick tests' FIFO standing in for /dev/input/js0: one struct js_event { u32 time;
+# s16 value; u8 type; u8 number; }, little-endian, written to descriptor 7.
+readonly AXIS=0x02 BUTTON=0x01 INIT=0x80
+js_event() {
+  local type=$1 number=$2 value=$(($3 & 0xFFFF))
+  printf "$(printf '\\x00\\x00\\x00\\x00\\x%02x\\x%02x\\x%02x\\x%02x' $((value & 0xFF)) $((value >> 8)) "$type" "$number")" >&7
+}

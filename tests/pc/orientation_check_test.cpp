@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
+#include <common/drivers/imu_mounting.hpp>
 #include <pc/core/imu_mounting.hpp>
 #include <pc/core/orientation_check.hpp>
-#include <qr/core/chain/imu_mounting.hpp>
 #include <sim/wiring.hpp>
 
 namespace {
@@ -25,8 +25,8 @@ using qrterm::MountingVerdict;
 
 // What the QR reports of a motion about each body axis for an IMU mounted as the simulator mounts
 // it (sim/wiring.hpp) and corrected by the firmware's table row `in_force`
-// (qr/core/chain/imu_mounting.hpp): three pieces of code written apart, none of them the
-// console's.
+// (common/drivers/imu_mounting.hpp): written apart from each other and from the console's
+// inference.
 std::array<AxisAnswer, 3> answers_of(const sim::Wiring& wiring, int in_force) {
   std::array<AxisAnswer, 3> answers;
   for (size_t step = 0; step < 3; ++step) {
@@ -34,7 +34,7 @@ std::array<AxisAnswer, 3> answers_of(const sim::Wiring& wiring, int in_force) {
     (step == 0 ? motion.x : step == 1 ? motion.y : motion.z) = 1;
     const sim::Vec3 board = sim::imu_gyro_axes(wiring, motion);
     const double board_axes[] = {board.x, board.y, board.z};
-    const drivers::ChipToBody& row = qr::chain::kImuMountings[in_force];
+    const drivers::ChipToBody& row = drivers::kImuMountings[in_force];
     for (int i = 0; i < 3; ++i) {
       const double reported = row.sign[i] * board_axes[row.chip_axis[i]];
       if (reported != 0) answers[step] = AxisAnswer{i, reported > 0 ? 1 : -1};
@@ -50,12 +50,12 @@ sim::Wiring mounted(int orientation) {
   return wiring;
 }
 
-// The console builds the mountings from their words; the firmware has them as a table. Row m of
-// the table turns board m's axes back into the body's: it must be the inverse of board_from_body(m).
+// The console's matrices are the table's rows turned round: row m turns board m's axes back into
+// the body's, board_from_body(m) is its inverse.
 TEST(ImuMounting, TheConsolesMountingsAreTheFirmwaresTable) {
   for (int m = 0; m < qrterm::kImuOrientations; ++m) {
     const qrterm::AxisMatrix board = qrterm::board_from_body(m);
-    const drivers::ChipToBody& row = qr::chain::kImuMountings[m];
+    const drivers::ChipToBody& row = drivers::kImuMountings[m];
     for (size_t body = 0; body < 3; ++body) {
       for (size_t b = 0; b < 3; ++b) {
         const int table = b == row.chip_axis[body] ? row.sign[body] : 0;

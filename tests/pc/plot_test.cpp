@@ -14,28 +14,14 @@
 #include <pc/core/plot_canvas.hpp>
 #include <pc/core/stream_session.hpp>
 
+#include "observable_table_feed.hpp"
+
 namespace qrterm {
 namespace {
 
-// The QR's rows as it sends them: info, then "name unit" in pieces of 7 with a NUL at the end.
-void send_table(ObservableCatalog& catalog) {
-  for (const wire::ObservableSpec& spec : wire::kObservableTable) {
-    const uint8_t id = static_cast<uint8_t>(spec.id);
-    catalog.on(wire::ObservableInfo{id, wire::kObservableCount, spec.type, spec.scale, 1000});
-    const std::string text = std::string(spec.name) + " " + spec.unit;
-    for (uint8_t part = 0; part * 7u <= text.size(); ++part) {
-      wire::ObservableText piece;
-      piece.id = id;
-      piece.part = part;
-      for (size_t i = 0; i < 7 && part * 7u + i < text.size(); ++i) piece.text[i] = text[part * 7u + i];
-      catalog.on(piece);
-    }
-  }
-}
-
 TEST(ObservableCatalog, LearnsEveryRowIncludingTextsOfSevenCharactersExactly) {
   ObservableCatalog catalog;
-  send_table(catalog);
+  send_observable_table(catalog);
   ASSERT_TRUE(catalog.complete());
   // "accel_x counts" is 14 characters: two full parts and an empty last one.
   const auto id = catalog.find("accel_x");
@@ -72,18 +58,7 @@ TEST(StreamSession, SamplesReachThePlotAndTheCsvWithUnitsInTheColumnNames) {
                                                auto out = files.open(name);
                                                return out;
                                              }});
-  for (const wire::ObservableSpec& spec : wire::kObservableTable) {
-    const uint8_t id = static_cast<uint8_t>(spec.id);
-    session.on(wire::ObservableInfo{id, wire::kObservableCount, spec.type, spec.scale, 1000});
-    const std::string text = std::string(spec.name) + " " + spec.unit;
-    for (uint8_t part = 0; part * 7u <= text.size(); ++part) {
-      wire::ObservableText piece;
-      piece.id = id;
-      piece.part = part;
-      for (size_t i = 0; i < 7 && part * 7u + i < text.size(); ++i) piece.text[i] = text[part * 7u + i];
-      session.on(piece);
-    }
-  }
+  send_observable_table(session);
   session.pick("phi p nothing");
   EXPECT_EQ(session.plot().traces().size(), 2u);
   ASSERT_FALSE(notes.empty());

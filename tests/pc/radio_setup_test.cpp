@@ -13,6 +13,8 @@
 #include <pc/core/radio_setup.hpp>
 #include <pc/core/stream_session.hpp>
 
+#include "observable_table_feed.hpp"
+
 namespace qrterm {
 namespace {
 
@@ -103,21 +105,6 @@ TEST(RadioSetup, TheEndsAreTheLowestAndHighestSinceTheScreenOpened) {
 
 // --- the streams: four of four channels while the screen is open, the plot's back after.
 
-void send_table(StreamSession& session) {
-  for (const wire::ObservableSpec& spec : wire::kObservableTable) {
-    const uint8_t id = static_cast<uint8_t>(spec.id);
-    session.on(wire::ObservableInfo{id, wire::kObservableCount, spec.type, spec.scale, 1000});
-    const std::string text = std::string(spec.name) + " " + spec.unit;
-    for (uint8_t part = 0; part * 7u <= text.size(); ++part) {
-      wire::ObservableText piece;
-      piece.id = id;
-      piece.part = part;
-      for (size_t i = 0; i < 7 && part * 7u + i < text.size(); ++i) piece.text[i] = text[part * 7u + i];
-      session.on(piece);
-    }
-  }
-}
-
 // The stream requests the session put on the line since the last call.
 std::vector<wire::StreamRequest> requests_sent(LinkSession& link) {
   std::vector<wire::StreamRequest> out;
@@ -138,7 +125,7 @@ struct RadioStreams : ::testing::Test {
   LinkSession link{0, 1};
 
   RadioStreams() {
-    send_table(session);
+    send_observable_table(session);
     session.tick(link, 0);
     link.output().clear();
   }

@@ -106,11 +106,6 @@ struct EscDirectionSafety : test::FakeFlight<> {
       receive();
     }
   }
-  std::string debug_text() const {
-    std::string s;
-    for (const auto& d : got<wire::DebugText>()) s.append(d.text, d.length());
-    return s;
-  }
   static constexpr uint8_t kSpinDirection2 = static_cast<uint8_t>(drivers::DshotCommand::spin_direction_2);
   static constexpr uint8_t kSave = static_cast<uint8_t>(drivers::DshotCommand::save_settings);
 };

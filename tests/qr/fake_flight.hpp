@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
 #include <vector>
 
 #include <common/messages.hpp>
@@ -63,6 +64,12 @@ struct FakeFlight : ::testing::Test {
       if (f.type == M::kType && wire::decode(f, m)) out.push_back(m);
     }
     return out;
+  }
+  // The debug text the QR sent, joined.
+  std::string debug_text() const {
+    std::string s;
+    for (const auto& d : got<wire::DebugText>()) s.append(d.text, d.length());
+    return s;
   }
 };
 

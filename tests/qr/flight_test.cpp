@@ -28,11 +28,6 @@ struct FlightTest : test::FakeFlight<> {
       receive();
     }
   }
-  std::string debug_text() const {
-    std::string s;
-    for (const auto& d : got<wire::DebugText>()) s.append(d.text, d.length());
-    return s;
-  }
   void calibrate() {
     request_mode(Mode::calibration);
     run_ms(50);

@@ -10,11 +10,12 @@
 //   report's controller: a sign lost in a loop or in the mixer, which no sensor can show on the
 //   ground.
 // - The wrong-way monitor, in the first flight after a calibration, from the engines' start
-//   until 0.2 s after the take-off: on each axis the loops fly, the loops pushing against the
+//   until 1 s after the take-off: on each axis the loops fly, the loops pushing against the
 //   measured rate for most of 20 ms while that rate still grows is a vehicle that answers the
 //   wrong way. Judged only while the sticks ask for no motion (set-points within 3 degrees and
-//   0.1 rad/s, as at a take-off): a rate the pilot asked for, braked as the stick comes back, is not. Two such 20 ms blocks in a row on one axis are the verdict. This sees what only
-//   the air shows: the wiring and the mounting (the probe trusts the geometry it was written for).
+//   0.1 rad/s, as at a take-off): a rate the pilot asked for, braked as the stick comes back, is
+//   not. Two such 20 ms blocks in a row on one axis are the verdict. This sees what only the air
+//   shows: the wiring and the mounting (the probe trusts the geometry it was written for).
 //
 // A verdict names its axis; the safety machine refuses yaw and full control on it, or in the air
 // cuts the engines at once (safety.cpp).
