@@ -166,7 +166,6 @@ std::string text(const char* format, double a, double b = 0) {
 // Why the record cannot be fitted, before any fitting ("" if it can).
 std::string record_problem(const AxisRecord& r, const Problem& p) {
   using B = FitBounds;
-  if (!(r.sample_hz > 0) || !std::isfinite(r.sample_hz)) return "the sample rate is not a positive number";
   if (r.moment.size() != r.rate.size()) return "the moment and the rate differ in length";
   for (std::size_t k = 0; k < r.moment.size(); ++k) {
     if (!std::isfinite(r.moment[k]) || !std::isfinite(r.rate[k])) return "a sample is not a number";
@@ -228,13 +227,16 @@ std::optional<AxisModel> fit_axis(const AxisRecord& record, std::string* why_not
     if (why_not != nullptr) *why_not = why;
     return std::nullopt;
   };
+  if (!(record.sample_hz > 0) || !std::isfinite(record.sample_hz)) {
+    return refuse("the sample rate is not a positive number");
+  }
   Problem p{record,
             butterworth_lowpass(record.filter_cutoff_hz, record.sample_hz),
             butterworth_lowpass(kSmoothingHz, record.sample_hz),
             {},
             {},
             0};
-  p.first = static_cast<std::size_t>(FitBounds::kSettleS * std::max(record.sample_hz, 0.0));
+  p.first = static_cast<std::size_t>(FitBounds::kSettleS * record.sample_hz);
   const std::string problem = record_problem(record, p);
   if (!problem.empty()) return refuse(problem);
 

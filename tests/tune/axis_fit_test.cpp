@@ -119,10 +119,12 @@ TEST(TuneFit, RefusesABrokenRecord) {
   EXPECT_FALSE(fit_axis(not_a_number, &why).has_value());
   EXPECT_NE(why.find("not a number"), std::string::npos) << why;
 
-  AxisRecord no_rate = good;
-  no_rate.sample_hz = 0;
-  EXPECT_FALSE(fit_axis(no_rate, &why).has_value());
-  EXPECT_NE(why.find("sample rate"), std::string::npos) << why;
+  for (double hz : {0.0, -1000.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+    AxisRecord no_rate = good;
+    no_rate.sample_hz = hz;
+    EXPECT_FALSE(fit_axis(no_rate, &why).has_value()) << hz;
+    EXPECT_NE(why.find("sample rate"), std::string::npos) << why;
+  }
 
   // The gyro's sign flipped (an IMU mounted the other way, the orientation not set).
   AxisRecord flipped = good;
