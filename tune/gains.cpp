@@ -76,6 +76,15 @@ RollPitchGains default_roll_pitch_gains() {
 
 YawGains default_yaw_gains() { return {default_of(ParamId::yaw_p), default_of(ParamId::yaw_i)}; }
 
+RollPitchGains roll_pitch_gains(const wire::ParameterValues& table) {
+  const auto in = [&](ParamId id) { return value_of(id, table.get(id)); };
+  return {in(ParamId::roll_pitch_p1), in(ParamId::roll_pitch_p2), in(ParamId::roll_pitch_i), in(ParamId::roll_pitch_d)};
+}
+
+YawGains yaw_gains(const wire::ParameterValues& table) {
+  return {value_of(ParamId::yaw_p, table.get(ParamId::yaw_p)), value_of(ParamId::yaw_i, table.get(ParamId::yaw_i))};
+}
+
 GainRange range_of(wire::ParamId id) {
   const wire::ParameterSpec& spec = spec_of(id);
   return {value_of(id, spec.min), value_of(id, spec.max)};

@@ -46,6 +46,9 @@ YawGains flown(const YawGains& gains);
 // The parameter table's defaults.
 RollPitchGains default_roll_pitch_gains();
 YawGains default_yaw_gains();
+// The gains a parameter table flies.
+RollPitchGains roll_pitch_gains(const wire::ParameterValues& table);
+YawGains yaw_gains(const wire::ParameterValues& table);
 
 // A parameter's range in its unit (for the design's search).
 struct GainRange {
