@@ -74,7 +74,7 @@ inline constexpr ActionSpec kActions[] = {
     {Action::mode_yaw_control, "mode yaw control"},
     {Action::mode_full_control, "mode full control"},
     {Action::mode_acro, "mode acro"},
-    {Action::mode_autotune, "autotune (from full control)"},
+    {Action::mode_autotune, "autotune"},
     {Action::motor_test, "motor test (bench)"},
     {Action::height_hold, "height hold on/off"},
     {Action::lift_up, "lift up"},
