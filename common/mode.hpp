@@ -11,7 +11,7 @@ namespace wire {
 // IN4073 numbers its height mode 7, after a raw mode (6) this project does not have. The numbers
 // here stay dense, because every table of modes (this one, the QR's task sets, the console's) is
 // indexed by them: height hold is 6, acro (issue 31's worked example of adding a mode,
-// docs/architecture.md) 7, the motor test 8.
+// docs/architecture.md) 7, the motor test 8, the autotune's identification flight 9.
 enum class Mode : uint8_t {
   safe = 0,
   panic = 1,
@@ -22,9 +22,10 @@ enum class Mode : uint8_t {
   height_hold = 6,
   acro = 7,
   motor_test = 8,
+  autotune = 9,
 };
 
-inline constexpr uint8_t kModeCount = 9;
+inline constexpr uint8_t kModeCount = 10;
 
 // The radio's mode switch (docs/safety.md rule 17): the position at which its arm switch arms a
 // mode. The switch has three positions (common/drivers/rc_sticks.hpp: RcSticks::mode_position 0,
@@ -65,6 +66,11 @@ inline constexpr ModeSpec kModeTable[] = {
     // (motor_test: which engine, how fast), never a mode change; it does not fly (no watchdog's
     // panic, no idle floor: it ends by itself, or at once, in safe).
     {Mode::motor_test, "motor test", "motor", false, false, false, Mode::safe, false, ModeSwitch::none},
+    // The autotune's identification flight (issue 34, docs/signal-chain.md): full control's loops
+    // hover the vehicle while a known moment is added to one axis at a time. Entered in flight from
+    // full control, where it returns when it is over, when a stick or the lift moves, when the tilt
+    // leaves its few degrees or the battery warns (docs/safety.md rule 23).
+    {Mode::autotune, "autotune", "autotune", true, true, true, Mode::full_control, false, ModeSwitch::none},
 };
 static_assert(sizeof(kModeTable) / sizeof(kModeTable[0]) == kModeCount, "one row per mode");
 
@@ -85,6 +91,9 @@ constexpr const ModeSpec& mode_spec(Mode mode) { return kModeTable[valid_mode(mo
 constexpr const char* mode_name(Mode mode) { return valid_mode(mode) ? mode_spec(mode).name : "?"; }
 constexpr const char* mode_key(Mode mode) { return valid_mode(mode) ? mode_spec(mode).key : "unknown"; }
 constexpr bool flies(Mode mode) { return mode_spec(mode).flies; }
+// Entered from full control, so in flight: height hold and the autotune. The pilot's request for
+// full control returns there, flying on.
+constexpr bool entered_in_flight(Mode mode) { return mode_spec(mode).entered_from == Mode::full_control; }
 
 // Whether the radio's arm switch arms `mode` (at some position of its mode switch).
 constexpr bool armed_by_the_radio(Mode mode) { return mode_spec(mode).armed_at != ModeSwitch::none; }

@@ -19,6 +19,7 @@ enum class Action : uint8_t {
   mode_yaw_control,
   mode_full_control,
   mode_acro,
+  mode_autotune,  // the identification flight, from full control (issue 34)
   motor_test,   // the motor test screen (in safe, propellers off)
   height_hold,  // toggles: height hold from full control, full control from height hold
   lift_up,
@@ -73,6 +74,7 @@ inline constexpr ActionSpec kActions[] = {
     {Action::mode_yaw_control, "mode yaw control"},
     {Action::mode_full_control, "mode full control"},
     {Action::mode_acro, "mode acro"},
+    {Action::mode_autotune, "autotune"},
     {Action::motor_test, "motor test (bench)"},
     {Action::height_hold, "height hold on/off"},
     {Action::lift_up, "lift up"},

@@ -25,6 +25,7 @@ constexpr ModeKey kModeKeys[] = {
     {Action::mode_yaw_control, wire::Mode::yaw_control},
     {Action::mode_full_control, wire::Mode::full_control},
     {Action::mode_acro, wire::Mode::acro},
+    {Action::mode_autotune, wire::Mode::autotune},
 };
 
 }  // namespace

@@ -31,6 +31,7 @@ inline constexpr KeyBinding kKeyMap[] = {
     {'5', Action::mode_full_control},
     {'7', Action::height_hold},  // IN4073's height mode key
     {'8', Action::mode_acro},    // after IN4073's keys: the rate loops alone
+    {'=', Action::mode_autotune},  // every letter and digit is taken (capitals fold to small ones)
     {'a', Action::lift_up},
     {'z', Action::lift_down},
     {kKeyPageUp, Action::lift_up_coarse},

@@ -278,6 +278,7 @@ class Flight {
     s.imu_healthy = sample_.health.imu;
     s.barometer_healthy = sample_.health.barometer;
     s.wrong_sign = static_cast<uint8_t>(chain_.wrong_sign());
+    s.identification_over = chain_.identification_over();
     return s;
   }
 

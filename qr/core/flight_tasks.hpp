@@ -150,6 +150,7 @@ inline constexpr chain::EngineSources kYawControl{Tilt::stick, Yaw::rate, Lift::
 inline constexpr chain::EngineSources kFullControl{Tilt::angle, Yaw::rate, Lift::stick};
 inline constexpr chain::EngineSources kHeightHold{Tilt::angle, Yaw::rate, Lift::hold};
 inline constexpr chain::EngineSources kAcro{Tilt::rate, Yaw::rate, Lift::stick};
+inline constexpr chain::EngineSources kAutotune{Tilt::angle, Yaw::rate, Lift::stick, chain::Excite::prbs};
 // A panic's cut: the loops fly the pilot's angles on the pilot's lift, as they did, while the
 // safety machine's hold and ramp override the engines; a panic that lands flies chain::kLanding.
 inline constexpr chain::EngineSources kCut = kFullControl;
@@ -169,10 +170,10 @@ inline constexpr FlightMode<Flight> kFlightModes[kModeCount] = {
     {Mode::yaw_control, task_sets::set(task_sets::kFlying), sources::kYawControl,
      [](Flight& f, Mode) { f.chain().enter_yaw_control(); }},
     // The attitude and yaw loops' integrals start empty, unless the vehicle comes back from height
-    // hold: it flew on, and the integrals hold its trim.
+    // hold or the autotune: it flew on, and the integrals hold its trim.
     {Mode::full_control, task_sets::set(task_sets::kFlying), sources::kFullControl,
      [](Flight& f, Mode from) {
-       if (from == Mode::height_hold) return;
+       if (wire::entered_in_flight(from)) return;
        f.chain().enter_attitude_control();
        f.chain().enter_yaw_control();
      }},
@@ -187,6 +188,10 @@ inline constexpr FlightMode<Flight> kFlightModes[kModeCount] = {
      }},
     // Safe's rows: no mixer runs; the safety machine gives the one engine its level.
     {Mode::motor_test, task_sets::set(task_sets::kSafe), chain::kOpenLoop, nullptr},
+    // Full control's loops, their integrals as they were, and the identification's sequence from
+    // its start.
+    {Mode::autotune, task_sets::set(task_sets::kFlying), sources::kAutotune,
+     [](Flight& f, Mode) { f.chain().enter_identification(); }},
 };
 
 // The distinct sets, each compiled once, and which of them each mode runs (modes_in_order and the

@@ -54,8 +54,9 @@ constexpr Guard kGuards[] = {
     // A height to hold needs the barometer's reference, made by the calibration.
     {NackReason::not_calibrated,
      [](Mode, Mode to, const Situation& s, const SafetyLimits&) { return rule(to).holds_height && !s.height_valid; }},
-    {NackReason::not_flying,
-     [](Mode, Mode to, const Situation& s, const SafetyLimits&) { return rule(to).holds_height && s.landed; }},
+    // A mode entered in flight needs the vehicle flying: a height to hold, a hover to excite.
+    {NackReason::not_flying, [](Mode, Mode to, const Situation& s,
+                                const SafetyLimits&) { return wire::entered_in_flight(to) && s.landed; }},
     // The height to hold is the barometer's (rule 20); full control does without it.
     {NackReason::barometer_fault, [](Mode, Mode to, const Situation& s,
                                      const SafetyLimits&) { return rule(to).holds_height && !s.barometer_healthy; }},
@@ -178,8 +179,8 @@ NackReason SafetyMachine::request(uint8_t wanted, const Situation& s) {
   if (to == Mode::motor_test) return NackReason::bad_value;
   if (to == mode_) return NackReason::none;
 
-  // The pilot's toggle out of height hold: back to full control, flying on.
-  if (mode_ == Mode::height_hold && to == Mode::full_control) {
+  // The pilot's toggle out of height hold or the autotune: back to full control, flying on.
+  if (wire::entered_in_flight(mode_) && to == Mode::full_control) {
     enter(to);
     return NackReason::none;
   }
@@ -195,7 +196,7 @@ NackReason SafetyMachine::request(uint8_t wanted, const Situation& s) {
 
   const NackReason refused = refusal(to, s);
   if (refused != NackReason::none) return refused;
-  held_lift_ = s.controls.lift;
+  held_ = s.controls;
   enter(to);
   return NackReason::none;
 }
@@ -247,7 +248,12 @@ void SafetyMachine::calibration_finished() {
 }
 
 void SafetyMachine::sticks_moved(const ControlInput& c) {
-  if (mode_ == Mode::height_hold && c.lift != held_lift_) enter(Mode::full_control);
+  if (mode_ == Mode::height_hold && c.lift != held_.lift) enter(Mode::full_control);
+  // The autotune flies the sticks it was entered with: any movement is the pilot taking over.
+  if (mode_ == Mode::autotune && (c.lift != held_.lift || c.roll != held_.roll || c.pitch != held_.pitch ||
+                                  c.yaw != held_.yaw)) {
+    enter(Mode::full_control);
+  }
   if (mode_ == Mode::motor_test && c.lift > 0) enter(Mode::safe);
 }
 
@@ -293,6 +299,13 @@ void SafetyMachine::supervise(const Situation& s) {
 
   // Height hold without its barometer: back to full control, where the pilot's lift flies (rule 20).
   if (mode_ == Mode::height_hold && !s.barometer_healthy) enter(Mode::full_control);
+
+  // The autotune ends in full control when its sequence is over, when its excitation has taken the
+  // vehicle beyond its few degrees, or when the battery warns (rule 23).
+  if (mode_ == Mode::autotune &&
+      (s.identification_over || s.tilt_mrad > limits_.autotune_tilt_mrad || battery_warning_)) {
+    enter(Mode::full_control);
+  }
 
   // The motor test ends by itself after its time, and at once when the pilot's link falls silent:
   // a console that can no longer stop it must not leave an engine turning (rule 22).

@@ -47,6 +47,7 @@ struct SafetyLimits {
   uint32_t battery_trip_us = 100000;     // the battery measure below the panic level this long: panic
   uint16_t battery_hysteresis_mv = 100;  // the warning ends only this far above its level
   uint32_t motor_test_us = 2000000;      // a motor test spins its engine this long (rule 22)
+  int32_t autotune_tilt_mrad = 140;      // the autotune's excitation ends beyond 8 degrees of tilt (rule 23)
 };
 
 // The limits the parameters say (the defaults when `p` is default-constructed).
@@ -72,6 +73,8 @@ struct Situation {
   // The sign check's verdict (chain/sign_check.hpp, rule 21): 0, or the axis (1 roll, 2 pitch,
   // 3 yaw) whose loop the vehicle answers the wrong way.
   uint8_t wrong_sign = 0;
+  // The autotune's identification sequence has ended (chain/identification.hpp).
+  bool identification_over = true;
 };
 
 class SafetyMachine {
@@ -119,7 +122,8 @@ class SafetyMachine {
   }
 
   // The pilot's sticks as each control frame brings them, before the chain uses them: any change
-  // of the lift ends height hold at once, back to full control.
+  // of the lift ends height hold at once, back to full control; any change of a stick or the lift
+  // ends the autotune so (rule 23).
   // The lift above zero ends a motor test.
   void sticks_moved(const ControlInput& c);
 
@@ -169,7 +173,7 @@ class SafetyMachine {
   uint32_t descent_limit_us_ = 0;  // a landing not touched down by then becomes the cut
   uint16_t hold_level_ = 0;        // the cut's level, engine units
   uint32_t flying_q8_ = 0;         // flying_lift() x 256
-  uint16_t held_lift_ = 0;         // the lift stick when height hold was entered
+  ControlInput held_;              // the sticks when height hold or the autotune was entered
   uint8_t test_engine_ = 0;        // the motor test's engine, its level and its start
   uint16_t test_level_ = 0;
   uint32_t test_start_us_ = 0;

@@ -3,6 +3,7 @@
 //   qrsim --scenario NAME --json   headless, faster than real time, one JSON object of figures
 //   qrsim --sweep NAME --seeds N   the scenario over N seeds and drawn vehicles, band summaries
 //   qrsim --soak                   an hour over a damaged line, judged; one JSON line
+//   qrsim --autotune               the identification flight, the models fitted, the gains designed
 //   qrsim --replay IN --out OUT    a recording through the flight chain (qr/host/replay.hpp)
 // Run `qrsim --help` for everything; docs/simulator.md describes the model and the scenarios.
 #include <cstdio>
@@ -10,6 +11,7 @@
 #include <string>
 
 #include <qr/host/replay.hpp>
+#include <qr/sim_runner/autotune.hpp>
 #include <qr/sim_runner/builtin_scenarios.hpp>
 #include <qr/sim_runner/qrsim_options.hpp>
 #include <qr/sim_runner/scenario.hpp>
@@ -121,6 +123,13 @@ int scenario(CommandLine& line) {
   return result.pass ? 0 : 1;
 }
 
+int autotune(CommandLine& line) {
+  if (!line.flight.devboard_elf.empty() || line.flight.radio)
+    return usage_error("--autotune flies the host firmware from the PC link (no --devboard, no --rc)");
+  take_flight_settings(line);
+  return qrsim::run_autotune(line.flight, stdout);
+}
+
 struct CommandRun {
   Command command;
   int (*run)(CommandLine& line);  // the process's exit status
@@ -129,6 +138,7 @@ struct CommandRun {
 constexpr CommandRun kCommands[] = {
     {Command::none, show_usage}, {Command::help, show_usage}, {Command::replay, replay}, {Command::list, list},
     {Command::soak, soak},       {Command::serve, serve},     {Command::sweep, sweep},   {Command::scenario, scenario},
+    {Command::autotune, autotune},
 };
 
 }  // namespace

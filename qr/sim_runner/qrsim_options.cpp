@@ -25,6 +25,7 @@ constexpr const char* kUsage = R"(usage:
   qrsim --sweep NAME|FILE [--seeds N] [--no-draw] [--seed N] [--seconds S] [--vehicle FILE]
         [--param NAME=VALUE]... [--rc crsf] [--esc dshot] [--sensors drivers|direct]
   qrsim --soak [--seconds S] [--seed N]
+  qrsim --autotune [--vehicle FILE] [--seed N] [--param NAME=VALUE]... [--no-noise] [--sensors drivers|direct]
   qrsim --replay IN.csv --out OUT.csv [--double] [--param NAME=VALUE]...
   qrsim --list
   qrsim --help
@@ -72,6 +73,11 @@ rate) flying in a simulated IN4073-class quadrotor.
                    by its instructions while a tick runs, so a tick longer than its period is a
                    deadline miss, and its engines go out late (docs/devboard.md); the figures
                    add "core_mhz". Without it the clock stands still while a tick runs
+  --autotune       fly the identification flight (mode autotune from a hover, the built-in
+                   scenario autotune), fit each axis' model to what the firmware logged, design
+                   the gains from it and print one JSON line {"autotune": {"model", "truth",
+                   "params", "margins", ...}}; the params go back as --param NAME=VALUE
+                   (docs/signal-chain.md "Autotune"); exit status 1 when a fit failed
   --soak           an hour (--seconds S of flight) of full control over a damaged line, logging,
                    the log downloaded at the end, judged by a referee; one JSON line {"soak": ...}
                    (docs/simulator.md section 9); exit status 1 when it failed
@@ -306,6 +312,7 @@ constexpr Option kOptions[] = {
     {"-h", command<Command::help>},
     {"--list", command<Command::list>},
     {"--soak", command<Command::soak>},
+    {"--autotune", command<Command::autotune>},
     {"--serve", command<Command::serve>},
     {"--stdio", stdio},
     {"--status", status},

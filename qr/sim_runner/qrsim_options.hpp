@@ -13,7 +13,7 @@
 
 namespace qrsim {
 
-enum class Command { none, serve, scenario, sweep, soak, replay, list, help };
+enum class Command { none, serve, scenario, sweep, soak, autotune, replay, list, help };
 
 // What the command line says. Which fields matter depends on the command; the options that go
 // with another command are read and left unused, as they always were.

@@ -595,6 +595,7 @@ void ScenarioFlight::fly() {
 
     if (rec_.t0 >= 0) record_tick(rec_, t, mode, qr_, idle_, airborne_, last_down_speed_);
     if (trace_ != nullptr) write_trace_line(trace_.get(), t, mode, qr_);
+    if (options_.on_tick) options_.on_tick(t, qr_.view());
     if (t >= rec_.t_end) break;
     recording_ = recording_ || mode == static_cast<uint8_t>(wire::Mode::calibration);
     if (!qr_.tick()) break;  // the firmware stopped

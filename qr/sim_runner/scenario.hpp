@@ -6,12 +6,14 @@
 
 #include <stdint.h>
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include <common/parameter_table.hpp>
+#include <qr/boards/sim/flying_qr.hpp>
 #include <qr/sim_runner/scenario_script.hpp>
 #include <sim/vehicle.hpp>
 
@@ -51,6 +53,8 @@ struct RunOptions {
   // board hands the firmware the plant's sample. On the devboard the sensor link carries the bus
   // (qr/boards/sim/devboard_qr.hpp) or the samples.
   bool sensor_drivers = true;
+  // Called every control period with the firmware's view before its tick (qrsim --autotune's log).
+  std::function<void(double t, const FirmwareView& view)> on_tick;
 };
 
 struct Figure {

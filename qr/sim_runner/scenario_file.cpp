@@ -293,13 +293,12 @@ class Reader {
     e.action = Action::mode;
     if (w.size() != 4) return fail("mode needs one mode key (" + mode_keys() + ")");
     if (!mode_from_key(w[3], e.mode)) return fail("unknown mode '" + w[3] + "' (" + mode_keys() + ")");
-    // The firmware leaves height hold as soon as the lift stick moves (SafetyMachine::sticks_moved),
-    // and the pilot's hand moves it every period unless told to stop: the hold would last a few
-    // hundredths of a second with no word of why.
-    if (e.mode == wire::Mode::height_hold && !lift_still_) {
-      return fail(
-          "mode height with the pilot's lift hand moving: height hold ends at the lift stick's first "
-          "change; add 'at T lift still' before it");
+    // The firmware leaves height hold and the autotune as soon as the lift stick moves
+    // (SafetyMachine::sticks_moved), and the pilot's hand moves it every period unless told to
+    // stop: the mode would last a few hundredths of a second with no word of why.
+    if (wire::entered_in_flight(e.mode) && !lift_still_) {
+      return fail("mode " + w[3] + " with the pilot's lift hand moving: " + wire::mode_name(e.mode) +
+                  " ends at the lift stick's first change; add 'at T lift still' before it");
     }
     return true;
   }

@@ -3,7 +3,7 @@
 // section) is one of the project's own (docs/, README.md), with that section.
 //
 // Read: every .hpp .cpp .h .c .S .cmake .in file and CMakeLists.txt under fixedpoint/ common/ qr/
-// sim/ pc/ tests/ cmake/ scripts/, and every script in scripts/. Checked:
+// sim/ tune/ pc/ tests/ cmake/ scripts/, and every script in scripts/. Checked:
 //   - a path from a top folder of the tree (those above, or docs/) that ends in a file's extension
 //     or in '/' (a folder), or names one of the scripts (scripts/ has no extensions): it exists;
 //   - in CMake, ${CMAKE_CURRENT_SOURCE_DIR}/PATH: it exists beside the CMakeLists.txt;
@@ -29,8 +29,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const std::vector<std::string> kTopFolders = {"fixedpoint", "common", "qr",      "sim", "pc",
-                                              "tests",      "cmake",  "scripts", "docs"};
+const std::vector<std::string> kTopFolders = {"fixedpoint", "common", "qr",    "sim",     "tune",
+                                              "pc",         "tests",  "cmake", "scripts", "docs"};
 const std::set<std::string> kFileExtensions = {".hpp", ".cpp",   ".h",  ".c",    ".S",  ".md", ".txt",
                                                ".sh",  ".cmake", ".py", ".json", ".ld", ".in", ".csv"};
 

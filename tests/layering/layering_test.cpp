@@ -1,8 +1,8 @@
 // Arrows only point down (docs/architecture.md, "Layers"). This test reads the source tree: every
 // project include and every CMake file, and fails when a layer reaches up or sideways.
 //
-//   pc            -> common, fixedpoint
-//   qr/sim_runner -> qr/boards/sim, qr/host, sim, qr/core (and below)
+//   pc            -> tune, common, fixedpoint
+//   qr/sim_runner -> qr/boards/sim, qr/host, sim, tune, qr/core (and below)
 //   qr/boards/*   -> qr/core (and below); the sim board also -> sim
 //   qr/tools      -> qr/host, qr/core (and below)
 //   qr/host       -> qr/core (and below)
@@ -10,6 +10,7 @@
 //   common        -> fixedpoint
 //   fixedpoint    -> nothing
 //   sim           -> nothing (host physics; it knows no QR)
+//   tune          -> common, fixedpoint (autotune's fit and design: host, knows no QR, sim or console)
 //   tests         -> anything
 //
 // qr/host holds what the host programs share (the floating-point number policies of the chain,
@@ -47,19 +48,20 @@ const std::vector<Layer> kLayers = {
     {"qr/boards/rv32virt", {"qr/core", "common", "fixedpoint"}},
     {"qr/boards/fake", {"qr/core", "common", "fixedpoint"}},
     {"qr/boards/sim", {"sim", "qr/core", "common", "fixedpoint"}},
-    {"qr/sim_runner", {"qr/boards/sim", "sim", "qr/host", "qr/core", "common", "fixedpoint"}},
+    {"qr/sim_runner", {"qr/boards/sim", "sim", "qr/host", "tune", "qr/core", "common", "fixedpoint"}},
     {"qr/tools", {"qr/host", "qr/core", "common", "fixedpoint"}},
     {"qr", {}},  // the umbrella CMakeLists.txt only
     {"sim", {}},
-    {"pc", {"common", "fixedpoint"}},
+    {"tune", {"common", "fixedpoint"}},
+    {"pc", {"tune", "common", "fixedpoint"}},
     {"tests",
      {"fixedpoint", "common", "qr/core", "qr/host", "qr/boards/rv32virt", "qr/boards/fake", "qr/boards/sim",
-      "qr/sim_runner", "qr/tools", "qr", "sim", "pc"}},
+      "qr/sim_runner", "qr/tools", "qr", "sim", "tune", "pc"}},
     {"cmake", {}},
 };
 
 // The first path component of every project header and of every folder this test reads.
-const std::set<std::string> kRoots = {"fixedpoint", "common", "qr", "sim", "pc", "tests", "cmake"};
+const std::set<std::string> kRoots = {"fixedpoint", "common", "qr", "sim", "tune", "pc", "tests", "cmake"};
 
 // The layer a path (relative to the source root) belongs to: the longest layer folder holding
 // it, or "" when none does (the root's own files, scripts/, docs/).
@@ -332,6 +334,13 @@ TEST(Layering, TableSaysWhoMayUseWhom) {
   EXPECT_FALSE(may_use("sim", "qr/core"));
   EXPECT_FALSE(may_use("pc", "qr/core"));
   EXPECT_FALSE(may_use("pc", "sim"));
+  EXPECT_TRUE(may_use("tune", "common"));
+  EXPECT_TRUE(may_use("qr/sim_runner", "tune"));
+  EXPECT_FALSE(may_use("tune", "qr/core"));
+  EXPECT_FALSE(may_use("tune", "sim"));
+  EXPECT_FALSE(may_use("tune", "pc"));
+  EXPECT_FALSE(may_use("common", "tune"));
+  EXPECT_FALSE(may_use("qr/core", "tune"));
   EXPECT_FALSE(may_use("qr/host", "qr/tools"));
 }
 
@@ -386,7 +395,7 @@ TEST(Layering, EveryIncludePointsDown) {
   // The walk really read the tree: hundreds of includes, from every production layer.
   EXPECT_GT(checked, 300);
   for (const char* layer : {"fixedpoint", "common", "qr/core", "qr/host", "qr/boards/rv32virt", "qr/boards/sim",
-                            "qr/sim_runner", "qr/tools", "sim", "pc"}) {
+                            "qr/sim_runner", "qr/tools", "sim", "tune", "pc"}) {
     EXPECT_EQ(layers_seen.count(layer), 1u) << "no include read in " << layer;
   }
 }
@@ -467,7 +476,8 @@ TEST(Layering, ProductionTargetsLinkOnlyLayersBelow) {
                                                                         {"qr_sim_board", "qr/boards/sim"},
                                                                         {"qr_sim_runner", "qr/sim_runner"},
                                                                         {"qr_filter_tool", "qr/tools"},
-                                                                        {"qr_sim", "sim"}}) {
+                                                                        {"qr_sim", "sim"},
+                                                                        {"tune", "tune"}}) {
     ASSERT_EQ(model.target_layer.count(target), 1u) << target;
     EXPECT_EQ(model.target_layer.at(target), layer) << target;
   }

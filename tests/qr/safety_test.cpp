@@ -16,8 +16,8 @@ bool same(const EngineCommand& a, const EngineCommand& b) {
   }
   return true;
 }
-constexpr Mode kAllModes[] = {Mode::safe,        Mode::panic,        Mode::manual,      Mode::calibration,
-                              Mode::yaw_control, Mode::full_control, Mode::height_hold, Mode::motor_test};
+constexpr Mode kAllModes[] = {Mode::safe,         Mode::panic,       Mode::manual,     Mode::calibration, Mode::yaw_control,
+                              Mode::full_control, Mode::height_hold, Mode::motor_test, Mode::autotune};
 
 struct Safety : ::testing::Test {
   SafetyLimits limits = safety_limits(wire::ParameterValues{});
@@ -43,6 +43,14 @@ struct Safety : ::testing::Test {
     }
     if (mode == Mode::motor_test) {  // its own request: the front engine at 10 %
       ASSERT_EQ(machine.request_motor_test(0, 100, s), NackReason::none);
+      ASSERT_EQ(machine.mode(), mode);
+      return;
+    }
+    if (mode == Mode::autotune) {  // from full control, flying, its sequence under way
+      enter(Mode::full_control);
+      s.controls.lift = 400;
+      s.identification_over = false;
+      ASSERT_EQ(machine.request(m(mode), s), NackReason::none);
       ASSERT_EQ(machine.mode(), mode);
       return;
     }
@@ -431,6 +439,101 @@ TEST_F(Safety, HeightHoldTogglesBackToFullControl) {
   EXPECT_EQ(machine.request(m(Mode::full_control), s), NackReason::none);
   EXPECT_EQ(machine.mode(), Mode::full_control);
   EXPECT_EQ(machine.request(m(Mode::height_hold), s), NackReason::none) << "and in again";
+}
+
+// Rule 23: the autotune's identification flight.
+TEST_F(Safety, AutotuneOnlyFromFullControlWhileFlying) {
+  s.identification_over = false;
+  EXPECT_EQ(machine.request(m(Mode::autotune), s), NackReason::not_from_this_mode) << "from safe";
+  for (Mode from : {Mode::manual, Mode::yaw_control, Mode::acro}) {
+    restart();
+    s.identification_over = false;
+    at(1000);
+    enter(from);
+    fly(500);
+    EXPECT_EQ(machine.request(m(Mode::autotune), s), NackReason::not_from_this_mode) << int(m(from));
+    EXPECT_EQ(machine.mode(), from);
+  }
+  restart();
+  s.identification_over = false;
+  enter(Mode::full_control);
+  fly(500);
+  s.landed = true;
+  EXPECT_EQ(machine.request(m(Mode::autotune), s), NackReason::not_flying) << "nothing to excite on the ground";
+  EXPECT_EQ(machine.mode(), Mode::full_control);
+  s.landed = false;
+  EXPECT_EQ(machine.request(m(Mode::autotune), s), NackReason::none);
+  EXPECT_EQ(machine.mode(), Mode::autotune);
+}
+
+TEST_F(Safety, AnyStickOrLiftMovementEndsTheAutotuneAtOnce) {
+  // Each stick and the lift on its own, moved by the least it can be, in either direction.
+  const ControlInput moved[] = {{1, 0, 0, 0},  {0, 1, 0, 0}, {0, -1, 0, 0}, {0, 0, 1, 0},
+                                {0, 0, -1, 0}, {0, 0, 0, 1}, {0, 0, 0, -1}};
+  for (const ControlInput& by : moved) {
+    restart();
+    at(1000);
+    enter(Mode::autotune);
+    const ControlInput held = s.controls;
+    machine.sticks_moved(held);
+    run_for(10000000);  // longer than the sequence (9.1 s): the same sticks keep it
+    ASSERT_EQ(machine.mode(), Mode::autotune);
+    ControlInput c = held;
+    c.lift = static_cast<uint16_t>(c.lift + by.lift);
+    c.roll = static_cast<int16_t>(c.roll + by.roll);
+    c.pitch = static_cast<int16_t>(c.pitch + by.pitch);
+    c.yaw = static_cast<int16_t>(c.yaw + by.yaw);
+    machine.sticks_moved(c);
+    EXPECT_EQ(machine.mode(), Mode::full_control)
+        << "lift " << by.lift << " roll " << by.roll << " pitch " << by.pitch << " yaw " << by.yaw;
+  }
+}
+
+TEST_F(Safety, TheAutotuneEndsInFullControlWhenItsSequenceIsOver) {
+  at(1000);
+  enter(Mode::autotune);
+  fly(500);
+  run_for(10000000);
+  ASSERT_EQ(machine.mode(), Mode::autotune);
+  s.identification_over = true;
+  run_for(kPeriodUs);
+  EXPECT_EQ(machine.mode(), Mode::full_control);
+  EXPECT_EQ(machine.request(m(Mode::full_control), s), NackReason::none) << "flying on";
+}
+
+TEST_F(Safety, TheAutotuneEndsBeyondItsFewDegreesOfTilt) {
+  EXPECT_LE(limits.autotune_tilt_mrad, 175) << "a few degrees: at most 10";
+  EXPECT_LT(limits.autotune_tilt_mrad, limits.tilt_limit_mrad) << "before the tilt watchdog's";
+  at(1000);
+  enter(Mode::autotune);
+  fly(500);
+  s.tilt_mrad = limits.autotune_tilt_mrad;
+  run_for(10000000);
+  ASSERT_EQ(machine.mode(), Mode::autotune) << "at the bound";
+  s.tilt_mrad = limits.autotune_tilt_mrad + 1;
+  run_for(kPeriodUs);
+  EXPECT_EQ(machine.mode(), Mode::full_control) << "beyond it, in the tick";
+}
+
+TEST_F(Safety, TheBatterysWarningEndsTheAutotune) {
+  at(1000);
+  enter(Mode::autotune);
+  fly(500);
+  battery_rested_at(limits.battery_warn_mv - 50);
+  for (int ms = 0; ms < 10000; ++ms) {
+    run_for(1000);
+    if (machine.battery_warning()) break;
+    ASSERT_EQ(machine.mode(), Mode::autotune) << "before the warning";
+  }
+  ASSERT_TRUE(machine.battery_warning());
+  EXPECT_EQ(machine.mode(), Mode::full_control);
+}
+
+TEST_F(Safety, TheAutotuneTogglesBackToFullControl) {
+  at(1000);
+  enter(Mode::autotune);
+  EXPECT_EQ(machine.request(m(Mode::full_control), s), NackReason::none);
+  EXPECT_EQ(machine.mode(), Mode::full_control);
 }
 
 // Rule 7

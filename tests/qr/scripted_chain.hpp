@@ -41,6 +41,8 @@ struct ScriptedChain {
   uint32_t estimator_restarts = 0;
   uint32_t vertical_controlled = 0;
   uint32_t height_holds_entered = 0;
+  uint32_t identifications_entered = 0;
+  bool identification_done = true;
   uint32_t descents_started = 0;
   uint16_t descent_from_lift = 0;
   uint16_t descent_engines = 0;  // what mix() gives while descending (the chain flies the lift)
@@ -81,6 +83,12 @@ struct ScriptedChain {
   void estimate_height() { ++height_estimated; }
   void control_vertical() { ++vertical_controlled; }
   void enter_height_hold() { ++height_holds_entered; }
+  // The autotune: entering starts the sequence, which a test ends by setting identification_done.
+  void enter_identification() {
+    ++identifications_entered;
+    identification_done = false;
+  }
+  bool identification_over() const { return identification_done; }
   void start_descent(uint16_t flying_lift) {
     ++descents_started;
     descent_from_lift = flying_lift;

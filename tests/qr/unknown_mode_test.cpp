@@ -60,14 +60,15 @@ TEST_F(UnknownModeTest, EveryNumberBeyondTheModesIsAnsweredUnknownMode) {
 }
 
 TEST_F(UnknownModeTest, TheLastModeIsStillAMode) {
-  // The last mode number (the motor test) is known: refused for another reason (its own request
-  // says the engine, docs/safety.md rule 22); so is the one before it (acro: no calibration yet).
-  static_assert(wire::kModeCount - 1 == index(Mode::motor_test));
+  // The last mode number (the autotune) is known: refused for another reason (entered from full
+  // control only, docs/safety.md rule 23); so is the one before it (the motor test: its own
+  // request says the engine, rule 22).
+  static_assert(wire::kModeCount - 1 == index(Mode::autotune));
   send_mode(1, wire::kModeCount - 1);
-  send_mode(2, index(Mode::acro));
+  send_mode(2, index(Mode::motor_test));
   ASSERT_EQ(nacks.size(), 2u);
-  EXPECT_EQ(nacks[0].reason, wire::NackReason::bad_value);
-  EXPECT_EQ(nacks[1].reason, wire::NackReason::not_calibrated);
+  EXPECT_EQ(nacks[0].reason, wire::NackReason::not_from_this_mode);
+  EXPECT_EQ(nacks[1].reason, wire::NackReason::bad_value);
 }
 
 }  // namespace

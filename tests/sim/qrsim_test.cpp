@@ -360,6 +360,59 @@ TEST(Qrsim, ScenarioNotesGoToStderr) {
       << stderr_only.out;
 }
 
+// The number after "KEY": in `json`, searched from the first occurrence of `within` on (NaN if absent).
+double json_number_after(const std::string& json, const std::string& within, const std::string& key) {
+  const size_t from = json.find(within);
+  if (from == std::string::npos) return std::nan("");
+  const size_t at = json.find("\"" + key + "\": ", from);
+  return at == std::string::npos ? std::nan("") : std::strtod(json.c_str() + at + key.size() + 4, nullptr);
+}
+
+// qrsim --autotune (issue 34, docs/signal-chain.md "Autotune: the identification flight"): the
+// identification flown on the default vehicle, each axis' fitted gain and lag within 15 % of the
+// vehicle file's truth, gains that keep the design's targets on the models, and its params taken
+// back unchanged by --param: the step they fly passes step-roll's bands on the truth.
+TEST(Qrsim, AutotuneFitsEachAxisAndItsParamsFlyAsParams) {
+  const QrsimRun tune = run_qrsim("--autotune");
+  ASSERT_EQ(tune.status, 0) << tune.out;
+  const size_t ratios = tune.out.find("\"model_over_truth\"");
+  ASSERT_NE(ratios, std::string::npos) << tune.out;
+  const std::string rest = tune.out.substr(ratios);
+  for (const char* axis : {"roll", "pitch", "yaw"}) {
+    EXPECT_NEAR(json_number_after(rest, std::string("\"") + axis + "\"", "gain"), 1, 0.15) << axis << ": " << rest;
+    EXPECT_NEAR(json_number_after(rest, std::string("\"") + axis + "\"", "motor_tau_s"), 1, 0.15) << axis << ": " << rest;
+  }
+  EXPECT_NE(tune.out.find("\"keeps_targets\": true"), std::string::npos) << tune.out;
+  const size_t params = tune.out.find("\"params\": {");
+  ASSERT_NE(params, std::string::npos) << tune.out;
+  const size_t open = tune.out.find('{', params), close = tune.out.find('}', open);
+  std::string arguments, names;
+  for (size_t at = open + 1; at < close;) {
+    const size_t name_start = tune.out.find('"', at) + 1, name_end = tune.out.find('"', name_start);
+    const size_t value_start = name_end + 3, value_end = std::min(tune.out.find(',', value_start), close);
+    const std::string name = tune.out.substr(name_start, name_end - name_start);
+    arguments += " --param " + name + "=" + tune.out.substr(value_start, value_end - value_start);
+    names += name + " ";
+    at = value_end + 1;
+  }
+  EXPECT_EQ(names, "roll_pitch_p1 roll_pitch_p2 roll_pitch_i roll_pitch_d yaw_p yaw_i ");
+  const QrsimRun step = run_qrsim("--scenario step-roll --json" + arguments);
+  EXPECT_EQ(step.status, 0) << arguments << "\n" << step.out;
+  // Faster than the defaults' 0.25 s (docs/signal-chain.md "Defaults and why"), within the band.
+  EXPECT_LT(json_number_after(step.out, "{", "rise_s"), 0.22) << step.out;
+  EXPECT_LT(json_number_after(step.out, "{", "overshoot_pct"), 8) << step.out;
+}
+
+// The identification flies the host firmware over the PC link: the devboard's link carries no
+// moments and the radio's pilot would move the sticks, which ends the mode.
+TEST(Qrsim, AutotuneRefusesTheDevboardAndTheRadio) {
+  for (const char* option : {"--rc crsf", "--devboard"}) {
+    const QrsimRun run = run_qrsim(std::string("--autotune ") + option);
+    EXPECT_EQ(run.status, 2) << option;
+    EXPECT_NE(run.out.find("--autotune flies the host firmware from the PC link"), std::string::npos) << run.out;
+  }
+}
+
 // --sensors: the host firmware reads the chips through its drivers by default (the JSON's sensor
 // figures are numbers), --sensors direct gives it the plant's sample (they are null), and any
 // other word is refused.

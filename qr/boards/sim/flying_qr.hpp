@@ -29,6 +29,7 @@ struct FirmwareView {
   // Only the host build shows these (the devboard's frames leave them out, common/sensor_link.hpp).
   bool has_rates = false;
   int16_t yaw_e4 = 0, p_e3 = 0, q_e3 = 0, r_e3 = 0;
+  int16_t moment_e1[3] = {0, 0, 0};  // roll, pitch, yaw: asked of the mixer (tenths of thrust units)
   int32_t height_mm = 0, climb_mm_s = 0;  // the height estimate
   qr::ControlInput controls;              // the sticks the tick flew with
   uint32_t deadline_misses = 0;
@@ -76,6 +77,8 @@ class HostQr final : public FlyingQr {
     v.has_rates = true;
     v.yaw_e4 = qr::observe<Id::psi>(flight), v.p_e3 = qr::observe<Id::p>(flight);
     v.q_e3 = qr::observe<Id::q>(flight), v.r_e3 = qr::observe<Id::r>(flight);
+    v.moment_e1[0] = qr::observe<Id::roll_moment>(flight), v.moment_e1[1] = qr::observe<Id::pitch_moment>(flight);
+    v.moment_e1[2] = qr::observe<Id::yaw_moment>(flight);
     v.flying = !chain.landed();
     v.height_mm = chain.height_mm(), v.climb_mm_s = chain.climb_mm_s();
     v.controls = qr_->firmware.controls();

@@ -31,10 +31,17 @@ enum class Lift : uint8_t {
   descend,  // the vertical loops, descending until the touchdown (a landing)
 };
 
+// A known moment added to the loops' (the autotune's identification flight, identification.hpp).
+enum class Excite : uint8_t {
+  none,
+  prbs,  // a pseudo-random binary sequence on one axis at a time
+};
+
 struct EngineSources {
   Tilt tilt;
   Yaw yaw;
   Lift lift;
+  Excite excite = Excite::none;
 };
 
 inline constexpr EngineSources kOpenLoop{Tilt::stick, Yaw::stick, Lift::stick};

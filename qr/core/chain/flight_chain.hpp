@@ -34,6 +34,7 @@
 #include <qr/core/chain/gyro_clip.hpp>
 #include <qr/core/chain/gyro_turns.hpp>
 #include <qr/core/chain/height_estimator.hpp>
+#include <qr/core/chain/identification.hpp>
 #include <qr/core/chain/imu_mounting.hpp>
 #include <qr/core/chain/landed_detector.hpp>
 #include <qr/core/chain/pilot_setpoints.hpp>
@@ -229,6 +230,9 @@ class FlightChain : public chain::DecimalReadouts<FlightChain<Num, SampleHz>> {
   // follow; the vertical loops' starts below are entry actions of their own.
   void fly(chain::EngineSources sources) { sources_ = sources; }
   chain::EngineSources sources() const { return sources_; }
+  // Entry action of the autotune: its identification sequence from the start (identification.hpp).
+  void enter_identification() { identification_.start(); }
+  bool identification_over() const { return identification_.done(); }
   // Entry action of height hold: the height now is held, starting from the thrust the pilot's
   // lift gave.
   void enter_height_hold() { vertical_.start(mixer_.thrust_of_lift(pilot_.lift()), height_.height()); }
@@ -325,6 +329,7 @@ class FlightChain : public chain::DecimalReadouts<FlightChain<Num, SampleHz>> {
     moments_.roll = sticks ? pilot_.roll_moment() : roll_moment_;
     moments_.pitch = sticks ? pilot_.pitch_moment() : pitch_moment_;
     moments_.yaw = from.yaw == chain::Yaw::stick ? pilot_.yaw_moment() : yaw_moment_;
+    if (from.excite == chain::Excite::prbs) excite();
     if (from.lift != chain::Lift::stick) return engines_ = mixer_.mix_thrust(vertical_.thrust(), moments_);
     return engines_ = mixer_.mix(pilot_.lift(), moments_);
   }
@@ -430,6 +435,14 @@ class FlightChain : public chain::DecimalReadouts<FlightChain<Num, SampleHz>> {
     wrong_sign_ = chain::probe_signs(loops, mixer, mixer_.thrust_of_lift(chain::kProbeLift));
     monitor_.arm();
   }
+  // The identification's moment this tick, added to its axis' (out of line: the autotune's only).
+  [[gnu::noinline]] void excite() {
+    const uint8_t axis = identification_.axis();
+    const Thrust added = identification_.step();
+    if (axis == 0) moments_.roll = moments_.roll + added;
+    if (axis == 1) moments_.pitch = moments_.pitch + added;
+    if (axis == 2) moments_.yaw = moments_.yaw + added;
+  }
   // One tick of the wrong-way monitor, in its units: the last mix's moments, the rates now. Judged
   // only with the engines turning and the sticks asking for no motion (a rate the pilot asked
   // for, braked as the stick comes back, is no wrong answer: sign_check.hpp); the conversions
@@ -491,6 +504,10 @@ class FlightChain : public chain::DecimalReadouts<FlightChain<Num, SampleHz>> {
   bool mounted_as_drawn_ = true;
   chain::WrongWayMonitor monitor_;
   chain::SignAxis wrong_sign_ = chain::SignAxis::none;
+  // The autotune's moments: 40 thrust units on roll and pitch (about 0.09 N m on the simulator's
+  // vehicle, 8 rad/s^2: the loops hold the vehicle within about 2 degrees), 150 on yaw, whose
+  // moment per thrust unit is 14 times smaller (the rotors' drag, not the arm).
+  chain::IdentificationSequence<Thrust, SampleHz> identification_{Thrust(40.0), Thrust(150.0)};
 };
 
 using FixedChain = FlightChain<chain::FixedNumbers>;
