@@ -11,7 +11,7 @@ struct NamedKey {
 constexpr NamedKey kNamedKeys[] = {
     {kKeyEscape, "ESC"},  {kKeyInterrupt, "^C"},        {kKeyUp, "up"},     {kKeyDown, "down"},
     {kKeyLeft, "left"},   {kKeyRight, "right"},         {' ', "space"},     {kKeyTab, "Tab"},
-    {kKeyEnter, "Enter"}, {kKeyBackspace, "Backspace"}, {19, "^S"},         {15, "^O"},
+    {kKeyEnter, "Enter"}, {kKeyBackspace, "Backspace"}, {19, "^S"},         {15, "^O"}, {20, "^T"}, {18, "^R"},
     {kKeyPageUp, "PgUp"}, {kKeyPageDown, "PgDn"},       {kKeyHome, "Home"},
 };
 
