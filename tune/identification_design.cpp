@@ -5,8 +5,8 @@
 namespace tune {
 
 std::optional<IdentificationDesign> design_from_identification(std::array<AxisRecord, 3> records,
-                                                               const wire::ParameterValues& flown,
-                                                               double control_hz, std::string* why) {
+                                                               const wire::ParameterValues& flown, double control_hz,
+                                                               std::string* why) {
   DesignLimits limits;
   limits.control_hz = control_hz;
   limits.filter_cutoff_hz = flown.get(wire::ParamId::filter_cutoff_hz);

@@ -34,7 +34,7 @@ struct IdentificationDesign {
 // here from `flown`, the parameters in force during the flight). Empty with `why` naming the axis
 // whose fit was refused and the fit's reason.
 std::optional<IdentificationDesign> design_from_identification(std::array<AxisRecord, 3> records,
-                                                               const wire::ParameterValues& flown,
-                                                               double control_hz, std::string* why);
+                                                               const wire::ParameterValues& flown, double control_hz,
+                                                               std::string* why);
 
 }  // namespace tune

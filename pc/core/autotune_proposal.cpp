@@ -23,13 +23,13 @@ std::string figures(const char* axis, const tune::Margins& m0, const tune::Margi
                     const tune::StepFigures& s1) {
   return std::string(axis) + " PM " + before_after(m0.phase_margin_deg, m1.phase_margin_deg, "%.1f") + " deg  GM " +
          before_after(m0.gain_margin_db, m1.gain_margin_db, "%.1f") + " dB  rise " +
-         before_after(s0.rise_s, s1.rise_s, "%.3f") + " s  OS " + before_after(s0.overshoot_pct, s1.overshoot_pct, "%.1f") +
-         " %";
+         before_after(s0.rise_s, s1.rise_s, "%.3f") + " s  OS " +
+         before_after(s0.overshoot_pct, s1.overshoot_pct, "%.1f") + " %";
 }
 
-// "roll 0.0412/25.1ms": an axis' fitted gain (rad/s2 per thrust unit) and motor lag.
+// "roll 0.1761/38.4ms": an axis' fitted gain (rad/s2 per thrust unit) and motor lag.
 std::string models_line(const std::array<tune::AxisModel, 3>& models) {
-  std::string line = "models (rad/s2 per thrust, lag):";
+  std::string line = "model gain/lag:";
   for (size_t axis = 0; axis < 3; ++axis) {
     char text[48];
     std::snprintf(text, sizeof text, " %s %.4g/%.1fms", tune::kAxisNames[axis], models[axis].gain,
@@ -65,7 +65,8 @@ void AutotuneProposal::take(const Outcome& outcome, const wire::ParameterValues&
   standing_ = Standing::proposed;
   for (const tune::RawParameter& p : tune::raw_parameters(design_->roll_pitch))
     changes_.push_back({p.id, flown.get(p.id), p.raw});
-  for (const tune::RawParameter& p : tune::raw_parameters(design_->yaw)) changes_.push_back({p.id, flown.get(p.id), p.raw});
+  for (const tune::RawParameter& p : tune::raw_parameters(design_->yaw))
+    changes_.push_back({p.id, flown.get(p.id), p.raw});
 }
 
 void AutotuneProposal::refuse(const std::string& why) {
@@ -93,10 +94,14 @@ std::vector<std::string> AutotuneProposal::lines() const {
                 "new");
   std::vector<std::string> out = {models_line(design_->models), header};
   // Two gains a row: roll_pitch_p1 and p2, i and d, yaw_p and yaw_i.
-  for (size_t i = 0; i + 1 < changes_.size(); i += 2) out.push_back(change_text(changes_[i]) + "     | " + change_text(changes_[i + 1]));
-  out.push_back(figures("roll", design_->before.inner, design_->after.inner, design_->before.step, design_->after.step));
-  out.push_back(figures("yaw ", design_->yaw_then.loop, design_->yaw_now.loop, design_->yaw_then.step, design_->yaw_now.step));
-  static const char* const kStanding[] = {"", "", "proposed: ^T sends the new gains", "the new gains sent: ^R goes back",
+  for (size_t i = 0; i + 1 < changes_.size(); i += 2)
+    out.push_back(change_text(changes_[i]) + "     | " + change_text(changes_[i + 1]));
+  out.push_back(
+      figures("roll", design_->before.inner, design_->after.inner, design_->before.step, design_->after.step));
+  out.push_back(
+      figures("yaw ", design_->yaw_then.loop, design_->yaw_now.loop, design_->yaw_then.step, design_->yaw_now.step));
+  static const char* const kStanding[] = {"", "", "proposed: ^T sends the new gains",
+                                          "the new gains sent: ^R goes back",
                                           "the gains before sent again: ^T takes the new ones"};
   out.push_back(std::string(kStanding[static_cast<size_t>(standing_)]) +
                 (design_->keeps ? "" : " (the new gains miss a target)"));

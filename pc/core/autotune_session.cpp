@@ -30,7 +30,8 @@ void AutotuneSession::tick(StreamSession& streams, uint32_t now_ms) {
       // The models in the log as qrsim --autotune prints them, to hold one flight against the other.
       const tune::IdentificationDesign& d = *proposal_.design();
       for (size_t axis = 0; axis < 3; ++axis) {
-        note_(Severity::info, std::string("autotune: ") + tune::kAxisNames[axis] + " model " + tune::model_json(d.models[axis]));
+        note_(Severity::info,
+              std::string("autotune: ") + tune::kAxisNames[axis] + " model " + tune::model_json(d.models[axis]));
       }
       note_(Severity::info, "autotune: new gains on the parameter screen (^T takes them)");
     }

@@ -53,7 +53,8 @@ class AutotuneSession {
   wire::ParameterValues flown_;
   uint32_t control_hz_ = 1000;
   std::vector<uint8_t> pairs_[3];
-  std::future<AutotuneProposal::Outcome> designing_;  // the fit and design, off the console's loop  // each axis' moment and rate ids in the QR's table, once looked up
+  std::future<AutotuneProposal::Outcome>
+      designing_;  // the fit and design, off the console's loop  // each axis' moment and rate ids in the QR's table, once looked up
 };
 
 }  // namespace qrterm

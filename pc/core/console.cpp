@@ -73,13 +73,12 @@ Console::Console(ConsoleLog& log, ConsoleFiles files, const Setup& setup, uint32
           [this](const std::string& name) { return recordings_.open(name); },
           [this](const std::string& from, const std::string& to) { return recordings_.rename(from, to); }}),
       input_(setup.joystick), simulator_(setup.simulator, note_hook()), exit_(note_hook()),
-      streams_(StreamSession::Hooks{note_hook(), [this](const std::string& name) { return recordings_.open(name); },
-                                    [this](const std::vector<uint8_t>& ids, uint32_t index,
-                                           const std::vector<double>& values) {
-                                      autotune_.on_carried(ids, index, values);
-                                    }}),
-      autotune_(note_hook()),
-      editor_(setup.params, setup.params_file), params_file_(setup.params_file),
+      streams_(StreamSession::Hooks{
+          note_hook(), [this](const std::string& name) { return recordings_.open(name); },
+          [this](const std::vector<uint8_t>& ids, uint32_t index, const std::vector<double>& values) {
+            autotune_.on_carried(ids, index, values);
+          }}),
+      autotune_(note_hook()), editor_(setup.params, setup.params_file), params_file_(setup.params_file),
       check_(OrientationCheck::Hooks{
           note_hook(),
           [this] {

@@ -35,11 +35,7 @@ class ScreenState {
 
   ScreenState(StreamSession& streams, ParameterEditor& editor, ParameterSync& parameters, OrientationCheck& check,
               AutotuneSession& autotune, Note note)
-      : streams_(streams),
-        editor_(editor),
-        parameters_(parameters),
-        check_(check),
-        autotune_(autotune),
+      : streams_(streams), editor_(editor), parameters_(parameters), check_(check), autotune_(autotune),
         note_(std::move(note)) {}
 
   enum class Taken : uint8_t {

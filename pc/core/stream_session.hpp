@@ -129,7 +129,7 @@ class StreamSession {
   PlotModel plot_;
   RadioSetup radio_;
   bool radio_open_ = false;
-  std::vector<uint8_t> carried_;  // autotune's pair; empty: the plot has stream 0
+  std::vector<uint8_t> carried_;                // autotune's pair; empty: the plot has stream 0
   std::optional<std::vector<uint8_t>> rc_ids_;  // rc_ch1..rc_ch16's ids in the QR's table
   std::string radio_state_ = "no table yet";
   bool radio_streaming_ = false;

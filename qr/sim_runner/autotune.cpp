@@ -47,8 +47,8 @@ std::string ratios_json(const std::array<tune::AxisModel, 3>& fit, const Vehicle
   const tune::AxisModel* t[3] = {&truth.roll, &truth.pitch, &truth.yaw};
   std::string s = "{";
   for (size_t i = 0; i < 3; ++i) {
-    s += std::string(i ? ", " : "") + "\"" + kAxisNames[i] + "\": {\"gain\": " +
-         tune::json_number(fit[i].gain / t[i]->gain) +
+    s += std::string(i ? ", " : "") + "\"" + kAxisNames[i] +
+         "\": {\"gain\": " + tune::json_number(fit[i].gain / t[i]->gain) +
          ", \"motor_tau_s\": " + tune::json_number(fit[i].motor_tau_s / t[i]->motor_tau_s) + "}";
   }
   return s + "}";
@@ -82,21 +82,22 @@ int run_autotune(const RunOptions& given, FILE* out) {
   for (const auto& [id, raw] : options.parameters) flown.set(static_cast<uint8_t>(id), raw);
   std::array<tune::AxisRecord, 3> records = log.axes;
   std::string why;
-  const std::optional<tune::IdentificationDesign> d =
-      tune::design_from_identification(std::move(records), flown, qr::kControlHz, &why);
+  const std::optional<tune::IdentificationDesign> d = tune::design_from_identification(std::move(records), flown,
+                                                                                       qr::kControlHz, &why);
   if (!d) return fail(out, why);
 
   const sim::VehicleParams vehicle = given.vehicle ? *given.vehicle : sim::default_vehicle();
   const VehicleAxes truth = axes_of(vehicle);
-  std::fprintf(out,
-               "{\"autotune\": {\"vehicle\": \"%s\", \"seed\": %llu, \"model\": %s, \"truth\": %s, \"model_over_truth\": %s, "
-               "\"params\": %s, \"margins\": {\"before\": %s, \"after\": %s}, \"keeps_targets\": %s, "
-               "\"flight\": {\"max_tilt_deg_truth\": %s, \"final_mode\": \"%s\"}}}\n",
-               flight.vehicle.c_str(), static_cast<unsigned long long>(options.seed), axes_json(d->models).c_str(),
-               axes_json({truth.roll, truth.pitch, truth.yaw}).c_str(), ratios_json(d->models, truth).c_str(),
-               tune::params_json(d->roll_pitch, d->yaw).c_str(), tune::design_json(d->before, d->yaw_then).c_str(),
-               tune::design_json(d->after, d->yaw_now).c_str(), d->keeps ? "true" : "false",
-               tune::json_number(flight.figure("max_tilt_deg_truth")).c_str(), flight.final_mode.c_str());
+  std::fprintf(
+      out,
+      "{\"autotune\": {\"vehicle\": \"%s\", \"seed\": %llu, \"model\": %s, \"truth\": %s, \"model_over_truth\": %s, "
+      "\"params\": %s, \"margins\": {\"before\": %s, \"after\": %s}, \"keeps_targets\": %s, "
+      "\"flight\": {\"max_tilt_deg_truth\": %s, \"final_mode\": \"%s\"}}}\n",
+      flight.vehicle.c_str(), static_cast<unsigned long long>(options.seed), axes_json(d->models).c_str(),
+      axes_json({truth.roll, truth.pitch, truth.yaw}).c_str(), ratios_json(d->models, truth).c_str(),
+      tune::params_json(d->roll_pitch, d->yaw).c_str(), tune::design_json(d->before, d->yaw_then).c_str(),
+      tune::design_json(d->after, d->yaw_now).c_str(), d->keeps ? "true" : "false",
+      tune::json_number(flight.figure("max_tilt_deg_truth")).c_str(), flight.final_mode.c_str());
   return 0;
 }
 

@@ -131,11 +131,12 @@ TEST(AutotuneStream, TheCarriedPairTakesStreamZeroAndThePlotGetsItBack) {
     std::vector<double> values;
   };
   std::vector<Carried> carried;
-  StreamSession session(StreamSession::Hooks{
-      [](Severity, const std::string&) {}, {},
-      [&](const std::vector<uint8_t>& ids, uint32_t index, const std::vector<double>& values) {
-        carried.push_back({ids, index, values});
-      }});
+  StreamSession session(
+      StreamSession::Hooks{[](Severity, const std::string&) {},
+                           {},
+                           [&](const std::vector<uint8_t>& ids, uint32_t index, const std::vector<double>& values) {
+                             carried.push_back({ids, index, values});
+                           }});
   send_observable_table(session);
   session.pick("phi");
   LinkSession link(0, 1);

@@ -31,7 +31,7 @@ wait_for 'MODE +full' 2 "the QR back in full control by itself"
 
 keys Tab Tab
 wait_for 'PARAMETERS' 2 "Tab Tab: the parameter screen"
-wait_for 'models \(rad/s2 per thrust, lag\): roll [0-9.e-]+/[0-9.]+ms pitch' 1 "the fitted models"
+wait_for 'model gain/lag: roll [0-9.e-]+/[0-9.]+ms pitch [0-9.e-]+/[0-9.]+ms yaw [0-9.e-]+/[0-9.]+ms' 1 "the fitted models"
 wait_for '^autotune +before +new +\| +before +new' 1 "old and new side by side"
 wait_for '^roll PM [0-9.]+->[0-9.]+ deg  GM [0-9.inf]+->[0-9.inf]+ dB  rise [0-9.]+->[0-9.]+ s' 1 "roll's figures before and after"
 wait_for '^yaw  PM [0-9.]+->[0-9.]+ deg' 1 "yaw's figures"
