@@ -20,8 +20,8 @@ std::string model_json(const AxisModel& m) {
 
 std::string margins_json(const Margins& m) {
   return "{\"phase_margin_deg\": " + json_number(m.phase_margin_deg) +
-         ", \"gain_margin_db\": " + json_number(m.gain_margin_db) + ", \"crossover_hz\": " + json_number(m.crossover_hz) +
-         "}";
+         ", \"gain_margin_db\": " + json_number(m.gain_margin_db) +
+         ", \"crossover_hz\": " + json_number(m.crossover_hz) + "}";
 }
 
 std::string step_json(const StepFigures& s) {

@@ -20,8 +20,8 @@ enum class Action : uint8_t {
   mode_full_control,
   mode_acro,
   mode_autotune,  // the identification flight, from full control (issue 34)
-  motor_test,   // the motor test screen (in safe, propellers off)
-  height_hold,  // toggles: height hold from full control, full control from height hold
+  motor_test,     // the motor test screen (in safe, propellers off)
+  height_hold,    // toggles: height hold from full control, full control from height hold
   lift_up,
   lift_down,
   lift_up_coarse,  // ten steps at once: from the ground to a hover in a few presses

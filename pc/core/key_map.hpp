@@ -29,8 +29,8 @@ inline constexpr KeyBinding kKeyMap[] = {
     {'3', Action::mode_calibration},
     {'4', Action::mode_yaw_control},
     {'5', Action::mode_full_control},
-    {'7', Action::height_hold},  // IN4073's height mode key
-    {'8', Action::mode_acro},    // after IN4073's keys: the rate loops alone
+    {'7', Action::height_hold},    // IN4073's height mode key
+    {'8', Action::mode_acro},      // after IN4073's keys: the rate loops alone
     {'=', Action::mode_autotune},  // every letter and digit is taken (capitals fold to small ones)
     {'a', Action::lift_up},
     {'z', Action::lift_down},

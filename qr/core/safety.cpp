@@ -55,8 +55,8 @@ constexpr Guard kGuards[] = {
     {NackReason::not_calibrated,
      [](Mode, Mode to, const Situation& s, const SafetyLimits&) { return rule(to).holds_height && !s.height_valid; }},
     // A mode entered in flight needs the vehicle flying: a height to hold, a hover to excite.
-    {NackReason::not_flying, [](Mode, Mode to, const Situation& s,
-                                const SafetyLimits&) { return wire::entered_in_flight(to) && s.landed; }},
+    {NackReason::not_flying,
+     [](Mode, Mode to, const Situation& s, const SafetyLimits&) { return wire::entered_in_flight(to) && s.landed; }},
     // The height to hold is the barometer's (rule 20); full control does without it.
     {NackReason::barometer_fault, [](Mode, Mode to, const Situation& s,
                                      const SafetyLimits&) { return rule(to).holds_height && !s.barometer_healthy; }},
@@ -250,8 +250,8 @@ void SafetyMachine::calibration_finished() {
 void SafetyMachine::sticks_moved(const ControlInput& c) {
   if (mode_ == Mode::height_hold && c.lift != held_.lift) enter(Mode::full_control);
   // The autotune flies the sticks it was entered with: any movement is the pilot taking over.
-  if (mode_ == Mode::autotune && (c.lift != held_.lift || c.roll != held_.roll || c.pitch != held_.pitch ||
-                                  c.yaw != held_.yaw)) {
+  if (mode_ == Mode::autotune &&
+      (c.lift != held_.lift || c.roll != held_.roll || c.pitch != held_.pitch || c.yaw != held_.yaw)) {
     enter(Mode::full_control);
   }
   if (mode_ == Mode::motor_test && c.lift > 0) enter(Mode::safe);

@@ -46,7 +46,7 @@ concept SignalChain = requires(C& c, const C& cc, const wire::ParameterValues& p
   c.enter_attitude_control();
   c.enter_yaw_control();
   c.enter_height_hold();
-  c.enter_identification();  // the autotune's: its sequence starts (chain/identification.hpp)
+  c.enter_identification();     // the autotune's: its sequence starts (chain/identification.hpp)
   c.start_descent(uint16_t{});  // a panic that lands, from the lift that was flying
   c.fly(chain::kOpenLoop);      // the door: where each axis and the lift come from (engine_sources.hpp)
   // read-outs: the safety machine's, in its parameters' units
@@ -55,7 +55,7 @@ concept SignalChain = requires(C& c, const C& cc, const wire::ParameterValues& p
   {cc.wrong_sign()};           // the sign check's verdict (chain/sign_check.hpp)
   {cc.landed()};
   {cc.identification_over()};  // the autotune's sequence has ended (or never started)
-  {cc.hover_lift()};  // engine units, 0: not learnt
+  {cc.hover_lift()};           // engine units, 0: not learnt
   {cc.height_valid()};
   {cc.tilt_mrad()};
   {cc.height_mm()};

@@ -136,9 +136,9 @@ struct CommandRun {
 };
 
 constexpr CommandRun kCommands[] = {
-    {Command::none, show_usage}, {Command::help, show_usage}, {Command::replay, replay}, {Command::list, list},
-    {Command::soak, soak},       {Command::serve, serve},     {Command::sweep, sweep},   {Command::scenario, scenario},
-    {Command::autotune, autotune},
+    {Command::none, show_usage}, {Command::help, show_usage},   {Command::replay, replay},
+    {Command::list, list},       {Command::soak, soak},         {Command::serve, serve},
+    {Command::sweep, sweep},     {Command::scenario, scenario}, {Command::autotune, autotune},
 };
 
 }  // namespace

@@ -37,8 +37,8 @@ VehicleAxes axes_of(const sim::VehicleParams& v) {
   const double rest = v.battery_cells * sim::lipo_cell_volts(v.battery_initial_soc);
   double volts = rest;
   for (int n = 0; n < 4; ++n) {  // the current depends on the voltage it sags
-    const double current =
-        4 * sim::rotor_shaft_power(v, w_h) / (v.powertrain_efficiency * volts) + v.avionics_current_a;
+    const double current = 4 * sim::rotor_shaft_power(v, w_h) / (v.powertrain_efficiency * volts) +
+                           v.avionics_current_a;
     volts = rest - current * v.battery_resistance_ohm;
   }
   const double w_max = v.speed_per_volt() * volts;

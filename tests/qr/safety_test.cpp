@@ -16,8 +16,9 @@ bool same(const EngineCommand& a, const EngineCommand& b) {
   }
   return true;
 }
-constexpr Mode kAllModes[] = {Mode::safe,         Mode::panic,       Mode::manual,     Mode::calibration, Mode::yaw_control,
-                              Mode::full_control, Mode::height_hold, Mode::motor_test, Mode::autotune};
+constexpr Mode kAllModes[] = {Mode::safe,        Mode::panic,       Mode::manual,
+                              Mode::calibration, Mode::yaw_control, Mode::full_control,
+                              Mode::height_hold, Mode::motor_test,  Mode::autotune};
 
 struct Safety : ::testing::Test {
   SafetyLimits limits = safety_limits(wire::ParameterValues{});

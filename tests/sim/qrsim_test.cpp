@@ -380,7 +380,8 @@ TEST(Qrsim, AutotuneFitsEachAxisAndItsParamsFlyAsParams) {
   const std::string rest = tune.out.substr(ratios);
   for (const char* axis : {"roll", "pitch", "yaw"}) {
     EXPECT_NEAR(json_number_after(rest, std::string("\"") + axis + "\"", "gain"), 1, 0.15) << axis << ": " << rest;
-    EXPECT_NEAR(json_number_after(rest, std::string("\"") + axis + "\"", "motor_tau_s"), 1, 0.15) << axis << ": " << rest;
+    EXPECT_NEAR(json_number_after(rest, std::string("\"") + axis + "\"", "motor_tau_s"), 1, 0.15)
+        << axis << ": " << rest;
   }
   EXPECT_NE(tune.out.find("\"keeps_targets\": true"), std::string::npos) << tune.out;
   const size_t params = tune.out.find("\"params\": {");

@@ -278,7 +278,8 @@ const Mistake kMistakes[] = {
     {"seconds: 3\nat 0 lift still\nat 0 lift 1.02\nat 0.5 mode height\n", "mine.txt:4: ", "lift still"},
     {"seconds: 3\nat 0.5 mode height\nat 0.5 lift still\n", "mine.txt:2: ", "lift still"},
     // So does the autotune (rule 23): the same rule, the mode's own name.
-    {"seconds: 3\nat 0.5 mode autotune\n", "mine.txt:2: ", "mode autotune with the pilot's lift hand moving: autotune ends"},
+    {"seconds: 3\nat 0.5 mode autotune\n",
+     "mine.txt:2: ", "mode autotune with the pilot's lift hand moving: autotune ends"},
     // The sensors' faults (docs/drivers.md section 7, "Faults").
     {"seconds: 3\nat 0 nack gps for 1\n", "mine.txt:2: ", "nack needs imu|baro for SECONDS"},
     {"seconds: 3\nat 0 nack imu 1\n", "mine.txt:2: ", "nack needs imu|baro for SECONDS"},

@@ -29,7 +29,7 @@ struct FirmwareView {
   // Only the host build shows these (the devboard's frames leave them out, common/sensor_link.hpp).
   bool has_rates = false;
   int16_t yaw_e4 = 0, p_e3 = 0, q_e3 = 0, r_e3 = 0;
-  int16_t moment_e1[3] = {0, 0, 0};  // roll, pitch, yaw: asked of the mixer (tenths of thrust units)
+  int16_t moment_e1[3] = {0, 0, 0};       // roll, pitch, yaw: asked of the mixer (tenths of thrust units)
   int32_t height_mm = 0, climb_mm_s = 0;  // the height estimate
   qr::ControlInput controls;              // the sticks the tick flew with
   uint32_t deadline_misses = 0;

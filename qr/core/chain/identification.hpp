@@ -20,12 +20,12 @@ namespace qr::chain {
 template <class Thrust, uint32_t SampleHz>
 class IdentificationSequence {
  public:
-  static constexpr uint8_t kAxes = 3;                       // roll, pitch, yaw
-  static constexpr uint32_t kQuietTicks = SampleHz / 2;     // 0.5 s before each axis: the loops settle
-  static constexpr uint32_t kBitTicks = SampleHz / 50;      // 20 ms a bit
-  static constexpr uint32_t kBits = 127;                    // a 7-bit register's whole period: 2.54 s
+  static constexpr uint8_t kAxes = 3;                    // roll, pitch, yaw
+  static constexpr uint32_t kQuietTicks = SampleHz / 2;  // 0.5 s before each axis: the loops settle
+  static constexpr uint32_t kBitTicks = SampleHz / 50;   // 20 ms a bit
+  static constexpr uint32_t kBits = 127;                 // a 7-bit register's whole period: 2.54 s
   static constexpr uint32_t kAxisTicks = kQuietTicks + kBits * kBitTicks;
-  static constexpr uint32_t kTicks = kAxes * kAxisTicks;    // 9.1 s in all
+  static constexpr uint32_t kTicks = kAxes * kAxisTicks;  // 9.1 s in all
 
   // The moment added on each axis: `tilt` to roll and pitch, `yaw` to yaw (thrust units).
   constexpr IdentificationSequence(Thrust tilt, Thrust yaw) : amplitude_{tilt, tilt, yaw} {}
@@ -64,7 +64,7 @@ class IdentificationSequence {
   }
 
   Thrust amplitude_[kAxes];
-  uint32_t tick_ = kTicks;  // not started: done
+  uint32_t tick_ = kTicks;    // not started: done
   uint8_t register_ = kSeed;  // 7 bits
 };
 
