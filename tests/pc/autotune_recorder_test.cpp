@@ -190,5 +190,38 @@ TEST(AutotuneProposal, ARefusedFitIsALineNotACrash) {
   EXPECT_FALSE(p.accept(sync)) << "nothing to take";
 }
 
+// A design taken (as the fit's thread hands it over): old and new side by side, ^T makes the new
+// values the console's (sent one by one), ^R the old ones again.
+TEST(AutotuneProposal, TakesTheNewGainsAndGoesBack) {
+  AutotuneProposal::Outcome outcome;
+  outcome.design.emplace();
+  outcome.design->roll_pitch = {7.25, 235.25, 85.3125, 9.05859375};
+  outcome.design->yaw = {784, 1000};
+  outcome.design->keeps = true;
+  const wire::ParameterValues flown;  // the defaults
+  AutotuneProposal p;
+  p.take(outcome, flown);
+  ASSERT_EQ(p.standing(), AutotuneProposal::Standing::proposed);
+  ASSERT_EQ(p.changes().size(), 6u);
+  EXPECT_EQ(p.changes()[0].id, wire::ParamId::roll_pitch_p1);
+  EXPECT_EQ(p.changes()[0].before, flown.get(wire::ParamId::roll_pitch_p1));
+  EXPECT_EQ(p.changes()[0].after, 1856) << "7.25 in 1/256";
+  const std::vector<std::string> lines = p.lines();
+  ASSERT_EQ(lines.size(), 8u);
+  EXPECT_EQ(lines[2].substr(0, 32), "roll_pitch_p1     5.500    7.250");
+  EXPECT_NE(lines[4].find("yaw_i           300.000 1000.000"), std::string::npos) << lines[4];
+  EXPECT_EQ(lines.back(), "proposed: ^T sends the new gains");
+
+  std::vector<std::string> notes;
+  ParameterSync sync(flown, [&](Severity, const std::string& t) { notes.push_back(t); });
+  ASSERT_TRUE(p.accept(sync));
+  for (const GainChange& c : p.changes()) EXPECT_EQ(sync.wanted().get(c.id), c.after) << static_cast<int>(c.id);
+  EXPECT_EQ(sync.to_send(), 6u);
+  EXPECT_EQ(p.standing(), AutotuneProposal::Standing::accepted);
+  ASSERT_TRUE(p.back(sync));
+  for (const GainChange& c : p.changes()) EXPECT_EQ(sync.wanted().get(c.id), c.before) << static_cast<int>(c.id);
+  EXPECT_EQ(p.lines().back(), "the gains before sent again: ^T takes the new ones");
+}
+
 }  // namespace
 }  // namespace qrterm
