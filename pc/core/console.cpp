@@ -73,8 +73,12 @@ Console::Console(ConsoleLog& log, ConsoleFiles files, const Setup& setup, uint32
           [this](const std::string& name) { return recordings_.open(name); },
           [this](const std::string& from, const std::string& to) { return recordings_.rename(from, to); }}),
       input_(setup.joystick), simulator_(setup.simulator, note_hook()), exit_(note_hook()),
-      streams_(StreamSession::Hooks{note_hook(), [this](const std::string& name) { return recordings_.open(name); }}),
-      editor_(setup.params, setup.params_file), params_file_(setup.params_file),
+      streams_(StreamSession::Hooks{
+          note_hook(), [this](const std::string& name) { return recordings_.open(name); },
+          [this](const std::vector<uint8_t>& ids, uint32_t index, const std::vector<double>& values) {
+            autotune_.on_carried(ids, index, values);
+          }}),
+      autotune_(note_hook()), editor_(setup.params, setup.params_file), params_file_(setup.params_file),
       check_(OrientationCheck::Hooks{
           note_hook(),
           [this] {
@@ -85,7 +89,7 @@ Console::Console(ConsoleLog& log, ConsoleFiles files, const Setup& setup, uint32
           },
           [this](size_t axis) { return simulator_.hand_tilt(axis); },
           [this](int orientation) { return set_imu_orientation(orientation); }}),
-      screens_(streams_, editor_, parameters_, check_, note_hook()),
+      screens_(streams_, editor_, parameters_, check_, autotune_, note_hook()),
       requests_(link_, telemetry_, controls_, input_, simulator_, note_hook()),
       bench_(MotorBench::Hooks{
           [this](uint8_t engine, uint16_t level) { return requests_.motor_test(engine, level, now_ms_); },
@@ -253,6 +257,7 @@ void Console::on_attitude(const wire::TelemetryAttitude& attitude) {
   telemetry_.on(attitude);
   bench_.mode(attitude.mode);
   check_.on_mode(attitude.mode);
+  autotune_.on_attitude(attitude, telemetry_hz(), control_hz(), parameters_.wanted(), now_ms_);
   for (const Notice& notice : attitude_notices(before, attitude)) note(notice.severity, notice.text);
   recordings_.telemetry_row(now_ms_ - start_ms_, telemetry_, requests_.last_control());
 }
@@ -405,6 +410,7 @@ void Console::tick(uint32_t now_ms) {
 
   if (state == LinkState::up && exit_.running()) {
     parameters_.tick(link_, now_ms);
+    autotune_.tick(streams_, now_ms);
     streams_.tick(link_, now_ms);
   }
 

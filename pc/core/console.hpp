@@ -14,6 +14,7 @@
 //   the simulator          SimulatorControls (truth channel), radio_pilot (the radio as the pilot)
 //   before the first flight OrientationCheck (is the IMU mounted as the QR takes it?)
 //   the motor test         MotorBench (its screen's steps, the truth of which rotor turned)
+//   autotune               AutotuneSession (records the identification, proposes gains)
 #pragma once
 
 #include <stddef.h>
@@ -29,6 +30,7 @@
 
 #include <common/messages.hpp>
 #include <common/parameter_table.hpp>
+#include <pc/core/autotune_session.hpp>
 #include <pc/core/battery_gauge.hpp>
 #include <pc/core/console_log.hpp>
 #include <pc/core/debug_text.hpp>
@@ -121,6 +123,7 @@ class Console {
   const StreamSession& streams() const { return streams_; }
   const ParameterEditor& parameter_editor() const { return editor_; }
   const ParameterSync& parameter_sync() const { return parameters_; }
+  const AutotuneSession& autotune() const { return autotune_; }
   const MotorBench& motor_bench() const { return bench_; }
   const OrientationCheck& orientation_check() const { return check_; }
   const std::string& params_file() const { return params_file_; }  // the parameter file the console keeps
@@ -190,6 +193,7 @@ class Console {
   uint32_t unhandled_frames_ = 0;
   std::set<uint8_t> unhandled_types_;
   StreamSession streams_;
+  AutotuneSession autotune_;
   ParameterEditor editor_;
   std::string params_file_;  // the parameter file the console keeps (--params)
   OrientationCheck check_;

@@ -9,10 +9,15 @@ struct NamedKey {
 };
 
 constexpr NamedKey kNamedKeys[] = {
-    {kKeyEscape, "ESC"},  {kKeyInterrupt, "^C"},        {kKeyUp, "up"},     {kKeyDown, "down"},
-    {kKeyLeft, "left"},   {kKeyRight, "right"},         {' ', "space"},     {kKeyTab, "Tab"},
-    {kKeyEnter, "Enter"}, {kKeyBackspace, "Backspace"}, {19, "^S"},         {15, "^O"},
-    {kKeyPageUp, "PgUp"}, {kKeyPageDown, "PgDn"},       {kKeyHome, "Home"},
+    {kKeyEscape, "ESC"},  {kKeyInterrupt, "^C"},
+    {kKeyUp, "up"},       {kKeyDown, "down"},
+    {kKeyLeft, "left"},   {kKeyRight, "right"},
+    {' ', "space"},       {kKeyTab, "Tab"},
+    {kKeyEnter, "Enter"}, {kKeyBackspace, "Backspace"},
+    {19, "^S"},           {15, "^O"},
+    {20, "^T"},           {18, "^R"},
+    {kKeyPageUp, "PgUp"}, {kKeyPageDown, "PgDn"},
+    {kKeyHome, "Home"},
 };
 
 }  // namespace

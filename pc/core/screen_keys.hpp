@@ -40,6 +40,8 @@ enum class ScreenAction : uint8_t {
   param_all_defaults,
   param_save,  // opens the prompt: a file name
   param_load,
+  param_take_tuned,       // autotune's new gains to the QR
+  param_back_from_tuned,  // the gains flown before autotune to the QR again
   radio_ends_again,
   orientation_enter,    // start the step; on the verdict, set it or check again
   orientation_restart,  // from the first step again
@@ -54,6 +56,8 @@ struct ScreenKey {
 
 inline constexpr Key kKeyCtrlS = 19;
 inline constexpr Key kKeyCtrlO = 15;
+inline constexpr Key kKeyCtrlT = 20;
+inline constexpr Key kKeyCtrlR = 18;  // not ^B: the prefix of tmux, where many run the console
 
 inline constexpr ScreenKey kScreenKeys[] = {
     {Screen::plot, '/', ScreenAction::plot_pick, "pick observables by name"},
@@ -74,6 +78,8 @@ inline constexpr ScreenKey kScreenKeys[] = {
     {Screen::parameters, '!', ScreenAction::param_all_defaults, "every parameter to its default"},
     {Screen::parameters, kKeyCtrlS, ScreenAction::param_save, "save to a named file"},
     {Screen::parameters, kKeyCtrlO, ScreenAction::param_load, "load a named file"},
+    {Screen::parameters, kKeyCtrlT, ScreenAction::param_take_tuned, "take autotune's new gains"},
+    {Screen::parameters, kKeyCtrlR, ScreenAction::param_back_from_tuned, "back to the gains before autotune"},
     {Screen::radio, ' ', ScreenAction::radio_ends_again, "count the sticks' ends again from now"},
     {Screen::orientation, kKeyEnter, ScreenAction::orientation_enter, "start the step / set it"},
     {Screen::orientation, kKeyBackspace, ScreenAction::orientation_restart, "from step 1 again"},

@@ -55,6 +55,8 @@ bool ScreenState::screen_key(Key key, double now_s) {
     }
     case ScreenAction::param_save: prompt_ = Prompt{PromptKind::save, editor_.file_name()}; break;
     case ScreenAction::param_load: prompt_ = Prompt{PromptKind::load, ""}; break;
+    case ScreenAction::param_take_tuned: autotune_.accept(parameters_); break;
+    case ScreenAction::param_back_from_tuned: autotune_.back(parameters_); break;
     case ScreenAction::radio_ends_again: streams_.radio().restart_ends(); break;
     case ScreenAction::orientation_enter: check_.enter(); break;
     case ScreenAction::orientation_restart: check_.start(); break;

@@ -11,6 +11,7 @@
 #include <optional>
 #include <string>
 
+#include <pc/core/autotune_session.hpp>
 #include <pc/core/console_log.hpp>
 #include <pc/core/key.hpp>
 #include <pc/core/orientation_check.hpp>
@@ -33,8 +34,9 @@ class ScreenState {
   using Note = std::function<void(Severity, const std::string&)>;
 
   ScreenState(StreamSession& streams, ParameterEditor& editor, ParameterSync& parameters, OrientationCheck& check,
-              Note note)
-      : streams_(streams), editor_(editor), parameters_(parameters), check_(check), note_(std::move(note)) {}
+              AutotuneSession& autotune, Note note)
+      : streams_(streams), editor_(editor), parameters_(parameters), check_(check), autotune_(autotune),
+        note_(std::move(note)) {}
 
   enum class Taken : uint8_t {
     no,         // the cockpit's key
@@ -76,6 +78,7 @@ class ScreenState {
   ParameterEditor& editor_;
   ParameterSync& parameters_;
   OrientationCheck& check_;
+  AutotuneSession& autotune_;
   Note note_;
   Screen screen_ = Screen::cockpit;
   bool help_ = false;

@@ -131,7 +131,9 @@ StreamPlan StreamSession::wanted(uint8_t stream) const {
     const auto first = rc_ids_->begin() + stream * wire::kStreamObservablesMax;
     return StreamPlan{std::vector<uint8_t>(first, first + wire::kStreamObservablesMax), divider};
   }
-  if (stream != kPlotStream || plot_.traces().empty()) return StreamPlan{};
+  if (stream != kPlotStream) return StreamPlan{};
+  if (!carried_.empty()) return StreamPlan{carried_, 1};
+  if (plot_.traces().empty()) return StreamPlan{};
   return StreamPlan{plot_.ids(), plot_.divider(catalog_.control_hz())};
 }
 
@@ -229,6 +231,10 @@ void StreamSession::answered(uint8_t stream, const StreamPlan& plan, wire::NackR
   unpackers_[stream].start(static_cast<uint8_t>(plan.ids.size()));
   if (radio) return note_radio_state();
   if (stream != kPlotStream || radio_streams()) return;
+  if (!carried_.empty() && plan.ids == carried_) {
+    state_ = "carrying autotune's identification";
+    return;
+  }
   if (plan.divider == 0) {
     state_ = "stopped";
     return;
@@ -262,7 +268,28 @@ void StreamSession::on(const wire::ObservableSamples& m, double now_s) {
     });
     return;
   }
-  if (stream == kPlotStream) on_plot_samples(m, now_s);
+  if (stream != kPlotStream) return;
+  if (!carried_.empty()) return on_carried_samples(m);
+  on_plot_samples(m, now_s);
+}
+
+void StreamSession::on_carried_samples(const wire::ObservableSamples& m) {
+  wire::SampleUnpacker& unpacker = unpackers_[kPlotStream];
+  std::vector<std::vector<double>> samples;
+  unpacker.unpack(m, [&](const int16_t* bits) {
+    std::vector<double> values;
+    for (size_t i = 0; i < carried_.size(); ++i) {
+      const ObservableRow* row = catalog_.row(carried_[i]);
+      values.push_back(row != nullptr ? row->value(bits[i]) : 0.0);
+    }
+    samples.push_back(std::move(values));
+  });
+  // The frame's samples are the newest; their numbers follow from the frames' counter.
+  const uint32_t first_index = unpacker.received() + unpacker.lost() - static_cast<uint32_t>(samples.size());
+  for (size_t j = 0; j < samples.size(); ++j) {
+    ++received_;
+    if (hooks_.carried) hooks_.carried(carried_, first_index + static_cast<uint32_t>(j), samples[j]);
+  }
 }
 
 void StreamSession::on_plot_samples(const wire::ObservableSamples& m, double now_s) {

@@ -51,6 +51,9 @@ class StreamSession {
   struct Hooks {
     std::function<void(Severity, const std::string&)> note;
     std::function<std::unique_ptr<std::ostream>(const std::string& name)> open;  // a file in the log folder
+    // A sample of the stream carried for autotune: its observables (the ids asked for), its
+    // number in the stream (control periods at divider 1, lost samples counted), the values.
+    std::function<void(const std::vector<uint8_t>& ids, uint32_t index, const std::vector<double>& values)> carried;
   };
   explicit StreamSession(Hooks hooks) : hooks_(std::move(hooks)) {}
 
@@ -82,6 +85,12 @@ class StreamSession {
   // The QR runs the four streams as the radio screen asked.
   bool radio_streaming() const { return radio_streaming_; }
 
+  // --- autotune (identification_recorder.hpp): while `ids` is not empty, stream 0 carries them
+  // at the control rate in the plot's place (its traces wait, as for the radio screen), and the
+  // samples go to the carried hook; empty gives stream 0 back to the plot.
+  void carry(const std::vector<uint8_t>& ids) { carried_ = ids; }
+  const std::vector<uint8_t>& carried() const { return carried_; }
+
   // --- the pilot
   // Adds the observables named in `names` (separated by spaces), as many as fit.
   void pick(const std::string& names);
@@ -112,6 +121,7 @@ class StreamSession {
   void ask(LinkSession& link, uint8_t stream, const StreamPlan& plan, uint32_t now_ms);
   void answered(uint8_t stream, const StreamPlan& plan, wire::NackReason reason, uint32_t telemetry_hz);
   void on_plot_samples(const wire::ObservableSamples& m, double now_s);
+  void on_carried_samples(const wire::ObservableSamples& m);
   void note_radio_state();
 
   Hooks hooks_;
@@ -119,6 +129,7 @@ class StreamSession {
   PlotModel plot_;
   RadioSetup radio_;
   bool radio_open_ = false;
+  std::vector<uint8_t> carried_;                // autotune's pair; empty: the plot has stream 0
   std::optional<std::vector<uint8_t>> rc_ids_;  // rc_ch1..rc_ch16's ids in the QR's table
   std::string radio_state_ = "no table yet";
   bool radio_streaming_ = false;

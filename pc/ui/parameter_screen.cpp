@@ -1,6 +1,7 @@
 // The parameter screen: every row of the parameter table with the console's value, what the QR
 // reports, the range, the default and the file's value where it differs; the selected row's unit
-// and meaning below.
+// and meaning below; after an autotune flight, the gains flown beside the new ones with their
+// figures, under the list (autotune_proposal.hpp).
 #include <pc/core/param_file.hpp>
 #include <pc/ui/screen_draw.hpp>
 #include <pc/ui/screens.hpp>
@@ -18,7 +19,9 @@ void draw_parameter_screen(const Console& console, int top, int rows, int width)
       A_UNDERLINE);
 
   const int list_top = top + 2;
-  const int list_rows = std::max(1, rows - 6);
+  const std::vector<std::string> tuned = console.autotune().proposal().lines();
+  const int tuned_rows = static_cast<int>(tuned.size());
+  const int list_rows = std::max(1, rows - 6 - tuned_rows);
   const int count = static_cast<int>(wire::kParameterCount);
   const int cursor = static_cast<int>(editor.cursor());
   const int first = std::clamp(cursor - list_rows / 2, 0, std::max(0, count - list_rows));
@@ -50,7 +53,14 @@ void draw_parameter_screen(const Console& console, int top, int rows, int width)
   put(meaning_row, 0, meaning.substr(0, static_cast<size_t>(width)), kQr);
   if (meaning.size() > static_cast<size_t>(width))
     put(meaning_row + 1, 0, meaning.substr(static_cast<size_t>(width)), kQr);
-  put(top + rows - 2, 0, "up/down  left/right step  Enter type  = default  ! all default  ^S save  ^O load", kDim);
+  for (int i = 0; i < tuned_rows; ++i) {
+    put(meaning_row + 2 + i, 0, tuned[static_cast<size_t>(i)].substr(0, static_cast<size_t>(width)), i == 0 ? kQr : 0,
+        i == 1 ? A_UNDERLINE : A_NORMAL);
+  }
+  put(top + rows - 2, 0,
+      std::string("up/down  left/right step  Enter type  = default  ! all default  ^S save  ^O load") +
+          (tuned_rows > 1 ? "  ^T tuned  ^R before" : ""),
+      kDim);
   draw_prompt_or_log(console, top + rows - 1, width);
 }
 

@@ -11,7 +11,7 @@
 #include <qr/core/control_rate.hpp>
 #include <qr/sim_runner/vehicle_axes.hpp>
 #include <tune/axis_fit.hpp>
-#include <tune/loop_design.hpp>
+#include <tune/identification_design.hpp>
 #include <tune/report_json.hpp>
 
 namespace qrsim {
@@ -19,7 +19,7 @@ namespace {
 
 // The sequence's timing, as the firmware runs it: each axis' quiet half second, then its bits.
 using Sequence = qr::chain::IdentificationSequence<int32_t, qr::kControlHz>;
-constexpr const char* kAxisNames[3] = {"roll", "pitch", "yaw"};
+using tune::kAxisNames;
 
 // What the firmware logged while in mode autotune, split by the axis being excited.
 struct IdentificationLog {
@@ -80,34 +80,11 @@ int run_autotune(const RunOptions& given, FILE* out) {
   wire::ParameterValues flown;  // the defaults, then what the pilot uploaded
   for (const auto& [id, raw] : script.parameters) flown.set(static_cast<uint8_t>(id), raw);
   for (const auto& [id, raw] : options.parameters) flown.set(static_cast<uint8_t>(id), raw);
-  tune::DesignLimits limits;
-  limits.control_hz = qr::kControlHz;
-  limits.filter_cutoff_hz = flown.get(wire::ParamId::filter_cutoff_hz);
-
-  std::array<tune::AxisModel, 3> models;
-  for (size_t i = 0; i < 3; ++i) {
-    tune::AxisRecord& record = log.axes[i];
-    record.sample_hz = qr::kControlHz;
-    record.filter_cutoff_hz = limits.filter_cutoff_hz;
-    record.yaw = i == 2;
-    std::string why;
-    const std::optional<tune::AxisModel> m = tune::fit_axis(record, &why);
-    if (!m) return fail(out, std::string(kAxisNames[i]) + "'s fit: " + why);
-    models[i] = *m;
-  }
-
-  const tune::RollPitchGains rp = tune::design_roll_pitch(std::span<const tune::AxisModel>(models.data(), 2), limits);
-  const tune::YawGains yaw = tune::design_yaw(models[2], limits).gains;
-  const tune::RollPitchGains rp_before = tune::roll_pitch_gains(flown);
-  const tune::YawGains yaw_before = tune::yaw_gains(flown);
-  // The figures on the fitted models: the roll axis (pitch shares its gains), and yaw.
-  const tune::AxisDesign before = tune::evaluate(models[0], rp_before, limits);
-  const tune::AxisDesign after = tune::evaluate(models[0], rp, limits);
-  const tune::AxisDesign after_pitch = tune::evaluate(models[1], rp, limits);
-  const tune::YawDesign yaw_then = tune::evaluate(models[2], yaw_before, limits);
-  const tune::YawDesign yaw_now = tune::evaluate(models[2], yaw, limits);
-  const bool keeps = tune::keeps_targets(after, limits) && tune::keeps_targets(after_pitch, limits) &&
-                     tune::keeps_targets(yaw_now, limits);
+  std::array<tune::AxisRecord, 3> records = log.axes;
+  std::string why;
+  const std::optional<tune::IdentificationDesign> d = tune::design_from_identification(std::move(records), flown,
+                                                                                       qr::kControlHz, &why);
+  if (!d) return fail(out, why);
 
   const sim::VehicleParams vehicle = given.vehicle ? *given.vehicle : sim::default_vehicle();
   const VehicleAxes truth = axes_of(vehicle);
@@ -116,10 +93,10 @@ int run_autotune(const RunOptions& given, FILE* out) {
       "{\"autotune\": {\"vehicle\": \"%s\", \"seed\": %llu, \"model\": %s, \"truth\": %s, \"model_over_truth\": %s, "
       "\"params\": %s, \"margins\": {\"before\": %s, \"after\": %s}, \"keeps_targets\": %s, "
       "\"flight\": {\"max_tilt_deg_truth\": %s, \"final_mode\": \"%s\"}}}\n",
-      flight.vehicle.c_str(), static_cast<unsigned long long>(options.seed), axes_json(models).c_str(),
-      axes_json({truth.roll, truth.pitch, truth.yaw}).c_str(), ratios_json(models, truth).c_str(),
-      tune::params_json(rp, yaw).c_str(), tune::design_json(before, yaw_then).c_str(),
-      tune::design_json(after, yaw_now).c_str(), keeps ? "true" : "false",
+      flight.vehicle.c_str(), static_cast<unsigned long long>(options.seed), axes_json(d->models).c_str(),
+      axes_json({truth.roll, truth.pitch, truth.yaw}).c_str(), ratios_json(d->models, truth).c_str(),
+      tune::params_json(d->roll_pitch, d->yaw).c_str(), tune::design_json(d->before, d->yaw_then).c_str(),
+      tune::design_json(d->after, d->yaw_now).c_str(), d->keeps ? "true" : "false",
       tune::json_number(flight.figure("max_tilt_deg_truth")).c_str(), flight.final_mode.c_str());
   return 0;
 }

@@ -57,7 +57,8 @@ TEST(StreamSession, SamplesReachThePlotAndTheCsvWithUnitsInTheColumnNames) {
                                              [&](const std::string& name) {
                                                auto out = files.open(name);
                                                return out;
-                                             }});
+                                             },
+                                             {}});
   send_observable_table(session);
   session.pick("phi p nothing");
   EXPECT_EQ(session.plot().traces().size(), 2u);

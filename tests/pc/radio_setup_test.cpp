@@ -121,7 +121,7 @@ std::vector<wire::StreamRequest> requests_sent(LinkSession& link) {
 
 struct RadioStreams : ::testing::Test {
   std::vector<std::string> notes;
-  StreamSession session{StreamSession::Hooks{[this](Severity, const std::string& t) { notes.push_back(t); }, {}}};
+  StreamSession session{StreamSession::Hooks{[this](Severity, const std::string& t) { notes.push_back(t); }, {}, {}}};
   LinkSession link{0, 1};
 
   RadioStreams() {
