@@ -65,9 +65,10 @@
 // samples: at 8 kHz and a 1 kHz world, eight equal records a period).
 //
 // Not modelled: the DLPF's filtering and delay (the noise bandwidth is the vehicle file's
-// imu_bandwidth_hz; the self-test's response steps in at the next sample), cycle mode and standby axes (PWR_MGMT_2), TEMP_DIS beyond holding
-// the temperature, the clock source, motion detection, the auxiliary I2C master and its external
-// sensor data, the DMP, the INT pin, the gyro's 30 ms settling after waking.
+// imu_bandwidth_hz; the self-test's response steps in at the next sample), cycle mode and standby
+// axes (PWR_MGMT_2), TEMP_DIS beyond holding the temperature, the clock source, motion detection,
+// the auxiliary I2C master and its external sensor data, the DMP, the INT pin, the gyro's 30 ms
+// settling after waking.
 #pragma once
 
 #include <stddef.h>

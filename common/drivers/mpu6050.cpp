@@ -31,16 +31,20 @@ bool all_bytes_equal(const uint8_t* bytes, uint8_t count, uint8_t value) {
   return true;
 }
 
-// The 14 data bytes of a reply, decoded, when they can be a sample (see all_bytes_equal; a
-// temperature the chip is specified at).
-bool plausible_burst(const I2cReply& reply, Mpu6050Raw& raw) {
-  if (reply.count != mpu6050::kDataBytes || all_bytes_equal(reply.data, mpu6050::kDataBytes, 0x00) ||
-      all_bytes_equal(reply.data, mpu6050::kDataBytes, 0xFF)) {
-    return false;
-  }
+// A burst a chip can send (see all_bytes_equal), and a temperature it is specified at: the checks
+// of every burst, the flight's and the self-test's.
+bool plausible_bytes(const I2cReply& reply) {
+  return reply.count == mpu6050::kDataBytes && !all_bytes_equal(reply.data, mpu6050::kDataBytes, 0x00) &&
+         !all_bytes_equal(reply.data, mpu6050::kDataBytes, 0xFF);
+}
+
+Mpu6050Raw decode_reply(const I2cReply& reply) {
   uint8_t bytes[mpu6050::kDataBytes];
   for (uint8_t i = 0; i < mpu6050::kDataBytes; ++i) bytes[i] = reply.data[i];
-  raw = decode_mpu6050_data(bytes);
+  return decode_mpu6050_data(bytes);
+}
+
+bool plausible_temperature(const Mpu6050Raw& raw) {
   return raw.temperature >= mpu6050::kTempMinCounts && raw.temperature <= mpu6050::kTempMaxCounts;
 }
 
@@ -93,6 +97,7 @@ Mpu6050::Mpu6050(const Mpu6050Config& config) : config_(config) {
   configuration_[1] = config.dlpf;
   configuration_[2] = static_cast<uint8_t>(config.gyro_full_scale << mpu6050::kFullScaleShift);
   configuration_[3] = static_cast<uint8_t>(config.accel_full_scale << mpu6050::kFullScaleShift);
+  self_test_samples_ = self_test_samples(config);
   if (valid(config)) phase_ = Mpu6050Phase::starting;
 }
 
@@ -110,6 +115,11 @@ const uint8_t* Mpu6050::startup_bytes(uint8_t row) const {
     case Mpu6050StartupBytes::samples_on: break;
   }
   return kResetBytes;
+}
+
+uint8_t Mpu6050::transfers_of(const Mpu6050StartupRow& row) const {
+  const bool samples = row.bytes == Mpu6050StartupBytes::samples_off || row.bytes == Mpu6050StartupBytes::samples_on;
+  return samples ? self_test_samples_ : 1;
 }
 
 uint32_t Mpu6050::wait_us(Mpu6050Wait wait) const {
@@ -166,7 +176,7 @@ void Mpu6050::collect_startup(const I2cReply& reply, uint32_t now_us) {
   const Mpu6050StartupRow& row = kMpu6050Startup[row_];
   if (row.read && !take_startup_read(row, reply, now_us)) return;  // counted, and started over
   consecutive_failures_ = 0;
-  if (++repeat_ < row.times) return;
+  if (++repeat_ < transfers_of(row)) return;
   next_row(row, now_us);
 }
 
@@ -182,13 +192,17 @@ bool Mpu6050::take_startup_read(const Mpu6050StartupRow& row, const I2cReply& re
     return true;
   }
   if (row.bytes == Mpu6050StartupBytes::samples_off || row.bytes == Mpu6050StartupBytes::samples_on) {
-    Mpu6050Raw raw;
-    if (!plausible_burst(reply, raw)) {
+    if (!plausible_bytes(reply)) {
+      fail(Mpu6050Fault::impossible_value, now_us);
+      return false;
+    }
+    const Mpu6050Raw raw = decode_reply(reply);
+    if (!plausible_temperature(raw)) {
       fail(Mpu6050Fault::impossible_value, now_us);
       return false;
     }
     const bool on = row.bytes == Mpu6050StartupBytes::samples_on;
-    return take_self_test_sample(raw, on ? 1 : -1, on && repeat_ + 1 == row.times, now_us);
+    return take_self_test_sample(raw, on ? 1 : -1, on && repeat_ + 1 == transfers_of(row), now_us);
   }
   const uint8_t* expected = startup_bytes(row_);
   for (uint8_t i = 0; i < row.count; ++i) {
@@ -209,7 +223,7 @@ bool Mpu6050::take_self_test_sample(const Mpu6050Raw& raw, int32_t sign, bool la
   }
   if (!last) return true;
   ++self_tests_;
-  self_test_failures_ = mpu6050::self_test_failures(self_test_sums_, mpu6050::kSelfTestSamples, trim_);
+  self_test_failures_ = mpu6050::self_test_failures(self_test_sums_, self_test_samples_, trim_);
   if (self_test_failures_ == 0) return true;
   fail(Mpu6050Fault::self_test, now_us);
   return false;
@@ -229,8 +243,12 @@ void Mpu6050::next_row(const Mpu6050StartupRow& done, uint32_t now_us) {
 }
 
 void Mpu6050::collect_burst(const I2cReply& reply, uint32_t now_us) {
-  Mpu6050Raw raw;
-  if (!plausible_burst(reply, raw)) {
+  if (!plausible_bytes(reply)) {
+    fail(Mpu6050Fault::impossible_value, now_us);
+    return;
+  }
+  const Mpu6050Raw raw = decode_reply(reply);
+  if (!plausible_temperature(raw)) {
     fail(Mpu6050Fault::impossible_value, now_us);
     return;
   }

@@ -14,9 +14,9 @@
 //   [p] read SELF_TEST_X..A                  the factory trim (mpu6050_self_test.hpp)
 //   [p] write GYRO_CONFIG, ACCEL_CONFIG = ±250 °/s, ±8 g, self-test off
 //   read PWR_MGMT_1 back, wait 30 ms         the gyros settle (PS 6.1, see kGyroSettleUs)
-//   [p] read the data 8 times                self-test off
+//   [p] read the data, 8 ms of samples       self-test off
 //   [p] write GYRO_CONFIG, ACCEL_CONFIG with every axis' self-test bit, wait for the filter
-//   [p] read the data 8 times                self-test on: each axis' response judged
+//   [p] read the data, 8 ms of samples       self-test on: each axis' response judged
 //   [p] write GYRO_CONFIG, ACCEL_CONFIG as configured, read them back, wait for the filter
 //
 // then every tick the 14 data bytes, ACCEL_XOUT_H (0x3B) .. GYRO_ZOUT_L (0x48), in one burst read:
@@ -34,20 +34,24 @@
 // a shift of 25 °/s or 0.34 g at the least, and a vehicle that turns or is shaken while its
 // samples are taken shifts them as much. So it runs only in the start-up from power-up, on the
 // ground with the engines off, and in that start-up's tries again after a bad answer; once the
-// driver has streamed, a start-up (a sensor lost, perhaps in the air) skips its rows [p]. Eight
-// samples each way: the accelerometer's noise at DLPF_CFG 1 (400 µg/√Hz over 184 Hz, PS 6.2) is
-// about 5.4 mg, 22 counts at ±8 g, and the mean of eight on less the mean of eight off has 11
-// (22 √(2/8)), 0.8 % of the smallest trim (1393 counts, code 1) against the 14 % allowed; the
-// gyroscope's (0.005 °/s/√Hz over 188 Hz, PS 6.1: 9 counts at ±250 °/s) is smaller still against
-// 3275. A vehicle bumped while it self-tests is what the count cannot average away, and each
-// more sample costs a tick before the IMU streams. Its scales are set while the gyros settle, so the samples without need
-// no wait of their own; with the bits set, and again once the configured scales are back, the
-// filter's output settles before a sample is taken (mpu6050::filter_settle_us: 9.8 ms at
-// DLPF_CFG 1), or the flight's first samples would carry the response. A response out of bounds
-// is a `self_test` fault: the start-up starts over after kRetryDelayUs, as for a wrong identity,
-// and the IMU never becomes healthy. At 1 kHz the self-test adds 41 ticks, 41 ms, to the
-// start-up (the first burst at tick 177 after the first reset, not 136): 20 transfers and two
-// waits for the filter.
+// driver has streamed, a start-up (a sensor lost, perhaps in the air) skips its rows [p].
+//
+// 8 ms of samples each way (self_test_samples: 8 at 1 kHz, 4 at the 500 Hz build's rate, where a
+// row's tick is 2 ms and eight made the IMU stream after the pilot's calibration at 0.3 s,
+// docs/simulator.md section 6.1). The accelerometer's noise at DLPF_CFG 1 (400 µg/√Hz over
+// 184 Hz, PS 6.2) is about 5.4 mg, 22 counts at ±8 g, and the mean of eight on less the mean of
+// eight off has 11 (22 √(2/8)), 0.8 % of the smallest trim (1393 counts, code 1) against the
+// 14 % allowed (of four: 16, 1.1 %); the gyroscope's (0.005 °/s/√Hz over 188 Hz, PS 6.1: 9 counts
+// at ±250 °/s) is smaller still against 3275. A vehicle bumped while it self-tests is what no
+// count averages away, and each more sample costs a tick before the IMU streams.
+//
+// Its scales are set while the gyros settle, so the samples without need no wait of their own;
+// with the bits set, and again once the configured scales are back, the filter's output settles
+// before a sample is taken (mpu6050::filter_settle_us: 9.8 ms at DLPF_CFG 1), or the flight's
+// first samples would carry the response. A response out of bounds is a `self_test` fault: the
+// start-up starts over after kRetryDelayUs, as for a wrong identity, and the IMU never becomes
+// healthy. At 1 kHz the self-test adds 41 ticks, 41 ms, to the start-up (the first burst at tick
+// 177 after the first reset, not 136): 20 transfers and two waits for the filter.
 //
 // Why the burst read and not the FIFO: the control loop takes one sample a tick and the sample
 // rate equals the control rate, so there is nothing to buffer; the FIFO would cost a FIFO_COUNT
@@ -166,8 +170,10 @@ inline constexpr uint32_t kGyroSettleUs = 30000;
 // After a bad answer at start-up, the reset is tried again this much later.
 inline constexpr uint32_t kRetryDelayUs = 100000;
 
-// The samples each way of the self-test (see the head: the noise of their mean against the 14 %).
-inline constexpr uint8_t kSelfTestSamples = 8;
+// The self-test's samples each way span this much, at most this many (see the head: the noise of
+// their mean against the 14 %, and the time before the IMU streams).
+inline constexpr uint32_t kSelfTestSpanUs = 8000;
+inline constexpr uint8_t kSelfTestMaxSamples = 8;
 
 // The low-pass filter by DLPF_CFG (RM 4.3): the narrower bandwidth of the accelerometer's and the
 // gyroscope's, Hz, and the longer delay, us.
@@ -235,6 +241,15 @@ constexpr uint32_t mpu6050_sample_rate_hz(const Mpu6050Config& config) {
   return output / (1u + config.sample_rate_divider);
 }
 
+// The self-test's samples each way: those the chip makes in kSelfTestSpanUs (a burst a tick, and
+// a sample a tick: the sample rate is the control rate), 1 to kSelfTestMaxSamples.
+constexpr uint8_t self_test_samples(const Mpu6050Config& config) {
+  const uint32_t n = mpu6050_sample_rate_hz(config) * mpu6050::kSelfTestSpanUs / 1000000u;
+  if (n < 1u) return 1;
+  if (n > mpu6050::kSelfTestMaxSamples) return mpu6050::kSelfTestMaxSamples;
+  return static_cast<uint8_t>(n);
+}
+
 // The 14 data bytes decoded, in the chip's axes.
 struct Mpu6050Raw {
   int16_t accel[3] = {0, 0, 0};
@@ -278,7 +293,7 @@ static_assert(sizeof(kMpu6050FaultNames) / sizeof(kMpu6050FaultNames[0]) == kMpu
 // The start-up sequence, one transfer a row, in order; each row's transfer is begun by one tick and
 // collected by the next. A write sends the row's bytes from register `reg` on; a read reads
 // `count` bytes from there and compares them with the row's bytes, or keeps them (the trim, the
-// self-test's samples).
+// self-test's samples: their rows repeat, self_test_samples() transfers, a tick each).
 enum class Mpu6050StartupBytes : uint8_t {
   reset,          // DEVICE_RESET
   identity,       // 0x68
@@ -303,26 +318,23 @@ struct Mpu6050StartupRow {
   uint8_t count;
   bool read;
   Mpu6050StartupBytes bytes;
-  uint8_t times;           // the transfer repeated, a tick each
   bool power_up_only;      // the self-test's: skipped once the driver has streamed
   Mpu6050Wait wait_after;  // before the next row (or the first burst)
 };
 inline constexpr Mpu6050StartupRow kMpu6050Startup[] = {
-    {mpu6050::kPwrMgmt1, 1, false, Mpu6050StartupBytes::reset, 1, false, Mpu6050Wait::reset},
-    {mpu6050::kWhoAmI, 1, true, Mpu6050StartupBytes::identity, 1, false, Mpu6050Wait::none},
-    {mpu6050::kPwrMgmt1, 1, false, Mpu6050StartupBytes::run, 1, false, Mpu6050Wait::none},
-    {mpu6050::kSmplrtDiv, 4, false, Mpu6050StartupBytes::configuration, 1, false, Mpu6050Wait::none},
-    {mpu6050::kSmplrtDiv, 4, true, Mpu6050StartupBytes::configuration, 1, false, Mpu6050Wait::none},
-    {mpu6050::kSelfTestX, 4, true, Mpu6050StartupBytes::trim, 1, true, Mpu6050Wait::none},
-    {mpu6050::kGyroConfig, 2, false, Mpu6050StartupBytes::self_test_off, 1, true, Mpu6050Wait::none},
-    {mpu6050::kPwrMgmt1, 1, true, Mpu6050StartupBytes::run, 1, false, Mpu6050Wait::settle},
-    {mpu6050::kAccelXoutH, mpu6050::kDataBytes, true, Mpu6050StartupBytes::samples_off, mpu6050::kSelfTestSamples, true,
-     Mpu6050Wait::none},
-    {mpu6050::kGyroConfig, 2, false, Mpu6050StartupBytes::self_test_on, 1, true, Mpu6050Wait::filter},
-    {mpu6050::kAccelXoutH, mpu6050::kDataBytes, true, Mpu6050StartupBytes::samples_on, mpu6050::kSelfTestSamples, true,
-     Mpu6050Wait::none},
-    {mpu6050::kGyroConfig, 2, false, Mpu6050StartupBytes::scales, 1, true, Mpu6050Wait::none},
-    {mpu6050::kGyroConfig, 2, true, Mpu6050StartupBytes::scales, 1, true, Mpu6050Wait::filter},
+    {mpu6050::kPwrMgmt1, 1, false, Mpu6050StartupBytes::reset, false, Mpu6050Wait::reset},
+    {mpu6050::kWhoAmI, 1, true, Mpu6050StartupBytes::identity, false, Mpu6050Wait::none},
+    {mpu6050::kPwrMgmt1, 1, false, Mpu6050StartupBytes::run, false, Mpu6050Wait::none},
+    {mpu6050::kSmplrtDiv, 4, false, Mpu6050StartupBytes::configuration, false, Mpu6050Wait::none},
+    {mpu6050::kSmplrtDiv, 4, true, Mpu6050StartupBytes::configuration, false, Mpu6050Wait::none},
+    {mpu6050::kSelfTestX, 4, true, Mpu6050StartupBytes::trim, true, Mpu6050Wait::none},
+    {mpu6050::kGyroConfig, 2, false, Mpu6050StartupBytes::self_test_off, true, Mpu6050Wait::none},
+    {mpu6050::kPwrMgmt1, 1, true, Mpu6050StartupBytes::run, false, Mpu6050Wait::settle},
+    {mpu6050::kAccelXoutH, mpu6050::kDataBytes, true, Mpu6050StartupBytes::samples_off, true, Mpu6050Wait::none},
+    {mpu6050::kGyroConfig, 2, false, Mpu6050StartupBytes::self_test_on, true, Mpu6050Wait::filter},
+    {mpu6050::kAccelXoutH, mpu6050::kDataBytes, true, Mpu6050StartupBytes::samples_on, true, Mpu6050Wait::none},
+    {mpu6050::kGyroConfig, 2, false, Mpu6050StartupBytes::scales, true, Mpu6050Wait::none},
+    {mpu6050::kGyroConfig, 2, true, Mpu6050StartupBytes::scales, true, Mpu6050Wait::filter},
 };
 inline constexpr uint8_t kMpu6050StartupRows = sizeof(kMpu6050Startup) / sizeof(kMpu6050Startup[0]);
 // The four configuration registers are consecutive, so one write and one read cover them; so are
@@ -398,19 +410,12 @@ class Mpu6050 {
   void restart(uint32_t now_us, uint32_t delay_us);
   const uint8_t* startup_bytes(uint8_t row) const;
   uint32_t wait_us(Mpu6050Wait wait) const;
+  uint8_t transfers_of(const Mpu6050StartupRow& row) const;
 
   Mpu6050Config config_;
   uint8_t configuration_[4] = {};  // SMPLRT_DIV, CONFIG, GYRO_CONFIG, ACCEL_CONFIG as written
   Mpu6050Phase phase_ = Mpu6050Phase::refused;
-  uint8_t row_ = 0;     // the start-up row next or on the wire
-  uint8_t repeat_ = 0;  // its transfers collected so far
-  // Has streamed since power-up: from then on the vehicle may be in the air, and a start-up
-  // skips the self-test.
-  bool streamed_ = false;
-  uint8_t trim_[mpu6050::kTrimRegisters] = {};
-  int32_t self_test_sums_[mpu6050::kSelfTestAxes] = {};  // the samples on less the samples off
-  uint32_t self_tests_ = 0;
-  uint8_t self_test_failures_ = 0;
+  uint8_t row_ = 0;  // the start-up row next or on the wire
   InFlight in_flight_ = InFlight::none;
   uint32_t begun_at_us_ = 0;
   uint32_t not_before_us_ = 0;
@@ -425,6 +430,16 @@ class Mpu6050 {
   uint32_t lost_ = 0;
   uint32_t restarts_ = 0;
   uint32_t samples_ = 0;
+  // The self-test's, after the rest (the streaming path's members keep their places).
+  uint8_t self_test_samples_ = 1;  // self_test_samples(config_)
+  uint8_t repeat_ = 0;             // the start-up row's transfers collected so far
+  // Has streamed since power-up: from then on the vehicle may be in the air, and a start-up
+  // skips the self-test.
+  bool streamed_ = false;
+  uint8_t trim_[mpu6050::kTrimRegisters] = {};
+  int32_t self_test_sums_[mpu6050::kSelfTestAxes] = {};  // the samples on less the samples off
+  uint32_t self_tests_ = 0;
+  uint8_t self_test_failures_ = 0;
 };
 
 }  // namespace drivers

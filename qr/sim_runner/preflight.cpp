@@ -80,7 +80,8 @@ bool Preflight::calibrated_on_ground(wire::Mode mode, const Pilot& pilot) const 
 
 // Back in safe from the calibration it asked for, and the QR said it refused it (Flight's
 // say_calibration_verdict): the flag alone could lag the mode on a damaged line. Or never in it:
-// the request answered with a NACK (the pre-flight's parameters are in range: a NACK is the calibration's).
+// the request answered with a NACK (the pre-flight's parameters are in range: a NACK is the
+// calibration's).
 bool Preflight::calibration_refused(wire::Mode mode, const Pilot& pilot) const {
   const ConsoleView& view = pilot.view();
   if (mode != wire::Mode::safe || (view.flags & wire::kFlagCalibrated) != 0) return false;

@@ -1,8 +1,8 @@
 // A scenario's faults on the sensors' bus and chips (docs/simulator.md section 6.2: nack, sda,
 // imu, baro), played on the sim board: the wire's (a NACK burst, a stuck SDA) as time windows of
 // its bus (SimI2cBus), the chips' (a wrong identity, a PROM with a bad CRC, a slow conversion, a
-// FIFO overflow, a self-test response out of bounds) through their models' fault hooks. What the firmware does with each is
-// docs/drivers.md section 7, "Faults".
+// FIFO overflow, a self-test response out of bounds) through their models' fault hooks. What the
+// firmware does with each is docs/drivers.md section 7, "Faults".
 #pragma once
 
 #include <stdint.h>

@@ -46,7 +46,6 @@ struct TwoChips {
   }
 
   uint8_t mpu[128] = {};
-  int32_t mpu_response[drivers::mpu6050::kSelfTestAxes] = {};
   uint8_t ms5611_command = 0;
   drivers::Ms5611Prom prom;
 
@@ -56,7 +55,6 @@ struct TwoChips {
     std::copy(data, data + 14, mpu + drivers::mpu6050::kAccelXoutH);
     std::copy(test_support::kMpu6050Trim, test_support::kMpu6050Trim + drivers::mpu6050::kTrimRegisters,
               mpu + drivers::mpu6050::kSelfTestX);
-    test_support::healthy_mpu6050_response(test_support::kMpu6050Trim, mpu_response);
     const uint16_t c[8] = {0, 40127, 36924, 23317, 23282, 33464, 28312, 0};
     std::copy(c, c + 8, prom.word);
     prom = drivers::ms5611_prom_with_crc(prom);
@@ -71,7 +69,8 @@ struct TwoChips {
           mpu[reg + i - 1] = t.write[i];
       }
       for (uint8_t i = 0; i < t.read_count; ++i) {
-        reply.data[i] = test_support::mpu6050_read(mpu, static_cast<uint8_t>(reg + i), mpu_response);
+        reply.data[i] = test_support::mpu6050_read(mpu, static_cast<uint8_t>(reg + i),
+                                                   test_support::kHealthyMpu6050Response.counts);
       }
       reply.count = t.read_count;
       return I2cResult::ok;

@@ -202,11 +202,11 @@ bool is_burst(const I2cTransfer& t) {
   return t.write_count == 1 && t.write[0] == reg::kAccelXoutH && t.read_count == reg::kDataBytes;
 }
 
-// The self-test's sixteen samples: eight bursts a tick apart from `tick` on, eight more from `on`.
-std::vector<Expected> self_test_samples(uint32_t tick, uint32_t on) {
+// The self-test's samples: `each` bursts a tick apart from `tick` on, as many from `on`.
+std::vector<Expected> self_test_samples(uint32_t tick, uint32_t on, uint32_t each = 8) {
   std::vector<Expected> bursts;
-  for (uint32_t i = 0; i < 8; ++i) bursts.push_back({tick + i, {0x3B}, 14});
-  for (uint32_t i = 0; i < 8; ++i) bursts.push_back({on + i, {0x3B}, 14});
+  for (uint32_t i = 0; i < each; ++i) bursts.push_back({tick + i, {0x3B}, 14});
+  for (uint32_t i = 0; i < each; ++i) bursts.push_back({on + i, {0x3B}, 14});
   return bursts;
 }
 
@@ -267,17 +267,18 @@ TEST(Mpu6050, WritesTheConfigurationItIsGiven) {
   rig.bus.address = reg::kAddressAd0High;
   rig.run(300);
   // DLPF_CFG 3 (42 Hz, 4.9 ms): the filter takes 39.004 ms to settle (filter_settle_us), longer
-  // than the gyros' 30 ms, and the waits are that long: from tick 108 to 148, 157 to 197, 207 to 247.
+  // than the gyros' 30 ms, and the waits are that long: from tick 108 to 148, 153 to 193, 199 to
+  // 239. A sample rate of 500 Hz: four samples each way (8 ms of them).
   std::vector<Expected> expected = {
       {0, {0x6B, 0x80}, 0}, {101, {0x75}, 1}, {102, {0x6B, 0x01}, 0},       {103, {0x19, 0x01, 0x03, 0x18, 0x10}, 0},
       {104, {0x19}, 4},     {105, {0x0D}, 4}, {106, {0x1B, 0x00, 0x10}, 0}, {107, {0x6B}, 1}};
-  const std::vector<Expected> samples = self_test_samples(148, 197);
-  expected.insert(expected.end(), samples.begin(), samples.begin() + 8);
-  expected.push_back({156, {0x1B, 0xE0, 0xF0}, 0});
-  expected.insert(expected.end(), samples.begin() + 8, samples.end());
-  expected.push_back({205, {0x1B, 0x18, 0x10}, 0});
-  expected.push_back({206, {0x1B}, 2});
-  expected.push_back({247, {0x3B}, 14});
+  const std::vector<Expected> samples = self_test_samples(148, 193, 4);
+  expected.insert(expected.end(), samples.begin(), samples.begin() + 4);
+  expected.push_back({152, {0x1B, 0xE0, 0xF0}, 0});
+  expected.insert(expected.end(), samples.begin() + 4, samples.end());
+  expected.push_back({197, {0x1B, 0x18, 0x10}, 0});
+  expected.push_back({198, {0x1B}, 2});
+  expected.push_back({239, {0x3B}, 14});
   expect_transfers(rig, 0x69, expected);
   EXPECT_EQ(drivers::mpu6050::filter_settle_us(3), 39004u);
   EXPECT_TRUE(rig.mpu.healthy());
@@ -790,6 +791,44 @@ TEST(Mpu6050, AFailedSelfTestIsTriedAgainAndTheImuNeverStreams) {
   EXPECT_EQ(rig.mpu.self_tests(), 5u);
   EXPECT_EQ(rig.mpu.self_test_failures(), 0u);
   EXPECT_EQ(rig.mpu.total_faults(), 4u);
+}
+
+// 8 ms of samples each way, a burst a tick at a sample a tick: 8 at 1 kHz, 4 at 500 Hz (the 500 Hz
+// build's SMPLRT_DIV 1), at most 8 (8 kHz without the filter), at least 1 (a slow sample rate).
+TEST(Mpu6050SelfTest, TakesEightMillisecondsOfSamplesEachWay) {
+  Mpu6050Config config;
+  EXPECT_EQ(drivers::self_test_samples(config), 8);
+  config.sample_rate_divider = 1;
+  EXPECT_EQ(drivers::self_test_samples(config), 4);
+  config.sample_rate_divider = 99;
+  EXPECT_EQ(drivers::self_test_samples(config), 1);
+  config.sample_rate_divider = 0;
+  config.dlpf = 0;
+  EXPECT_EQ(drivers::self_test_samples(config), 8);
+}
+
+// At 500 Hz (a tick of 2 ms, SMPLRT_DIV 1) four samples each way, judged by four: the same part
+// passes; one whose gyroscope z responds 16 % short fails.
+TEST(Mpu6050, AtFiveHundredHertzTheSelfTestTakesFourSamplesEachWay) {
+  Mpu6050Config config;
+  config.sample_rate_divider = 1;
+  for (const double factor : {1.0, 0.84}) {
+    SCOPED_TRACE(factor);
+    Rig rig(config);
+    rig.bus.response[5] = static_cast<int32_t>(std::lround(rig.bus.response[5] * factor));
+    rig.run(200);  // 200 ticks of 1 ms: the waits in microseconds; the count of bursts is what matters
+    size_t bursts = 0;
+    for (const I2cTransfer& t : rig.bus.begun) bursts += is_burst(t) ? 1u : 0u;
+    EXPECT_EQ(rig.mpu.self_tests(), 1u);
+    if (factor == 1.0) {
+      EXPECT_TRUE(rig.mpu.healthy());
+      EXPECT_EQ(bursts - rig.mpu.samples() - 1, 8u) << "four and four, then the flight's (one on the wire)";
+    } else {
+      EXPECT_FALSE(rig.mpu.healthy());
+      EXPECT_EQ(rig.mpu.self_test_failures(), 1u << 5);
+      EXPECT_EQ(bursts, 8u);
+    }
+  }
 }
 
 // A part with no trim recorded (every code 0): nothing to compare with, so no axis passes.

@@ -17,10 +17,15 @@ inline constexpr uint8_t kMpu6050Trim[drivers::mpu6050::kTrimRegisters] = {
     (18 >> 2) << 5 | 12, (13 >> 2) << 5 | 17, (15 >> 2) << 5 | 14, (18 & 3) << 4 | (13 & 3) << 2 | (15 & 3)};
 
 // The response of a healthy part: its factory trim, from the driver's table.
-inline void healthy_mpu6050_response(const uint8_t (&trim)[drivers::mpu6050::kTrimRegisters],
-                                     int32_t (&response)[drivers::mpu6050::kSelfTestAxes]) {
-  drivers::mpu6050::factory_trim(trim, response);
+struct Mpu6050Response {
+  int32_t counts[drivers::mpu6050::kSelfTestAxes];
+};
+constexpr Mpu6050Response healthy_mpu6050_response(const uint8_t (&trim)[drivers::mpu6050::kTrimRegisters]) {
+  Mpu6050Response r{};
+  drivers::mpu6050::factory_trim(trim, r.counts);
+  return r;
 }
+inline constexpr Mpu6050Response kHealthyMpu6050Response = healthy_mpu6050_response(kMpu6050Trim);
 
 // The byte a part whose register file is `regs` (0x00 .. 0x48 at least) reads at register `r`: a
 // data register of an axis whose self-test bit is set is its value plus that axis' `response`
