@@ -14,6 +14,12 @@ const Register* find_register(uint8_t address) {
   return nullptr;
 }
 
+double gyro_factory_trim(uint8_t code) { return code == 0 ? 0.0 : 25.0 * 131.0 * std::pow(1.046, code - 1.0); }
+
+double accel_factory_trim(uint8_t code) {
+  return code == 0 ? 0.0 : 4096.0 * 0.34 * std::pow(0.92 / 0.34, (code - 1.0) / (32.0 - 2.0));
+}
+
 }  // namespace mpu6050
 
 using namespace mpu6050;
@@ -37,11 +43,49 @@ Mpu6050Model::Mpu6050Model(uint8_t address, double power_on_s) : address_(addres
 void Mpu6050Model::reset(double t_s) {
   regs_.fill(0);
   for (const Register& r : kRegisters) regs_[r.address] = r.reset;
+  put_trim();
   pointer_ = 0;
   ready_s_ = t_s + kStartupS;
   fifo_head_ = fifo_size_ = 0;
   fifo_last_read_ = 0;
   fifo_count_latch_ = 0;
+}
+
+void Mpu6050Model::set_trim(const Mpu6050Trim& trim) {
+  trim_ = trim;
+  put_trim();
+}
+
+// [RM] register 13: XA_TEST[4:2] in bits 7:5 of SELF_TEST_X (Y, Z alike), XG_TEST in its bits 4:0;
+// XA_TEST[1:0] in bits 5:4 of SELF_TEST_A, YA_TEST[1:0] in 3:2, ZA_TEST[1:0] in 1:0.
+void Mpu6050Model::put_trim() {
+  regs_[kSelfTestX + 3] = 0;
+  for (size_t axis = 0; axis < 3; ++axis) {
+    const uint8_t accel = trim_.accel[axis] & 0x1F;
+    regs_[kSelfTestX + axis] = static_cast<uint8_t>((accel >> 2) << 5 | (trim_.gyro[axis] & 0x1F));
+    regs_[kSelfTestX + 3] |= static_cast<uint8_t>((accel & 0x03) << (4 - 2 * axis));
+  }
+}
+
+ImuSense Mpu6050Model::with_self_test(const ImuSense& sensed) const {
+  constexpr double kRadPerDeg = std::numbers::pi / 180;
+  std::array<double, 3> rate{}, force{};  // rad/s, m/s²
+  for (size_t axis = 0; axis < 3; ++axis) {
+    const uint8_t bit = static_cast<uint8_t>(0x80u >> axis);
+    if ((regs_[kGyroConfig] & bit) != 0) {
+      const double sign = axis == 1 ? -1.0 : 1.0;  // FT[Yg] is negative
+      const double dps = sign * gyro_factory_trim(trim_.gyro[axis]) / kGyroLsbPerDps[0];
+      rate[axis] = faults_.gyro_self_test_scale[axis] * dps * kRadPerDeg;
+    }
+    if ((regs_[kAccelConfig] & bit) != 0) {
+      const double g = accel_factory_trim(trim_.accel[axis]) / kAccelLsbPerG[2];
+      force[axis] = faults_.accel_self_test_scale[axis] * g * kStandardGravity;
+    }
+  }
+  ImuSense out = sensed;
+  out.rate += Vec3{rate[0], rate[1], rate[2]};
+  out.specific_force += Vec3{force[0], force[1], force[2]};
+  return out;
 }
 
 double Mpu6050Model::sample_rate_hz() const {
@@ -160,8 +204,9 @@ void Mpu6050Model::sample(double t_s, const ImuSense& sensed, double temperature
   raise(kDataRdyInt);
 }
 
-void Mpu6050Model::take_sample(const ImuSense& sensed, double temperature_c) {
+void Mpu6050Model::take_sample(const ImuSense& part_senses, double temperature_c) {
   if (faults_.stuck_data) return;
+  const ImuSense sensed = with_self_test(part_senses);
   const double accel = accel_counts_per_m_s2(), gyro = gyro_counts_per_rad_s();
   for (int axis = 0; axis < 3; ++axis) {
     const uint8_t offset = static_cast<uint8_t>(2 * axis);

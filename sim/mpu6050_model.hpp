@@ -47,6 +47,16 @@
 //   write: 0x44 resets nothing). Registers 114 and 115: "Both registers are loaded with the
 //   current sample count when FIFO_COUNT_H (Register 72) is read".
 // - SIG_COND_RESET (register 106) clears the data registers; SIGNAL_PATH_RESET (104) does not.
+// - Self-test: [RM] registers 13 to 16 hold the part's factory trim codes (XG_TEST.. bits 4:0,
+//   XA_TEST.. split between bits 7:5 and register 16), which the map lists at reset value 0 but a
+//   real part reads as programmed at the factory: the model's Mpu6050Trim, kept by a reset (our
+//   reading). With an axis' self-test bit set ([RM] registers 27 and 28, bits 7:5) its output
+//   shifts by the factory trim of its code, [RM] register 13's formulas (gyro 25 * 131 *
+//   1.046^(code - 1) counts at ±250 °/s, negative on Y; accel 4096 * 0.34 * (0.92 / 0.34)^((code -
+//   1) / 30) counts at ±8 g): the response of a part that matches its trim exactly, the noise and
+//   vibration of the reading on top. Taken at the chip's sample instants like the rest of the
+//   reading, in physical units, so it scales with whatever full scale is set. A fault scales an
+//   axis' response (Mpu6050Faults).
 //
 // Its clock is the world's: sample() is told what the part senses each time the world samples
 // (a control period). The data registers take that reading when at least one of the chip's own
@@ -55,9 +65,10 @@
 // samples: at 8 kHz and a 1 kHz world, eight equal records a period).
 //
 // Not modelled: the DLPF's filtering and delay (the noise bandwidth is the vehicle file's
-// imu_bandwidth_hz), self-test, cycle mode and standby axes (PWR_MGMT_2), TEMP_DIS beyond holding
-// the temperature, the clock source, motion detection, the auxiliary I2C master and its external
-// sensor data, the DMP, the INT pin, the gyro's 30 ms settling after waking.
+// imu_bandwidth_hz; the self-test's response steps in at the next sample), cycle mode and standby
+// axes (PWR_MGMT_2), TEMP_DIS beyond holding the temperature, the clock source, motion detection,
+// the auxiliary I2C master and its external sensor data, the DMP, the INT pin, the gyro's 30 ms
+// settling after waking.
 #pragma once
 
 #include <stddef.h>
@@ -124,7 +135,7 @@ struct Register {
 };
 
 inline constexpr Register kRegisters[] = {
-    {0x0D, "SELF_TEST_X", 0x00, 0xFF, Access::read_write},  // factory trim on a real part; self-test not modelled
+    {0x0D, "SELF_TEST_X", 0x00, 0xFF, Access::read_write},  // the factory trim (Mpu6050Trim) in 0x0D..0x10
     {0x0E, "SELF_TEST_Y", 0x00, 0xFF, Access::read_write},
     {0x0F, "SELF_TEST_Z", 0x00, 0xFF, Access::read_write},
     {0x10, "SELF_TEST_A", 0x00, 0x3F, Access::read_write},
@@ -214,7 +225,22 @@ inline constexpr Register kRegisters[] = {
 // The row of `address`, or null for an address the map does not list.
 const Register* find_register(uint8_t address);
 
+inline constexpr uint8_t kSelfTestX = 0x0D;     // to SELF_TEST_A, 0x10
+inline constexpr uint8_t kSelfTestBits = 0xE0;  // X_ST, Y_ST, Z_ST of GYRO_CONFIG and ACCEL_CONFIG
+
+// The factory trim of a code (1..31; 0: none recorded, 0), [RM] register 13's formulas: counts at
+// ±250 °/s (the gyro's, without the Y axis' minus) and at ±8 g.
+double gyro_factory_trim(uint8_t code);
+double accel_factory_trim(uint8_t code);
+
 }  // namespace mpu6050
+
+// A part's factory trim codes, 1..31 (5 bits; 0 is none recorded), by axis x, y, z. The default is
+// a part of mid-range codes.
+struct Mpu6050Trim {
+  std::array<uint8_t, 3> gyro = {12, 17, 14};
+  std::array<uint8_t, 3> accel = {18, 13, 15};
+};
 
 // Faults the chip can be told to show (the bus' own faults, NACK bursts and a stuck SDA, are the
 // sim board's).
@@ -224,6 +250,10 @@ struct Mpu6050Faults {
   // The signal path freezes: the data registers stop updating (the FIFO repeats them, DATA_RDY
   // still comes), the failure a driver sees only as a signal that does not move.
   bool stuck_data = false;
+  // Each axis' self-test response times this (1: as its trim says; 0: an axis that does not move;
+  // a part that fails its self-test).
+  std::array<double, 3> gyro_self_test_scale = {1, 1, 1};
+  std::array<double, 3> accel_self_test_scale = {1, 1, 1};
 };
 
 class Mpu6050Model final : public I2cDevice {
@@ -246,6 +276,9 @@ class Mpu6050Model final : public I2cDevice {
   void sample(double t_s, const ImuSense& sensed, double temperature_c);
 
   void set_faults(const Mpu6050Faults& faults) { faults_ = faults; }
+  // The part's factory trim, in its registers from now on and after every reset.
+  void set_trim(const Mpu6050Trim& trim);
+  const Mpu6050Trim& trim() const { return trim_; }
   // Fills the FIFO past its 1024 bytes now with records of the present data (the oldest bytes
   // are lost, FIFO_OFLOW_INT is set if enabled), as a driver too slow to read it would find it.
   // False when the FIFO is not enabled or no data is selected for it (nothing can overflow).
@@ -267,6 +300,9 @@ class Mpu6050Model final : public I2cDevice {
   uint8_t read_register(uint8_t reg);
   void advance_pointer();
   void take_sample(const ImuSense& sensed, double temperature_c);
+  void put_trim();
+  // What the part senses with the self-test bits as they are set: the response added.
+  ImuSense with_self_test(const ImuSense& sensed) const;
   size_t fifo_record_bytes() const;
   void push_fifo_record();
   void push_fifo(uint8_t byte);
@@ -283,6 +319,7 @@ class Mpu6050Model final : public I2cDevice {
   uint8_t fifo_last_read_ = 0;
   uint16_t fifo_count_latch_ = 0;
   Mpu6050Faults faults_;
+  Mpu6050Trim trim_;
 };
 
 }  // namespace sim

@@ -6,6 +6,11 @@ namespace {
 constexpr uint8_t kResetBytes[1] = {mpu6050::kDeviceReset};
 constexpr uint8_t kIdentityBytes[1] = {mpu6050::kIdentity};
 constexpr uint8_t kRunBytes[1] = {mpu6050::kPwrMgmt1Run};
+// GYRO_CONFIG and ACCEL_CONFIG at the self-test's full scales (RM 4.1), without and with the bits.
+constexpr uint8_t kSelfTestOffBytes[2] = {mpu6050::kSelfTestGyroFullScale << mpu6050::kFullScaleShift,
+                                          mpu6050::kSelfTestAccelFullScale << mpu6050::kFullScaleShift};
+constexpr uint8_t kSelfTestOnBytes[2] = {kSelfTestOffBytes[0] | mpu6050::kSelfTestBits,
+                                         kSelfTestOffBytes[1] | mpu6050::kSelfTestBits};
 
 // Wrap-safe "now is at or past the deadline" for a microsecond clock that wraps every 71 minutes.
 constexpr bool due(uint32_t now_us, uint32_t deadline_us) { return static_cast<int32_t>(now_us - deadline_us) >= 0; }
@@ -24,6 +29,23 @@ bool all_bytes_equal(const uint8_t* bytes, uint8_t count, uint8_t value) {
     if (bytes[i] != value) return false;
   }
   return true;
+}
+
+// A burst a chip can send (see all_bytes_equal), and a temperature it is specified at: the checks
+// of every burst, the flight's and the self-test's.
+bool plausible_bytes(const I2cReply& reply) {
+  return reply.count == mpu6050::kDataBytes && !all_bytes_equal(reply.data, mpu6050::kDataBytes, 0x00) &&
+         !all_bytes_equal(reply.data, mpu6050::kDataBytes, 0xFF);
+}
+
+Mpu6050Raw decode_reply(const I2cReply& reply) {
+  uint8_t bytes[mpu6050::kDataBytes];
+  for (uint8_t i = 0; i < mpu6050::kDataBytes; ++i) bytes[i] = reply.data[i];
+  return decode_mpu6050_data(bytes);
+}
+
+bool plausible_temperature(const Mpu6050Raw& raw) {
+  return raw.temperature >= mpu6050::kTempMinCounts && raw.temperature <= mpu6050::kTempMaxCounts;
 }
 
 // A permutation of three axes and its signs is a rotation when (its parity) x (the product of the
@@ -75,6 +97,7 @@ Mpu6050::Mpu6050(const Mpu6050Config& config) : config_(config) {
   configuration_[1] = config.dlpf;
   configuration_[2] = static_cast<uint8_t>(config.gyro_full_scale << mpu6050::kFullScaleShift);
   configuration_[3] = static_cast<uint8_t>(config.accel_full_scale << mpu6050::kFullScaleShift);
+  self_test_samples_ = self_test_samples(config);
   if (valid(config)) phase_ = Mpu6050Phase::starting;
 }
 
@@ -84,8 +107,30 @@ const uint8_t* Mpu6050::startup_bytes(uint8_t row) const {
     case Mpu6050StartupBytes::identity: return kIdentityBytes;
     case Mpu6050StartupBytes::run: return kRunBytes;
     case Mpu6050StartupBytes::configuration: return configuration_;
+    case Mpu6050StartupBytes::scales: return configuration_ + 2;
+    case Mpu6050StartupBytes::self_test_off: return kSelfTestOffBytes;
+    case Mpu6050StartupBytes::self_test_on: return kSelfTestOnBytes;
+    case Mpu6050StartupBytes::trim:  // reads that are kept, not compared
+    case Mpu6050StartupBytes::samples_off:
+    case Mpu6050StartupBytes::samples_on: break;
   }
   return kResetBytes;
+}
+
+uint8_t Mpu6050::transfers_of(const Mpu6050StartupRow& row) const {
+  const bool samples = row.bytes == Mpu6050StartupBytes::samples_off || row.bytes == Mpu6050StartupBytes::samples_on;
+  return samples ? self_test_samples_ : 1;
+}
+
+uint32_t Mpu6050::wait_us(Mpu6050Wait wait) const {
+  const uint32_t filter = mpu6050::filter_settle_us(config_.dlpf);
+  switch (wait) {
+    case Mpu6050Wait::none: return 0;
+    case Mpu6050Wait::reset: return mpu6050::kResetWaitUs;
+    case Mpu6050Wait::settle: return filter > mpu6050::kGyroSettleUs ? filter : mpu6050::kGyroSettleUs;
+    case Mpu6050Wait::filter: return filter;
+  }
+  return 0;
 }
 
 void Mpu6050::collect(I2cResult result, const I2cReply& reply, uint32_t now_us) {
@@ -94,8 +139,11 @@ void Mpu6050::collect(I2cResult result, const I2cReply& reply, uint32_t now_us) 
   if (phase_ == Mpu6050Phase::refused) return;
   if (waiting_ && due(now_us, not_before_us_)) {
     waiting_ = false;
-    // The last row's wait was the gyros' settling: from now on, one burst a tick.
-    if (row_ == kMpu6050StartupRows) phase_ = Mpu6050Phase::streaming;
+    // The last row's wait was the settling: from now on, one burst a tick.
+    if (row_ == kMpu6050StartupRows) {
+      phase_ = Mpu6050Phase::streaming;
+      streamed_ = true;
+    }
   }
   if (in_flight_ == InFlight::none) return;  // whatever the bus says, it is not about ours
   if (result == I2cResult::pending) {
@@ -126,37 +174,81 @@ void Mpu6050::collect(I2cResult result, const I2cReply& reply, uint32_t now_us) 
 
 void Mpu6050::collect_startup(const I2cReply& reply, uint32_t now_us) {
   const Mpu6050StartupRow& row = kMpu6050Startup[row_];
-  if (row.read) {
-    if (reply.count != row.count) {
-      fail(Mpu6050Fault::impossible_value, now_us);
-      return;
-    }
-    const uint8_t* expected = startup_bytes(row_);
-    for (uint8_t i = 0; i < row.count; ++i) {
-      if (reply.data[i] == expected[i]) continue;
-      fail(row.bytes == Mpu6050StartupBytes::identity ? Mpu6050Fault::wrong_identity : Mpu6050Fault::readback_mismatch,
-           now_us);
-      return;
-    }
-  }
+  if (row.read && !take_startup_read(row, reply, now_us)) return;  // counted, and started over
   consecutive_failures_ = 0;
-  ++row_;
-  if (row.wait_after_us > 0) {
+  if (++repeat_ < transfers_of(row)) return;
+  next_row(row, now_us);
+}
+
+// A start-up read: kept (the trim, the self-test's samples) or compared with what it must be.
+// False when it was a fault (counted).
+bool Mpu6050::take_startup_read(const Mpu6050StartupRow& row, const I2cReply& reply, uint32_t now_us) {
+  if (reply.count != row.count) {
+    fail(Mpu6050Fault::impossible_value, now_us);
+    return false;
+  }
+  if (row.bytes == Mpu6050StartupBytes::trim) {
+    for (uint8_t i = 0; i < mpu6050::kTrimRegisters; ++i) trim_[i] = reply.data[i];
+    return true;
+  }
+  if (row.bytes == Mpu6050StartupBytes::samples_off || row.bytes == Mpu6050StartupBytes::samples_on) {
+    if (!plausible_bytes(reply)) {
+      fail(Mpu6050Fault::impossible_value, now_us);
+      return false;
+    }
+    const Mpu6050Raw raw = decode_reply(reply);
+    if (!plausible_temperature(raw)) {
+      fail(Mpu6050Fault::impossible_value, now_us);
+      return false;
+    }
+    const bool on = row.bytes == Mpu6050StartupBytes::samples_on;
+    return take_self_test_sample(raw, on ? 1 : -1, on && repeat_ + 1 == transfers_of(row), now_us);
+  }
+  const uint8_t* expected = startup_bytes(row_);
+  for (uint8_t i = 0; i < row.count; ++i) {
+    if (reply.data[i] == expected[i]) continue;
+    fail(row.bytes == Mpu6050StartupBytes::identity ? Mpu6050Fault::wrong_identity : Mpu6050Fault::readback_mismatch,
+         now_us);
+    return false;
+  }
+  return true;
+}
+
+// A sample of the self-test, in the chip's axes (the trim is the chip's), into the sums; the last
+// with the bits set judges them.
+bool Mpu6050::take_self_test_sample(const Mpu6050Raw& raw, int32_t sign, bool last, uint32_t now_us) {
+  for (uint8_t axis = 0; axis < 3; ++axis) {
+    self_test_sums_[axis] += sign * raw.accel[axis];
+    self_test_sums_[3 + axis] += sign * raw.gyro[axis];
+  }
+  if (!last) return true;
+  ++self_tests_;
+  self_test_failures_ = mpu6050::self_test_failures(self_test_sums_, self_test_samples_, trim_);
+  if (self_test_failures_ == 0) return true;
+  fail(Mpu6050Fault::self_test, now_us);
+  return false;
+}
+
+// On to the next row that is due: the self-test's rows only until the driver first streams.
+void Mpu6050::next_row(const Mpu6050StartupRow& done, uint32_t now_us) {
+  repeat_ = 0;
+  do {
+    ++row_;
+  } while (row_ < kMpu6050StartupRows && streamed_ && kMpu6050Startup[row_].power_up_only);
+  const uint32_t wait = wait_us(done.wait_after);
+  if (wait > 0) {
     waiting_ = true;
-    not_before_us_ = now_us + row.wait_after_us;
+    not_before_us_ = now_us + wait;
   }
 }
 
 void Mpu6050::collect_burst(const I2cReply& reply, uint32_t now_us) {
-  if (reply.count != mpu6050::kDataBytes || all_bytes_equal(reply.data, mpu6050::kDataBytes, 0x00) ||
-      all_bytes_equal(reply.data, mpu6050::kDataBytes, 0xFF)) {
+  if (!plausible_bytes(reply)) {
     fail(Mpu6050Fault::impossible_value, now_us);
     return;
   }
-  uint8_t bytes[mpu6050::kDataBytes];
-  for (uint8_t i = 0; i < mpu6050::kDataBytes; ++i) bytes[i] = reply.data[i];
-  const Mpu6050Raw raw = decode_mpu6050_data(bytes);
-  if (raw.temperature < mpu6050::kTempMinCounts || raw.temperature > mpu6050::kTempMaxCounts) {
+  const Mpu6050Raw raw = decode_reply(reply);
+  if (!plausible_temperature(raw)) {
     fail(Mpu6050Fault::impossible_value, now_us);
     return;
   }
@@ -192,6 +284,8 @@ void Mpu6050::restart(uint32_t now_us, uint32_t delay_us) {
   ++restarts_;
   phase_ = Mpu6050Phase::starting;
   row_ = 0;
+  repeat_ = 0;
+  for (int32_t& sum : self_test_sums_) sum = 0;
   consecutive_failures_ = 0;
   waiting_ = true;
   not_before_us_ = now_us + delay_us;

@@ -25,8 +25,8 @@
 namespace qr {
 
 inline constexpr uint32_t kSensorReportPeriodUs = 1000000;
-// The MPU streams from about 0.24 s (its 100 ms start-up, reset wait and 30 ms of settling); the
-// MS5611 measures from a few ms. A second is both with room.
+// The MPU streams from about 0.28 s (its 100 ms start-up, reset wait, 30 ms of settling and 41 ms
+// of self-test); the MS5611 measures from a few ms. A second is both with room.
 inline constexpr uint32_t kSensorStartupGraceUs = 1000000;
 
 // One sensor's side of the report, as a row: its name and its fault kinds' names.

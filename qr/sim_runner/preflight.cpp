@@ -63,6 +63,7 @@ void Preflight::ask(wire::Mode mode, Pilot& pilot) {
   if (mode == wire::Mode::calibration) {
     calibration_asked_ = true;
     text_at_ask_ = pilot.view().debug_text.size();
+    nacks_at_ask_ = pilot.view().nacks;
   }
   requested_ = mode;
   pilot.request_mode(mode);
@@ -78,11 +79,16 @@ bool Preflight::calibrated_on_ground(wire::Mode mode, const Pilot& pilot) const 
 }
 
 // Back in safe from the calibration it asked for, and the QR said it refused it (Flight's
-// say_calibration_verdict): the flag alone could lag the mode on a damaged line.
+// say_calibration_verdict): the flag alone could lag the mode on a damaged line. Or never in it:
+// the request answered with a NACK (the pre-flight's parameters are in range: a NACK is the
+// calibration's).
 bool Preflight::calibration_refused(wire::Mode mode, const Pilot& pilot) const {
   const ConsoleView& view = pilot.view();
-  return calibrating_seen_ && mode == wire::Mode::safe && (view.flags & wire::kFlagCalibrated) == 0 &&
-         view.debug_text.find("calibration refused", text_at_ask_) != std::string::npos;
+  if (mode != wire::Mode::safe || (view.flags & wire::kFlagCalibrated) != 0) return false;
+  if (!calibrating_seen_) {
+    return calibration_asked_ && view.nacks > nacks_at_ask_ && !pilot.request_pending(wire::MessageType::mode_change);
+  }
+  return view.debug_text.find("calibration refused", text_at_ask_) != std::string::npos;
 }
 
 }  // namespace qrsim

@@ -39,7 +39,8 @@ struct PreflightPlan {
 class Preflight {
  public:
   // refused: the QR ended the calibration without taking it (its debug text says why: a vehicle
-  // not level, an IMU mounted otherwise, docs/safety.md rule 21); the pre-flight goes no further.
+  // not level, an IMU mounted otherwise, docs/safety.md rule 21), or refused to begin it (a NACK:
+  // an IMU not healthy, rule 20); the pre-flight goes no further.
   enum class Stage : uint8_t { power_up, calibrate, arm, ready, refused };
 
   explicit Preflight(PreflightPlan plan) : plan_(std::move(plan)) {}
@@ -69,6 +70,7 @@ class Preflight {
   bool calibration_asked_ = false;
   bool calibrating_seen_ = false;  // telemetry showed the calibration mode
   size_t text_at_ask_ = 0;         // the QR's debug text so far when the calibration was asked for
+  uint32_t nacks_at_ask_ = 0;      // and the NACKs the pilot had had
 };
 
 }  // namespace qrsim

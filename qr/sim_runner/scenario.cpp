@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include <common/drivers/mpu6050.hpp>
 #include <common/task_names.hpp>
 #include <qr/boards/sim/devboard_qr.hpp>
 #include <qr/boards/sim/flying_qr.hpp>
@@ -179,7 +180,8 @@ void apply(const Event& e, Hands& hands, Pilot& pilot, FullLineConsole* console,
     case Action::imu_identity:
     case Action::prom_bad:
     case Action::baro_slow:
-    case Action::fifo_overflow: break;  // on the board: inject_sensor_fault, apply_chip_faults
+    case Action::fifo_overflow:
+    case Action::imu_self_test: break;  // on the board: inject_sensor_fault, apply_chip_faults
   }
 }
 
@@ -353,6 +355,15 @@ void add_sensor_report_figures(const ConsoleView& view, const FlightRecord& rec,
     }
   }
   f.push_back({"sensor_fault_lines", lines});
+  // Those naming the IMU's self-test (the driver's verdict at power-up, common/drivers/mpu6050.hpp).
+  const std::string self_test = std::string("imu fault: ") +
+                                drivers::kMpu6050FaultNames[static_cast<size_t>(drivers::Mpu6050Fault::self_test)];
+  double self_test_lines = 0;
+  for (size_t at = view.debug_text.find(self_test); at != std::string::npos;
+       at = view.debug_text.find(self_test, at + 1)) {
+    ++self_test_lines;
+  }
+  f.push_back({"self_test_fault_lines", self_test_lines});
   const char* lost = qr::kPanicCauseNames[static_cast<uint8_t>(qr::PanicCause::imu_lost)];
   f.push_back({"imu_lost_panic", rec.entered_panic && rec.panic_cause == lost ? 1.0 : 0.0});
   f.push_back({"last_nack_reason", static_cast<double>(view.last_nack)});
@@ -581,6 +592,7 @@ ScenarioFlight::ScenarioFlight(const ScenarioScript& script, const RunOptions& o
   if (trace_ != nullptr) write_trace_header(trace_.get());
   for (const auto& [id, raw] : script.parameters) uploaded_.set(static_cast<uint8_t>(id), raw);
   for (const auto& [id, raw] : options.parameters) uploaded_.set(static_cast<uint8_t>(id), raw);
+  apply_power_up_faults(script, qr.board());  // before the first tick: the chip is powered with them
 }
 
 void ScenarioFlight::fly() {

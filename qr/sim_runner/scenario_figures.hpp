@@ -97,6 +97,7 @@ inline constexpr FigureSpec kFigureTable[] = {
     {"requests_given_up", "pilot requests never answered"},
     {"nacks", "pilot requests refused"},
     {"sensor_fault_lines", "debug text lines the QR said about sensor faults (imu fault:, barometer fault:)"},
+    {"self_test_fault_lines", "those of them about the IMU's self-test (imu fault: self-test)"},
     {"imu_lost_panic", "1 when the first panic after t0 was the IMU lost, else 0"},
     {"last_nack_reason", "the reason of the last request the QR refused (docs/protocol.md), 0 for none"},
     {"wrong_sign_panic",

@@ -374,13 +374,22 @@ class Reader {
     return fault_duration(w[5], e);
   }
 
-  // at T imu identity BYTE / at T imu fifo overflow
+  // at T imu identity BYTE / at T imu fifo overflow / at 0 imu selftest bad
   bool imu(const std::vector<std::string>& w, Event& e) {
     if (w.size() == 5 && w[3] == "fifo" && w[4] == "overflow") {
       e.action = Action::fifo_overflow;
       return true;
     }
-    if (w.size() != 5 || w[3] != "identity") return fail("imu needs 'identity BYTE' or 'fifo overflow'");
+    if (w.size() == 5 && w[3] == "selftest" && w[4] == "bad") {
+      e.action = Action::imu_self_test;
+      // The driver self-tests at power-up only: a part that fails is so from then, or never.
+      return e.at_s == 0 || fail(
+                                "imu selftest bad is the part's from power-up (the driver self-tests then only): "
+                                "write it at 0");
+    }
+    if (w.size() != 5 || w[3] != "identity") {
+      return fail("imu needs 'identity BYTE', 'fifo overflow' or 'selftest bad'");
+    }
     e.action = Action::imu_identity;
     char* end = nullptr;
     const unsigned long v = std::strtoul(w[4].c_str(), &end, 0);

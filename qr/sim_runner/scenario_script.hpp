@@ -66,6 +66,7 @@ enum class Action : uint8_t {
   prom_bad,       // the MS5611's PROM reads with a bad CRC from now on
   baro_slow,      // value: ms each MS5611 conversion commanded takes beyond its time, for duration_s
   fifo_overflow,  // the MPU's FIFO overflowed (the driver does not use it)
+  imu_self_test,  // the MPU's gyroscope x responds to its self-test at half its trim, from power-up
 };
 
 struct Event {

@@ -4,6 +4,13 @@
 #include <cstdio>
 
 namespace qrsim {
+namespace {
+
+// `imu selftest bad`: the gyroscope's x axis responds at half its trim, a change of -50 % where
+// 14 % is allowed (a damaged drive of one axis).
+void break_self_test(sim::Mpu6050Faults& mpu) { mpu.gyro_self_test_scale = {0.5, 1, 1}; }
+
+}  // namespace
 
 bool is_sensor_fault(Action action) {
   switch (action) {
@@ -12,7 +19,8 @@ bool is_sensor_fault(Action action) {
     case Action::imu_identity:
     case Action::prom_bad:
     case Action::baro_slow:
-    case Action::fifo_overflow: return true;
+    case Action::fifo_overflow:
+    case Action::imu_self_test: return true;
     default: return false;
   }
 }
@@ -60,6 +68,10 @@ void apply_chip_faults(const ScenarioScript& script, double since, SimBoard& boa
         baro.bad_prom_crc = true;
         any = true;
         break;
+      case Action::imu_self_test:
+        break_self_test(mpu);
+        any = true;
+        break;
       case Action::baro_slow:
         if (since < e.at_s + e.duration_s) baro.slow_conversion_s += e.value * 1e-3;
         any = true;
@@ -70,6 +82,15 @@ void apply_chip_faults(const ScenarioScript& script, double since, SimBoard& boa
   if (!any) return;
   board.mpu6050_chip().set_faults(mpu);
   board.ms5611_chip().set_faults(baro);
+}
+
+void apply_power_up_faults(const ScenarioScript& script, SimBoard& board) {
+  for (const Event& e : script.events) {
+    if (e.action != Action::imu_self_test) continue;
+    sim::Mpu6050Faults mpu;
+    break_self_test(mpu);
+    board.mpu6050_chip().set_faults(mpu);
+  }
 }
 
 }  // namespace qrsim

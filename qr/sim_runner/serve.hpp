@@ -31,7 +31,7 @@ struct ServeOptions {
   bool radio = false;
   // --sensors drivers: the firmware's drivers read the chip models over the board's I2C bus, as in
   // a scenario (scenario.hpp). Not the default here: the MPU answers nothing for its first 100 ms
-  // and streams from about 0.24 s, and until then the QR refuses to leave safe (safety.md rule
+  // and streams from about 0.28 s, and until then the QR refuses to leave safe (safety.md rule
   // 20), which a console that asks at once (the tests', a script's) would have to wait out.
   bool sensor_drivers = false;
 };

@@ -9,6 +9,7 @@
 #include <common/drivers/i2c.hpp>
 #include <common/drivers/mpu6050.hpp>
 #include <common/drivers/ms5611.hpp>
+#include <tests/support/mpu6050_self_test_chip.hpp>
 
 namespace test {
 
@@ -17,8 +18,9 @@ using drivers::I2cResult;
 using drivers::I2cTransfer;
 
 // Two chips on the wire, as little of each as the drivers need: an MPU-6050 register file that
-// keeps what is written and reads the identity and a resting sample; an MS5611 with the datasheet's
-// PROM and its example D1 and D2.
+// keeps what is written and reads the identity and a resting sample, and passes its self-test
+// (tests/support/mpu6050_self_test_chip.hpp); an MS5611 with the datasheet's PROM and its example
+// D1 and D2.
 struct TwoChips {
   // The data registers: accelerometer x, y, z, temperature, gyroscope x, y, z (big-endian).
   void set_data(const int16_t (&values)[7]) {
@@ -51,6 +53,8 @@ struct TwoChips {
     mpu[drivers::mpu6050::kWhoAmI] = drivers::mpu6050::kIdentity;
     const uint8_t data[14] = {0, 10, 0, 20, 0x20, 0, 0xF0, 0xB0, 0, 3, 0, 4, 0, 5};
     std::copy(data, data + 14, mpu + drivers::mpu6050::kAccelXoutH);
+    std::copy(test_support::kMpu6050Trim, test_support::kMpu6050Trim + drivers::mpu6050::kTrimRegisters,
+              mpu + drivers::mpu6050::kSelfTestX);
     const uint16_t c[8] = {0, 40127, 36924, 23317, 23282, 33464, 28312, 0};
     std::copy(c, c + 8, prom.word);
     prom = drivers::ms5611_prom_with_crc(prom);
@@ -64,7 +68,10 @@ struct TwoChips {
         if (reg + i - 1 != drivers::mpu6050::kPwrMgmt1 || t.write[i] != drivers::mpu6050::kDeviceReset)
           mpu[reg + i - 1] = t.write[i];
       }
-      for (uint8_t i = 0; i < t.read_count; ++i) reply.data[i] = mpu[reg + i];
+      for (uint8_t i = 0; i < t.read_count; ++i) {
+        reply.data[i] = test_support::mpu6050_read(mpu, static_cast<uint8_t>(reg + i),
+                                                   test_support::kHealthyMpu6050Response.counts);
+      }
       reply.count = t.read_count;
       return I2cResult::ok;
     }

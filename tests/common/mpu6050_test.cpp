@@ -1,14 +1,17 @@
 // The MPU-6050 driver (common/drivers/mpu6050.hpp) against a scripted bus: the start-up's transfers
-// one by one, the data's decoding, the sample's age, every fault kind, the lost sensor's restart
-// and the bus time of each tick. One tick is 1 ms (the default 1 kHz control rate).
+// one by one, the self-test, the data's decoding, the sample's age, every fault kind, the lost
+// sensor's restart and the bus time of each tick. One tick is 1 ms (the default 1 kHz control rate).
 #include <gtest/gtest.h>
 
 #include <common/drivers/mpu6050.hpp>
+#include <tests/support/mpu6050_self_test_chip.hpp>
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <deque>
 #include <functional>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -22,9 +25,21 @@ using drivers::Mpu6050Fault;
 using drivers::Mpu6050Phase;
 namespace reg = drivers::mpu6050;
 
+// The factory trim of a code by RM 4.1's formulas, in double: what the driver's integer tables
+// (mpu6050_self_test.hpp) must give.
+double gyro_trim_formula(int code) { return code == 0 ? 0.0 : 25 * 131 * std::pow(1.046, code - 1); }
+double accel_trim_formula(int code) {
+  return code == 0 ? 0.0 : 4096 * 0.34 * std::pow(0.92 / 0.34, (code - 1) / (std::pow(2.0, 5) - 2));
+}
+
+// test_support::kMpu6050Trim's codes, in the data's order (accelerometer x, y, z, gyroscope x, y, z).
+constexpr int kTrimCodes[6] = {18, 13, 15, 12, 17, 14};
+
 // A chip behind a bus, as little of it as the tests need: a register file that a write fills from
 // its register on and a read reads from, both continuing at the next register (PS 9.3); a write of
-// DEVICE_RESET restores the reset values of the registers the driver configures. The chip answers
+// DEVICE_RESET restores the reset values of the registers the driver configures. Its factory trim
+// is test_support::kMpu6050Trim's, and its self-test response that trim by the formulas, in
+// double, rounded (a test may make it another). The chip answers
 // when the transfer is begun (a burst is one instant), the bus reports it at the next poll. Faults
 // are scripted: a result per transfer, polls left pending, a refused begin, a reply cut short, a
 // register that keeps no value written to it, a chip that is not there.
@@ -40,6 +55,7 @@ struct ScriptedBus {
   bool forget_next = false;   // the bus loses the next transfer: poll() says idle
   bool forget = false;
   int short_reply = -1;              // reads return this many bytes
+  int32_t response[6] = {};          // the self-test's, in the data's order
   std::deque<I2cResult> script;      // the next transfers' results (ok: the chip answers)
   std::vector<I2cTransfer> begun;    // every transfer begun
   std::vector<uint32_t> begun_tick;  // and the tick it was begun by (set by Rig)
@@ -51,8 +67,15 @@ struct ScriptedBus {
 
   ScriptedBus() {
     reset_chip();
+    std::copy(std::begin(test_support::kMpu6050Trim), std::end(test_support::kMpu6050Trim), regs + reg::kSelfTestX);
+    for (int axis = 0; axis < 6; ++axis) response[axis] = healthy_response(axis);
     // A chip lying flat and still at about 25 °C: +1 g on chip z at AFS_SEL 1, a small gyro bias.
     set_data({10, -20, 8192}, -3920, {3, -4, 5});
+  }
+
+  static int32_t healthy_response(int axis) {
+    const double trim = axis < 3 ? accel_trim_formula(kTrimCodes[axis]) : gyro_trim_formula(kTrimCodes[axis]);
+    return static_cast<int32_t>(std::lround(axis == 4 ? -trim : trim));  // gyro y: RM 4.1's minus
   }
 
   void reset_chip() {
@@ -105,7 +128,9 @@ struct ScriptedBus {
     if (result != I2cResult::ok) return true;
     const uint8_t first = t.write[0];
     for (uint8_t i = 1; i < t.write_count; ++i) write(static_cast<uint8_t>((first + i - 1) & 0x7F), t.write[i]);
-    for (uint8_t i = 0; i < t.read_count; ++i) reply.data[i] = regs[(first + i) & 0x7F];
+    for (uint8_t i = 0; i < t.read_count; ++i) {
+      reply.data[i] = test_support::mpu6050_read(regs, static_cast<uint8_t>((first + i) & 0x7F), response);
+    }
     reply.count = short_reply >= 0 ? static_cast<uint8_t>(short_reply) : t.read_count;
     return true;
   }
@@ -144,9 +169,9 @@ struct Rig {
   void run(uint32_t ticks) {
     for (uint32_t i = 0; i < ticks; ++i) step();
   }
-  // Steps until the first fresh sample; the documented start-up takes 138 steps (see below).
+  // Steps until the first fresh sample; the documented start-up takes 179 steps (see below).
   void start() {
-    for (int i = 0; i < 200 && !mpu.healthy(); ++i) step();
+    for (int i = 0; i < 250 && !mpu.healthy(); ++i) step();
     ASSERT_TRUE(mpu.healthy());
   }
   size_t transfers() const { return bus.begun.size(); }
@@ -177,42 +202,57 @@ bool is_burst(const I2cTransfer& t) {
   return t.write_count == 1 && t.write[0] == reg::kAccelXoutH && t.read_count == reg::kDataBytes;
 }
 
+// The self-test's samples: `each` bursts a tick apart from `tick` on, as many from `on`.
+std::vector<Expected> self_test_samples(uint32_t tick, uint32_t on, uint32_t each = 8) {
+  std::vector<Expected> bursts;
+  for (uint32_t i = 0; i < each; ++i) bursts.push_back({tick + i, {0x3B}, 14});
+  for (uint32_t i = 0; i < each; ++i) bursts.push_back({on + i, {0x3B}, 14});
+  return bursts;
+}
+
 // The start-up, transfer by transfer: reset at tick 0 (answered at tick 1), 100 ms for the chip to
-// come back (tick 101), identity, wake, the four configuration registers in one write, their read-
-// back and the power register's (answered at tick 106), 30 ms of the gyros settling (tick 136),
-// then the 14 data bytes every tick; the first sample is collected at tick 137.
+// come back (tick 101), identity, wake, the four configuration registers in one write and their
+// read-back, the trim (SELF_TEST_X..A), the self-test's full scales (±250 °/s, ±8 g), the power
+// register's read-back (answered at tick 108), 30 ms of the gyros settling (tick 138), eight
+// samples, the self-test bits (answered at tick 147), the filter's 9.784 ms (tick 157), eight
+// samples, the configured full scales back and read back (answered at tick 167), the filter's
+// wait again (tick 177), then the 14 data bytes every tick; the first sample is collected at tick
+// 178. The self-test adds 41 ticks to the start-up.
 TEST(Mpu6050, StartsUpWithTheDocumentedTransfers) {
   Rig rig;
-  rig.run(140);
-  expect_transfers(rig, 0x68,
-                   {{0, {0x6B, 0x80}, 0},
-                    {101, {0x75}, 1},
-                    {102, {0x6B, 0x01}, 0},
-                    {103, {0x19, 0x00, 0x01, 0x08, 0x08}, 0},
-                    {104, {0x19}, 4},
-                    {105, {0x6B}, 1},
-                    {136, {0x3B}, 14},
-                    {137, {0x3B}, 14},
-                    {138, {0x3B}, 14},
-                    {139, {0x3B}, 14}});
-  EXPECT_EQ(rig.transfers(), 10u);
+  rig.run(181);
+  std::vector<Expected> expected = {
+      {0, {0x6B, 0x80}, 0}, {101, {0x75}, 1}, {102, {0x6B, 0x01}, 0},       {103, {0x19, 0x00, 0x01, 0x08, 0x08}, 0},
+      {104, {0x19}, 4},     {105, {0x0D}, 4}, {106, {0x1B, 0x00, 0x10}, 0}, {107, {0x6B}, 1}};
+  const std::vector<Expected> samples = self_test_samples(138, 157);
+  expected.insert(expected.end(), samples.begin(), samples.begin() + 8);
+  expected.push_back({146, {0x1B, 0xE0, 0xF0}, 0});
+  expected.insert(expected.end(), samples.begin() + 8, samples.end());
+  expected.push_back({165, {0x1B, 0x08, 0x08}, 0});
+  expected.push_back({166, {0x1B}, 2});
+  for (uint32_t tick = 177; tick <= 180; ++tick) expected.push_back({tick, {0x3B}, 14});
+  expect_transfers(rig, 0x68, expected);
+  EXPECT_EQ(rig.transfers(), 31u);
   EXPECT_EQ(rig.mpu.total_faults(), 0u);
-  EXPECT_EQ(rig.mpu.samples(), 3u);
+  EXPECT_EQ(rig.mpu.self_tests(), 1u);
+  EXPECT_EQ(rig.mpu.self_test_failures(), 0u);
+  EXPECT_EQ(rig.mpu.samples(), 3u);  // the self-test's are not the flight's
   EXPECT_TRUE(rig.mpu.healthy());
   // What the chip holds now is what was asked for.
   EXPECT_EQ(rig.bus.regs[reg::kPwrMgmt1], 0x01);
   EXPECT_EQ(rig.bus.regs[reg::kGyroConfig], 0x08);
+  EXPECT_EQ(rig.bus.regs[reg::kAccelConfig], 0x08);
   EXPECT_EQ(rig.bus.regs[reg::kIntEnable], 0x00);
 }
 
-TEST(Mpu6050, TheFirstSampleComesAtTick137AndNotBefore) {
+TEST(Mpu6050, TheFirstSampleComesAtTick178AndNotBefore) {
   Rig rig;
-  rig.run(137);
+  rig.run(178);
   EXPECT_FALSE(rig.mpu.healthy());
   EXPECT_EQ(rig.mpu.phase(), Mpu6050Phase::streaming);  // the first burst is on the wire
   rig.step();
   EXPECT_TRUE(rig.mpu.healthy());
-  EXPECT_EQ(rig.mpu.sample().read_at_us, 136000u);
+  EXPECT_EQ(rig.mpu.sample().read_at_us, 177000u);
 }
 
 // The configuration's every field reaches its register, at the other address.
@@ -225,15 +265,22 @@ TEST(Mpu6050, WritesTheConfigurationItIsGiven) {
   config.accel_full_scale = 2;
   Rig rig(config);
   rig.bus.address = reg::kAddressAd0High;
-  rig.run(140);
-  expect_transfers(rig, 0x69,
-                   {{0, {0x6B, 0x80}, 0},
-                    {101, {0x75}, 1},
-                    {102, {0x6B, 0x01}, 0},
-                    {103, {0x19, 0x01, 0x03, 0x18, 0x10}, 0},
-                    {104, {0x19}, 4},
-                    {105, {0x6B}, 1},
-                    {136, {0x3B}, 14}});
+  rig.run(300);
+  // DLPF_CFG 3 (42 Hz, 4.9 ms): the filter takes 39.004 ms to settle (filter_settle_us), longer
+  // than the gyros' 30 ms, and the waits are that long: from tick 108 to 148, 153 to 193, 199 to
+  // 239. A sample rate of 500 Hz: four samples each way (8 ms of them).
+  std::vector<Expected> expected = {
+      {0, {0x6B, 0x80}, 0}, {101, {0x75}, 1}, {102, {0x6B, 0x01}, 0},       {103, {0x19, 0x01, 0x03, 0x18, 0x10}, 0},
+      {104, {0x19}, 4},     {105, {0x0D}, 4}, {106, {0x1B, 0x00, 0x10}, 0}, {107, {0x6B}, 1}};
+  const std::vector<Expected> samples = self_test_samples(148, 193, 4);
+  expected.insert(expected.end(), samples.begin(), samples.begin() + 4);
+  expected.push_back({152, {0x1B, 0xE0, 0xF0}, 0});
+  expected.insert(expected.end(), samples.begin() + 4, samples.end());
+  expected.push_back({197, {0x1B, 0x18, 0x10}, 0});
+  expected.push_back({198, {0x1B}, 2});
+  expected.push_back({239, {0x3B}, 14});
+  expect_transfers(rig, 0x69, expected);
+  EXPECT_EQ(drivers::mpu6050::filter_settle_us(3), 39004u);
   EXPECT_TRUE(rig.mpu.healthy());
 }
 
@@ -241,7 +288,7 @@ TEST(Mpu6050, WritesTheConfigurationItIsGiven) {
 TEST(Mpu6050, StartsUpAcrossTheClocksWrap) {
   Rig rig;
   rig.clock_offset_us = 0xFFFFFFFFu - 50000u;
-  rig.run(137);
+  rig.run(178);
   EXPECT_FALSE(rig.mpu.healthy());
   rig.step();
   EXPECT_TRUE(rig.mpu.healthy());
@@ -397,13 +444,14 @@ TEST(Mpu6050, TemperaturesAtTheEdgesOfTheRangeAreGood) {
 // A configuration register that does not keep its value: counted, start over 100 ms later, never
 // stream. Also the power register (a chip that stays asleep).
 TEST(Mpu6050, AConfigurationThatDoesNotStickIsAFault) {
-  for (int deaf : {int{reg::kGyroConfig}, int{reg::kPwrMgmt1}}) {
+  // The read-back begun at tick 104, collected at 105; the power register's at 107, 108.
+  for (const auto& [deaf, collected] : {std::pair{int{reg::kGyroConfig}, 105u}, std::pair{int{reg::kPwrMgmt1}, 108u}}) {
     SCOPED_TRACE(deaf);
     Rig rig;
     rig.bus.deaf_register = deaf;
-    rig.run(105);
+    rig.run(collected);
     EXPECT_EQ(rig.mpu.total_faults(), 0u);
-    rig.run(2);  // the read-back (tick 104) or the power register's (105) collected
+    rig.step();
     EXPECT_EQ(rig.mpu.fault_count(Mpu6050Fault::readback_mismatch), 1u);
     EXPECT_EQ(rig.mpu.restart_count(), 1u);
     rig.run(1000);
@@ -568,7 +616,7 @@ TEST(Mpu6050, AStartUpReplyOfTheWrongLengthIsAFault) {
   EXPECT_EQ(rig.mpu.total_faults(), 1u);
   EXPECT_EQ(rig.mpu.restart_count(), 1u);
   rig.bus.short_reply = -1;
-  rig.run(250);
+  rig.run(300);
   EXPECT_TRUE(rig.mpu.healthy());
 }
 
@@ -578,7 +626,7 @@ TEST(Mpu6050, AStartUpReplyOfTheWrongLengthIsAFault) {
 TEST(Mpu6050, ReportsTheBusTimeOfEachTick) {
   Rig rig;
   std::vector<uint32_t> ns;
-  for (int i = 0; i < 140; ++i) {
+  for (int i = 0; i < 180; ++i) {
     rig.step();
     ns.push_back(rig.mpu.bus_time_ns_this_tick(400000));
   }
@@ -587,9 +635,13 @@ TEST(Mpu6050, ReportsTheBusTimeOfEachTick) {
   EXPECT_EQ(ns[101], 97500u);  // read WHO_AM_I: 39 bits
   EXPECT_EQ(ns[103], 140000u);
   EXPECT_EQ(ns[104], 165000u);  // read the four back: 66 bits
+  EXPECT_EQ(ns[105], 165000u);  // the four trim registers
+  EXPECT_EQ(ns[106], 95000u);   // GYRO_CONFIG and ACCEL_CONFIG: 38 bits
   EXPECT_EQ(ns[120], 0u);       // the gyros settling
-  EXPECT_EQ(ns[136], 390000u);
-  EXPECT_EQ(ns[139], 390000u);
+  EXPECT_EQ(ns[138], 390000u);  // the self-test's samples are bursts
+  EXPECT_EQ(ns[150], 0u);       // the filter settling
+  EXPECT_EQ(ns[177], 390000u);
+  EXPECT_EQ(ns[179], 390000u);
   EXPECT_EQ(rig.mpu.bus_bits_this_tick(), 156u);
   EXPECT_EQ(*std::max_element(ns.begin(), ns.end()), 390000u);
   EXPECT_EQ(rig.mpu.bus_time_ns_this_tick(100000), 1560000u);  // more than a 1 kHz tick at 100 kHz
@@ -625,6 +677,220 @@ TEST(Mpu6050, RefusesAConfigurationTheChipCannotTake) {
 TEST(Mpu6050, FaultNamesFollowTheEnumeration) {
   EXPECT_STREQ(drivers::kMpu6050FaultNames[static_cast<size_t>(Mpu6050Fault::wrong_identity)], "wrong identity");
   EXPECT_STREQ(drivers::kMpu6050FaultNames[static_cast<size_t>(Mpu6050Fault::no_answer)], "no answer");
+  EXPECT_STREQ(drivers::kMpu6050FaultNames[static_cast<size_t>(Mpu6050Fault::self_test)], "self-test");
+}
+
+// ---- The self-test (RM 4.1; PS 6.1, 6.2; common/drivers/mpu6050_self_test.hpp) ----
+
+// The integer tables, computed at compile time without floating point, are RM 4.1's formulas
+// computed in double and rounded, for every code; code 0 is no trim.
+TEST(Mpu6050SelfTest, TrimTablesAreTheFormulasRounded) {
+  for (int code = 0; code < 32; ++code) {
+    SCOPED_TRACE(code);
+    EXPECT_EQ(reg::kGyroTrim.counts[code], std::lround(gyro_trim_formula(code)));
+    EXPECT_EQ(reg::kAccelTrim.counts[code], std::lround(accel_trim_formula(code)));
+  }
+  EXPECT_EQ(reg::kGyroTrim.counts[0], 0);
+  EXPECT_EQ(reg::kAccelTrim.counts[0], 0);
+  // The ends: 25 °/s and 0.34 g at code 1; 0.92 g at code 31 (RM 4.1), 96.4 °/s.
+  EXPECT_EQ(reg::kGyroTrim.counts[1], 3275);
+  EXPECT_EQ(reg::kAccelTrim.counts[1], 1393);
+  EXPECT_EQ(reg::kGyroTrim.counts[31], 12623);
+  EXPECT_EQ(reg::kAccelTrim.counts[31], 3768);
+}
+
+// Each gyroscope code is bits 4:0 of its axis' register; each accelerometer code is bits 7:5 of
+// that register (its high three) and two bits of SELF_TEST_A (X 5:4, Y 3:2, Z 1:0).
+TEST(Mpu6050SelfTest, TheCodesAreSplitAcrossTheRegistersAsRm41Says) {
+  uint8_t codes[6] = {};
+  reg::trim_codes(test_support::kMpu6050Trim, codes);
+  for (int axis = 0; axis < 6; ++axis) EXPECT_EQ(codes[axis], kTrimCodes[axis]) << axis;
+  EXPECT_EQ(test_support::kMpu6050Trim[0], 0x8C);    // XA_TEST[4:2] 100, XG_TEST 01100
+  EXPECT_EQ(test_support::kMpu6050Trim[3], 0x27);    // XA_TEST[1:0] 10, YA 01, ZA 11
+  reg::trim_codes({0xFF, 0xFF, 0xFF, 0xFF}, codes);  // bits 7:6 of SELF_TEST_A are reserved
+  for (int axis = 0; axis < 6; ++axis) EXPECT_EQ(codes[axis], 31) << axis;
+  reg::trim_codes({0x00, 0x00, 0x00, 0x30}, codes);  // X's low bits only
+  EXPECT_EQ(codes[0], 3);
+  EXPECT_EQ(codes[1] | codes[2] | codes[3] | codes[4] | codes[5], 0);
+  int32_t trim[6] = {};
+  reg::factory_trim(test_support::kMpu6050Trim, trim);
+  EXPECT_LT(trim[4], 0) << "the gyroscope's Y axis responds the other way (RM 4.1)";
+  for (int axis : {0, 1, 2, 3, 5}) EXPECT_GT(trim[axis], 0) << axis;
+}
+
+// (STR - FT) / FT within ±14 %: for 8 samples of a trim of 3275 counts the sum may be 26 200 less
+// 3 668 to 26 200 plus 3 668, not a count beyond; a response of the wrong sign fails; no trim
+// (code 0) fails whatever the response.
+TEST(Mpu6050SelfTest, PassesWithin14PercentOfTheTrimAndNoFurther) {
+  EXPECT_TRUE(reg::self_test_passes(26200 + 3668, 8, 3275));
+  EXPECT_FALSE(reg::self_test_passes(26200 + 3669, 8, 3275));
+  EXPECT_TRUE(reg::self_test_passes(26200 - 3668, 8, 3275));
+  EXPECT_FALSE(reg::self_test_passes(26200 - 3669, 8, 3275));
+  EXPECT_TRUE(reg::self_test_passes(-26200 - 3668, 8, -3275));
+  EXPECT_FALSE(reg::self_test_passes(-26200 + 3669, 8, -3275));
+  EXPECT_FALSE(reg::self_test_passes(26200, 8, -3275));
+  EXPECT_FALSE(reg::self_test_passes(0, 8, 0));
+  EXPECT_FALSE(reg::self_test_passes(26200, 8, 0));
+  // The largest sums the driver can form: 8 differences of full-scale outputs.
+  EXPECT_FALSE(reg::self_test_passes(8 * 65535, 8, 12623));
+  EXPECT_FALSE(reg::self_test_passes(-8 * 65535, 8, -12623));
+}
+
+// The default part, self-tested at start-up: every axis' response within bounds, so it streams.
+// Each axis in turn responding 16 % over or under its trim (or the gyroscope's y the wrong way)
+// fails the self-test, that axis alone named, counted as its own kind, and the IMU never streams;
+// 12 % over or under passes. Both kinds of sensor, each axis.
+TEST(Mpu6050, TheSelfTestFailsAnAxisThatRespondsOutsideItsBounds) {
+  for (int axis = 0; axis < 6; ++axis) {
+    for (const double factor : {1.16, 0.84, 1.12, 0.88, -1.0}) {
+      SCOPED_TRACE(testing::Message() << "axis " << axis << " response x " << factor);
+      Rig rig;
+      rig.bus.response[axis] = static_cast<int32_t>(std::lround(rig.bus.response[axis] * factor));
+      rig.run(400);
+      const bool passes = factor > 0.86 && factor < 1.14;
+      EXPECT_EQ(rig.mpu.healthy(), passes);
+      EXPECT_GE(rig.mpu.self_tests(), 1u);
+      if (passes) {
+        EXPECT_EQ(rig.mpu.self_test_failures(), 0u);
+        EXPECT_EQ(rig.mpu.total_faults(), 0u);
+        continue;
+      }
+      EXPECT_EQ(rig.mpu.self_test_failures(), 1u << axis);
+      EXPECT_EQ(rig.mpu.fault_count(Mpu6050Fault::self_test), rig.mpu.self_tests());
+      EXPECT_EQ(rig.mpu.total_faults(), rig.mpu.self_tests());
+      EXPECT_EQ(rig.mpu.last_fault(), Mpu6050Fault::self_test);
+      EXPECT_EQ(rig.mpu.samples(), 0u);
+      EXPECT_EQ(rig.mpu.phase(), Mpu6050Phase::starting);
+    }
+  }
+}
+
+// A dead part (no response at all) fails its self-test at tick 165 and starts over 100 ms later,
+// as for a wrong identity: 265 ticks a try, four in a second, never healthy, every one counted.
+// Healed, it passes at the next try, self-tested again (the IMU had never streamed), and streams.
+TEST(Mpu6050, AFailedSelfTestIsTriedAgainAndTheImuNeverStreams) {
+  Rig rig;
+  for (int32_t& r : rig.bus.response) r = 0;
+  bool ever_healthy = false;
+  for (int i = 0; i < 1000; ++i) {
+    rig.step();
+    ever_healthy = ever_healthy || rig.mpu.healthy();
+  }
+  EXPECT_FALSE(ever_healthy);
+  EXPECT_EQ(rig.mpu.self_tests(), 4u);
+  EXPECT_EQ(rig.mpu.fault_count(Mpu6050Fault::self_test), 4u);
+  EXPECT_EQ(rig.mpu.total_faults(), 4u);
+  EXPECT_EQ(rig.mpu.restart_count(), 4u);
+  EXPECT_EQ(rig.mpu.self_test_failures(), 0x3Fu);
+  EXPECT_EQ(rig.mpu.samples(), 0u);
+  // Its configured scales are never restored: the start-up stopped at the verdict.
+  EXPECT_EQ(rig.bus.regs[reg::kGyroConfig], 0xE0);
+  for (int axis = 0; axis < 6; ++axis) rig.bus.response[axis] = ScriptedBus::healthy_response(axis);
+  rig.run(300);
+  EXPECT_TRUE(rig.mpu.healthy());
+  EXPECT_EQ(rig.mpu.self_tests(), 5u);
+  EXPECT_EQ(rig.mpu.self_test_failures(), 0u);
+  EXPECT_EQ(rig.mpu.total_faults(), 4u);
+}
+
+// 8 ms of samples each way, a burst a tick at a sample a tick: 8 at 1 kHz, 4 at 500 Hz (the 500 Hz
+// build's SMPLRT_DIV 1), at most 8 (8 kHz without the filter), at least 1 (a slow sample rate).
+TEST(Mpu6050SelfTest, TakesEightMillisecondsOfSamplesEachWay) {
+  Mpu6050Config config;
+  EXPECT_EQ(drivers::self_test_samples(config), 8);
+  config.sample_rate_divider = 1;
+  EXPECT_EQ(drivers::self_test_samples(config), 4);
+  config.sample_rate_divider = 99;
+  EXPECT_EQ(drivers::self_test_samples(config), 1);
+  config.sample_rate_divider = 0;
+  config.dlpf = 0;
+  EXPECT_EQ(drivers::self_test_samples(config), 8);
+}
+
+// At 500 Hz (a tick of 2 ms, SMPLRT_DIV 1) four samples each way, judged by four: the same part
+// passes; one whose gyroscope z responds 16 % short fails.
+TEST(Mpu6050, AtFiveHundredHertzTheSelfTestTakesFourSamplesEachWay) {
+  Mpu6050Config config;
+  config.sample_rate_divider = 1;
+  for (const double factor : {1.0, 0.84}) {
+    SCOPED_TRACE(factor);
+    Rig rig(config);
+    rig.bus.response[5] = static_cast<int32_t>(std::lround(rig.bus.response[5] * factor));
+    rig.run(200);  // 200 ticks of 1 ms: the waits in microseconds; the count of bursts is what matters
+    size_t bursts = 0;
+    for (const I2cTransfer& t : rig.bus.begun) bursts += is_burst(t) ? 1u : 0u;
+    EXPECT_EQ(rig.mpu.self_tests(), 1u);
+    if (factor == 1.0) {
+      EXPECT_TRUE(rig.mpu.healthy());
+      EXPECT_EQ(bursts - rig.mpu.samples() - 1, 8u) << "four and four, then the flight's (one on the wire)";
+    } else {
+      EXPECT_FALSE(rig.mpu.healthy());
+      EXPECT_EQ(rig.mpu.self_test_failures(), 1u << 5);
+      EXPECT_EQ(bursts, 8u);
+    }
+  }
+}
+
+// A part with no trim recorded (every code 0): nothing to compare with, so no axis passes.
+TEST(Mpu6050, APartWithoutTrimFailsItsSelfTest) {
+  Rig rig;
+  for (uint8_t r = reg::kSelfTestX; r < reg::kSelfTestX + reg::kTrimRegisters; ++r) rig.bus.regs[r] = 0;
+  rig.run(400);
+  EXPECT_FALSE(rig.mpu.healthy());
+  EXPECT_EQ(rig.mpu.self_test_failures(), 0x3Fu);
+  EXPECT_GE(rig.mpu.fault_count(Mpu6050Fault::self_test), 1u);
+}
+
+// A fault during the self-test's samples starts the start-up over, and the self-test with it,
+// its sums from nothing: the second try passes.
+TEST(Mpu6050, AFaultDuringTheSelfTestStartsItOverFromNothing) {
+  Rig rig;
+  rig.run(160);  // three samples with the bits set taken (157, 158, 159)
+  rig.bus.script = {I2cResult::bus_stuck};
+  rig.run(2);
+  EXPECT_EQ(rig.mpu.fault_count(Mpu6050Fault::bus_stuck), 1u);
+  EXPECT_EQ(rig.mpu.restart_count(), 1u);
+  EXPECT_EQ(rig.mpu.self_tests(), 0u);
+  rig.run(300);
+  EXPECT_TRUE(rig.mpu.healthy());
+  EXPECT_EQ(rig.mpu.self_tests(), 1u);
+  EXPECT_EQ(rig.mpu.self_test_failures(), 0u);
+  EXPECT_EQ(rig.mpu.total_faults(), 1u);
+}
+
+// Lost while streaming (perhaps in the air: the vehicle moves, and a self-test would judge its
+// motion), the driver starts over without the self-test: no trim read, no self-test scales or
+// bits written, and it streams 138 ticks after its reset as it did before the self-test was
+// added, even from a part whose self-test would now fail.
+TEST(Mpu6050, ALostSensorStartsOverWithoutTheSelfTest) {
+  Rig rig;
+  rig.start();
+  ASSERT_EQ(rig.mpu.self_tests(), 1u);
+  for (int32_t& r : rig.bus.response) r = 0;
+  rig.bus.present = false;
+  rig.run(11);
+  ASSERT_EQ(rig.mpu.lost_count(), 1u);
+  const size_t reset_at = rig.transfers() - 1;
+  ASSERT_TRUE(is_reset_write(rig.bus.begun[reset_at]));
+  const uint32_t reset_tick = rig.bus.begun_tick[reset_at];
+  rig.bus.present = true;
+  rig.run(1);  // the reset, NACKed: started over 100 ms later
+  rig.run(400);
+  EXPECT_TRUE(rig.mpu.healthy());
+  EXPECT_EQ(rig.mpu.self_tests(), 1u);
+  size_t after = reset_at;
+  while (!is_reset_write(rig.bus.begun[after]) || rig.bus.begun_tick[after] == reset_tick) ++after;
+  const uint32_t restarted = rig.bus.begun_tick[after];
+  for (size_t i = reset_at; i < rig.transfers(); ++i) {
+    const I2cTransfer& t = rig.bus.begun[i];
+    EXPECT_NE(t.write[0], reg::kSelfTestX) << "transfer " << i;
+    EXPECT_FALSE(t.write[0] == reg::kGyroConfig && t.write_count > 1 && (t.write[1] & reg::kSelfTestBits) != 0);
+    EXPECT_FALSE(t.write[0] == reg::kGyroConfig && t.write_count == 3 && t.write[1] == 0x00) << "self-test scales";
+  }
+  size_t first_burst = after;
+  while (!is_burst(rig.bus.begun[first_burst])) ++first_burst;
+  EXPECT_EQ(rig.bus.begun_tick[first_burst] - restarted, 136u);
+  EXPECT_EQ(rig.bus.begun[first_burst - 1].write[0], reg::kPwrMgmt1) << "the configuration, then the settling";
 }
 
 }  // namespace

@@ -4,9 +4,11 @@
 // tick spends at 400 kHz follows from the transfers begun (transfer_time_ns), as on any board.
 //
 // The chips here are the least that lets both drivers start and stream: an MPU-6050 register file
-// (WHO_AM_I 0x68, configuration written and read back, a level sample in its data registers) and an
-// MS5611 that answers the datasheet's example (its PROM with a good CRC, its D1 and D2). What they
-// do over time (conversion delays, start-up) is the simulator's models' business (sim/).
+// (WHO_AM_I 0x68, configuration written and read back, a level sample in its data registers, a
+// self-test it passes: tests/support/mpu6050_self_test_chip.hpp, its response a compile-time
+// constant, so the bench's loop is built as it was) and an MS5611 that answers the datasheet's
+// example (its PROM with a good CRC, its D1 and D2). What they do over time (conversion delays,
+// start-up) is the simulator's models' business (sim/).
 #pragma once
 
 #include <stdint.h>
@@ -16,6 +18,7 @@
 #include <common/drivers/ms5611.hpp>
 #include <qr/boards/rv32virt/devboard.hpp>
 #include <qr/core/sensor_stage.hpp>
+#include <tests/support/mpu6050_self_test_chip.hpp>
 
 namespace sensor_bench {
 
@@ -30,6 +33,7 @@ class ChipsAtOnce {
     mpu_regs_[m::kPwrMgmt1] = m::kPwrMgmt1Reset;
     mpu_regs_[m::kWhoAmI] = m::kIdentity;
     mpu_regs_[m::kAccelXoutH + 4] = 0x20;  // ACCEL_ZOUT = 8192
+    for (uint8_t i = 0; i < m::kTrimRegisters; ++i) mpu_regs_[m::kSelfTestX + i] = test_support::kMpu6050Trim[i];
   }
 
   bool begin(uint8_t channel, const drivers::I2cTransfer& t) { return queue_.begin(channel, t); }
@@ -64,7 +68,10 @@ class ChipsAtOnce {
     const uint8_t reg = t.write[0];
     for (uint8_t i = 1; i < t.write_count; ++i) mpu_regs_[(reg + i - 1) & 0x7F] = t.write[i];
     if ((mpu_regs_[m::kPwrMgmt1] & m::kDeviceReset) != 0) mpu_regs_[m::kPwrMgmt1] = m::kPwrMgmt1Reset;
-    for (uint8_t i = 0; i < t.read_count; ++i) reply.data[i] = mpu_regs_[(reg + i) & 0x7F];
+    for (uint8_t i = 0; i < t.read_count; ++i) {
+      reply.data[i] = test_support::mpu6050_read(mpu_regs_, static_cast<uint8_t>((reg + i) & 0x7F),
+                                                 test_support::kHealthyMpu6050Response.counts);
+    }
   }
   void ms5611(const drivers::I2cTransfer& t, drivers::I2cReply& reply) {
     const uint8_t command = t.write[0];

@@ -1,11 +1,12 @@
 // The MPU-6050 register-level model (sim/mpu6050_model.hpp) through its I2C door, as a driver sees
 // it: reset values, the start-up time, asleep until woken, burst access, the full scales, the
 // counts a truth gives (the same as sim::Imu's at the default scales), the temperature, the sample
-// rate and DATA_RDY, the FIFO and its overflow, and the faults.
+// rate and DATA_RDY, the FIFO and its overflow, the self-test, and the faults.
 #include <gtest/gtest.h>
 
 #include <stdint.h>
 
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -76,6 +77,7 @@ Mpu6050Model awake_at_1khz() {
 TEST(Mpu6050Model, EveryRegisterHasItsResetValue) {
   Mpu6050Model mpu;
   for (const Register& r : kRegisters) {
+    if (r.address >= kSelfTestX && r.address < kSelfTestX + 4) continue;  // the factory trim: below
     const uint8_t expected = r.access == Access::write_only ? 0 : r.reset;
     EXPECT_EQ(read_reg(mpu, r.address, kAwake), expected) << r.name;
   }
@@ -403,6 +405,66 @@ TEST(Mpu6050Model, FaultsAWrongIdentityStuckDataAndAnOverflow) {
   EXPECT_EQ(read_reg(mpu, kIntStatus, 0.21) & kFifoOflowInt, kFifoOflowInt);
   write_reg(mpu, kUserCtrl, 0x00, 0.22);
   EXPECT_FALSE(mpu.overflow_fifo()) << "a disabled FIFO cannot overflow";
+}
+
+// The factory trim in SELF_TEST_X..A as [RM] register 13 lays it out (the default part: gyro
+// codes 12, 17, 14, accelerometer 18, 13, 15), kept by a reset; another part's when set.
+TEST(Mpu6050Model, TheTrimRegistersHoldThePartsCodes) {
+  Mpu6050Model mpu = awake_at_1khz();
+  const std::vector<uint8_t> expected = {4 << 5 | 12, 3 << 5 | 17, 3 << 5 | 14, 2 << 4 | 1 << 2 | 3};
+  EXPECT_EQ(read_burst(mpu, kSelfTestX, 4, 0.2), expected);
+  write_reg(mpu, kPwrMgmt1, 0x80, 0.2);
+  EXPECT_EQ(read_burst(mpu, kSelfTestX, 4, 0.31), expected) << "a reset keeps the factory's trim";
+  mpu.set_trim({{31, 1, 0}, {31, 1, 0}});
+  EXPECT_EQ(read_burst(mpu, kSelfTestX, 4, 0.31), (std::vector<uint8_t>{0xFF, 0x01, 0x00, 0x30 | 0x04}));
+  // [RM] register 13's formulas at the ends of the codes: 25 °/s and 0.34 g at 1, 0.92 g at 31.
+  EXPECT_DOUBLE_EQ(gyro_factory_trim(1), 3275.0);
+  EXPECT_DOUBLE_EQ(accel_factory_trim(1), 4096 * 0.34);
+  EXPECT_NEAR(accel_factory_trim(31), 4096 * 0.92, 1e-9);
+  EXPECT_EQ(gyro_factory_trim(0), 0.0);
+  EXPECT_EQ(accel_factory_trim(0), 0.0);
+}
+
+// The self-test bits shift each axis by its factory trim: at the self-test's full scales
+// (±250 °/s, ±8 g) by the trim in counts (to the count: the rounding), the gyroscope's Y axis
+// negative; at ±500 °/s by half as many counts (the response is physical). A fault's scale on an
+// axis scales its response, that axis alone.
+TEST(Mpu6050Model, TheSelfTestBitsShiftEachAxisByItsFactoryTrim) {
+  Mpu6050Model mpu = awake_at_1khz();
+  const sim::ImuSense still{{0.001, -0.002, 0.003}, {0.1, -0.2, -kG}};
+  const auto response = [&](uint8_t gyro_config, uint8_t accel_config, double t) {
+    write_reg(mpu, kGyroConfig, gyro_config, t);
+    write_reg(mpu, kAccelConfig, accel_config, t);
+    mpu.sample(t + 0.001, still, 25.0);
+    const Counts off = read_data(mpu, t + 0.001);
+    write_reg(mpu, kGyroConfig, gyro_config | kSelfTestBits, t + 0.001);
+    write_reg(mpu, kAccelConfig, accel_config | kSelfTestBits, t + 0.001);
+    mpu.sample(t + 0.002, still, 25.0);
+    const Counts on = read_data(mpu, t + 0.002);
+    std::array<int, 6> d{};
+    for (size_t a = 0; a < 3; ++a) {
+      d[a] = on.accel[a] - off.accel[a];
+      d[3 + a] = on.gyro[a] - off.gyro[a];
+    }
+    return d;
+  };
+  const std::array<int, 6> st = response(0x00, 0x10, 0.2);
+  const double trim[6] = {accel_factory_trim(18), accel_factory_trim(13), accel_factory_trim(15),
+                          gyro_factory_trim(12),  -gyro_factory_trim(17), gyro_factory_trim(14)};
+  for (size_t a = 0; a < 6; ++a) EXPECT_NEAR(st[a], trim[a], 1.0) << "axis " << a;
+  EXPECT_LT(st[4], -4000);
+
+  const std::array<int, 6> half = response(0x08, 0x08, 0.21);  // ±500 °/s, ±4 g
+  for (size_t a = 0; a < 3; ++a)
+    EXPECT_NEAR(half[a], 2 * trim[a], 2.0) << "axis " << a << ": ±4 g has twice the counts";
+  for (size_t a = 3; a < 6; ++a) EXPECT_NEAR(half[a], trim[a] * 65.5 / 131, 1.0) << "axis " << a;
+
+  sim::Mpu6050Faults broken;
+  broken.gyro_self_test_scale = {0.5, 1, 1};
+  mpu.set_faults(broken);
+  const std::array<int, 6> bad = response(0x00, 0x10, 0.22);
+  EXPECT_NEAR(bad[3], trim[3] / 2, 1.0);
+  for (size_t a : {0u, 1u, 2u, 4u, 5u}) EXPECT_NEAR(bad[a], trim[a], 1.0) << "axis " << a;
 }
 
 TEST(Mpu6050Model, SignalConditionResetClearsTheDataRegisters) {

@@ -142,7 +142,7 @@ Served serve_and_converse(std::vector<const char*> args, double seconds, double 
 
 // Serve mode through the sensor drivers (--sensors drivers; direct is its default): asked at once,
 // before the IMU streams, the QR refuses calibration (safety.md rule 20: why serve's default is
-// direct); asked at 0.5 s (it streams from about 0.24 s), it calibrates.
+// direct); asked at 0.5 s (it streams from about 0.28 s), it calibrates.
 TEST(Qrsim, ServesThroughTheSensorDriversWhenAsked) {
   const Served refused = serve_and_converse({"--serve", "--stdio", "--sensors", "drivers", "--seconds", "1"}, 0.8);
   EXPECT_GT(refused.heard.attitude_frames, 0);  // it was there, and refused

@@ -171,6 +171,9 @@ TEST(ScenarioFile, ReadsSensorFaults) {
   ASSERT_TRUE(p.ok) << p.error;
   const std::vector<qrsim::Event>& e = p.script.events;
   ASSERT_EQ(e.size(), 8u);
+  const Parsed self_test = parse("seconds: 3\nat 0 imu selftest bad\nband final_mode == safe\n");
+  ASSERT_TRUE(self_test.ok) << self_test.error;
+  EXPECT_EQ(self_test.script.events.at(0).action, qrsim::Action::imu_self_test);
   EXPECT_EQ(e[0].action, qrsim::Action::nack);
   EXPECT_EQ(e[0].value, 0x68);
   EXPECT_EQ(e[0].duration_s, 0.05);
@@ -290,7 +293,12 @@ const Mistake kMistakes[] = {
     {"seconds: 3\nat 0 imu identity 0x100\n", "mine.txt:2: ", "imu identity is a byte"},
     {"seconds: 3\nat 0 imu identity seventy\n", "mine.txt:2: ", "imu identity is a byte"},
     {"seconds: 3\nat 0 imu identity 0x68\n", "mine.txt:2: ", "the MPU-6050's own"},
-    {"seconds: 3\nat 0 imu fifo full\n", "mine.txt:2: ", "imu needs 'identity BYTE' or 'fifo overflow'"},
+    {"seconds: 3\nat 1 imu selftest bad\n",
+     "mine.txt:2: ", "from power-up (the driver self-tests then only): write it at 0"},
+    {"seconds: 3\nat 0 imu selftest good\n",
+     "mine.txt:2: ", "imu needs 'identity BYTE', 'fifo overflow' or 'selftest bad'"},
+    {"seconds: 3\nat 0 imu fifo full\n",
+     "mine.txt:2: ", "imu needs 'identity BYTE', 'fifo overflow' or 'selftest bad'"},
     {"seconds: 3\nat 0 baro prom good\n", "mine.txt:2: ", "baro needs 'prom bad' or 'slow MS for SECONDS'"},
     {"seconds: 3\nat 0 baro slow 500 for 1\n", "mine.txt:2: ", "baro slow must be > 0 and at most 100 ms"},
     {"seconds: 3\nstart: sky\n", "mine.txt:2: ", "start: is 'hover', 'ground' or 'safe'"},

@@ -27,13 +27,17 @@ TEST(SimI2c, TheDriversReadThePlantsSampleOneTickLate) {
   }
   const auto& stage = drivers.scheduler.sensor_stage();
   // The MPU answers nothing for its first 100 ms: the driver's first reset is not acknowledged
-  // (one fault) and it starts again 100 ms later; it streams from about 0.24 s.
+  // (one fault) and it starts again 100 ms later; it self-tests the model (a part that matches its
+  // trim, with the plant's noise) and streams from about 0.28 s.
   EXPECT_TRUE(stage.imu().healthy());
+  EXPECT_EQ(stage.imu().self_tests(), 1u);
+  EXPECT_EQ(stage.imu().self_test_failures(), 0u);
   EXPECT_EQ(stage.imu().total_faults(), 1u);
   EXPECT_EQ(stage.imu().fault_count(drivers::Mpu6050Fault::address_nack), 1u);
   EXPECT_EQ(drivers_seen[200].accel[2], 0) << "not streaming yet at 0.2 s";
   size_t first = 0;
   while (drivers_seen[first].accel[2] == 0) ++first;
+  EXPECT_EQ(first, 279u) << "the self-test's 41 ms after 0.238 s";
   EXPECT_LT(first, 300u) << "streaming before the pilot's 0.3 s of settling";
   for (size_t i = first + 1; i < drivers_seen.size(); ++i) {
     for (int a = 0; a < 3; ++a) {
@@ -76,7 +80,7 @@ struct FaultRig {
   qrsim::SimQr qr{sim::default_vehicle(), {}};
   FaultRig() {
     qr.board.use_sensor_drivers();
-    run(1000);  // streaming since about 0.24 s, the barometer measuring
+    run(1000);  // streaming since about 0.28 s, the barometer measuring
   }
   void run(int ticks) {
     for (int i = 0; i < ticks; ++i) qr.tick();
@@ -161,6 +165,36 @@ TEST(SimI2c, AWrongIdentityNeverStreams) {
   EXPECT_FALSE(qr.firmware.sample().health.imu);
   EXPECT_EQ(qr.firmware.sample().health.imu_fault, static_cast<uint8_t>(drivers::Mpu6050Fault::wrong_identity));
   EXPECT_TRUE(qr.firmware.sample().health.barometer);
+}
+
+// A part whose gyroscope x responds to its self-test at half its trim (Mpu6050Faults'
+// gyro_self_test_scale), from power-up: the driver's self-test fails that axis alone, the start-up
+// starts over and fails again, and the IMU never streams; the health says why. The same fault
+// set once the IMU streams changes nothing: a lost chip's start-up does not self-test.
+TEST(SimI2c, ABrokenSelfTestResponseNeverStreamsUnlessItCameAfterPowerUp) {
+  sim::Mpu6050Faults broken;
+  broken.gyro_self_test_scale = {0.5, 1, 1};
+  {
+    qrsim::SimQr qr(sim::default_vehicle(), {});
+    qr.board.use_sensor_drivers();
+    qr.board.mpu6050_chip().set_faults(broken);
+    for (int i = 0; i < 2000; ++i) qr.tick();
+    const auto& imu = qr.scheduler.sensor_stage().imu();
+    EXPECT_GE(imu.fault_count(drivers::Mpu6050Fault::self_test), 5u);
+    EXPECT_EQ(imu.self_tests(), imu.fault_count(drivers::Mpu6050Fault::self_test));
+    EXPECT_EQ(imu.self_test_failures(), 1u << 3) << "gyroscope x alone";
+    EXPECT_EQ(imu.samples(), 0u);
+    EXPECT_FALSE(qr.firmware.sample().health.imu);
+    EXPECT_EQ(qr.firmware.sample().health.imu_fault, static_cast<uint8_t>(drivers::Mpu6050Fault::self_test));
+  }
+  FaultRig rig;
+  rig.qr.board.mpu6050_chip().set_faults(broken);
+  rig.qr.board.i2c().nack_address(drivers::mpu6050::kAddressAd0Low, rig.now_us(), rig.now_us() + 50000);
+  rig.run(1000);
+  EXPECT_EQ(rig.stage().imu().lost_count(), 1u);
+  EXPECT_TRUE(rig.stage().imu().healthy());
+  EXPECT_EQ(rig.stage().imu().self_tests(), 1u);
+  EXPECT_EQ(rig.stage().imu().fault_count(drivers::Mpu6050Fault::self_test), 0u);
 }
 
 // A PROM with a bad CRC: the driver refuses it and the barometer is unhealthy (a new try a second).
