@@ -68,6 +68,9 @@ inline constexpr FigureSpec kFigureTable[] = {
     {"engines_stop_s", "from the touchdown until every engine is zero (a landing's end)"},
     {"panic_engines_zero_s",
      "from the first panic until every engine is zero (a cut that stops them at once: one tick); null without a panic"},
+    {"cut_after_liftoff_s",
+     "from the truth's first leaving the ground in the window to the first tick of a panic with every engine at 0 "
+     "(a cut in the air: the sign check's); null without either"},
     {"max_clearance_m_truth", "truth: the highest the lowest foot rose above the ground from t0 (0: never left it)"},
     {"takeoff_seen_s",
      "from the truth's first leaving the ground in the window to the firmware's first flying verdict"},

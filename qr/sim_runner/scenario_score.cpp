@@ -235,6 +235,7 @@ void add_flight_figures(const ScenarioScript& script, const FlightRecord& rec, c
   f.push_back({"touchdown_speed_m_s", rec.touchdown_speed});
   f.push_back({"engines_stop_s", rec.engines_stopped_at - rec.touchdown_at});
   f.push_back({"panic_engines_zero_s", rec.panic_engines_zero_at - rec.panic_at});
+  f.push_back({"cut_after_liftoff_s", rec.panic_engines_zero_at - rec.left_ground_at});
   f.push_back({"max_clearance_m_truth", rec.max_clearance});
   // Left the ground but never seen flying: not measured, so a band on it fails.
   f.push_back({"takeoff_seen_s", rec.flying_seen_at - rec.left_ground_at});

@@ -196,7 +196,7 @@ class FlightChain : public chain::DecimalReadouts<FlightChain<Num, SampleHz>> {
       estimator_.start(accel);
     }
     estimator_.update_rates(rate, landed_.landed());  // on the ground (last tick's verdict): no drag lag
-    if (monitor_.watching()) watch_signs();
+    if (monitor_.watching() || kick_.pushed_axes() != 0) watch_signs();
     if ((clipped_[0] | clipped_[1] | clipped_[2]) != 0) take_clipped_turns();
     // The thrust the mixer is asked for: the pilot's lift, or the vertical loops' (height hold, a
     // landing) from their last run.
@@ -330,6 +330,7 @@ class FlightChain : public chain::DecimalReadouts<FlightChain<Num, SampleHz>> {
     moments_.pitch = sticks ? pilot_.pitch_moment() : pitch_moment_;
     moments_.yaw = from.yaw == chain::Yaw::stick ? pilot_.yaw_moment() : yaw_moment_;
     if (from.excite == chain::Excite::prbs) excite();
+    if (kick_.kicking()) kick();
     if (from.lift != chain::Lift::stick) return engines_ = mixer_.mix_thrust(vertical_.thrust(), moments_);
     return engines_ = mixer_.mix(pilot_.lift(), moments_);
   }
@@ -434,6 +435,7 @@ class FlightChain : public chain::DecimalReadouts<FlightChain<Num, SampleHz>> {
     chain::EngineMixer<Num> mixer = mixer_;
     wrong_sign_ = chain::probe_signs(loops, mixer, mixer_.thrust_of_lift(chain::kProbeLift));
     monitor_.arm();
+    kick_.arm();
   }
   // The identification's moment this tick, added to its axis' (out of line: the autotune's only).
   [[gnu::noinline]] void excite() {
@@ -451,16 +453,29 @@ class FlightChain : public chain::DecimalReadouts<FlightChain<Num, SampleHz>> {
     const bool still = chain::magnitude(roll_target()) < kStillAngle &&
                        chain::magnitude(pitch_target()) < kStillAngle &&
                        chain::magnitude(yaw_rate_target()) < kStillRate;
+    const int32_t angle[2] = {Num::round_to_int(fx::mul_wide(estimator_.roll(), kThousand)),
+                              Num::round_to_int(fx::mul_wide(estimator_.pitch(), kThousand))};
+    const bool quiet = still && !engines_.all_zero() && sources_.tilt == chain::Tilt::angle;
+    const chain::SignAxis answered = kick_.update(quiet, landed_.lifting(), angle);
+    if (answered != chain::SignAxis::none) wrong_sign_ = answered;
     if (!still || engines_.all_zero()) return;
     const int32_t moment[3] = {Num::round_to_int(moments_.roll), Num::round_to_int(moments_.pitch),
                                Num::round_to_int(moments_.yaw)};
     const int32_t rate[3] = {Num::round_to_int(fx::mul_wide(estimator_.p(), kThousand)),
                              Num::round_to_int(fx::mul_wide(estimator_.q(), kThousand)),
                              Num::round_to_int(fx::mul_wide(estimator_.r(), kThousand))};
-    const uint8_t loops = static_cast<uint8_t>((sources_.tilt != chain::Tilt::stick ? 3u : 0u) |
-                                               (sources_.yaw != chain::Yaw::stick ? 4u : 0u));
+    // An axis the kick pushes is not the monitor's: a push reversed, with the rate it made still
+    // growing, is what the monitor looks for.
+    const uint8_t loops = static_cast<uint8_t>(((sources_.tilt != chain::Tilt::stick ? 3u : 0u) |
+                                                (sources_.yaw != chain::Yaw::stick ? 4u : 0u)) &
+                                               ~kick_.pushed_axes());
     const chain::SignAxis found = monitor_.update(moment, rate, loops, landed_.landed(), true);
     if (found != chain::SignAxis::none) wrong_sign_ = found;
+  }
+  // The lift-off kick's push this tick, added to the tilt loops' moments (sign_check.hpp).
+  [[gnu::noinline]] void kick() {
+    moments_.roll = moments_.roll + kKick * kick_.push(0);
+    moments_.pitch = moments_.pitch + kKick * kick_.push(1);
   }
 
   // What the loops fly to: the pilot's sticks, or level and not turning in a landing.
@@ -503,6 +518,10 @@ class FlightChain : public chain::DecimalReadouts<FlightChain<Num, SampleHz>> {
   drivers::ChipToBody mounting_ = chain::kImuMountings[0];  // imu_orientation's row
   bool mounted_as_drawn_ = true;
   chain::WrongWayMonitor monitor_;
+  chain::LiftOffKick kick_;
+  // The lift-off kick's push (sign_check.hpp): 150 thrust units (15 % of an engine's full thrust;
+  // about 30 rad/s^2 on the simulator's vehicle).
+  static constexpr Thrust kKick = Thrust(150.0);
   chain::SignAxis wrong_sign_ = chain::SignAxis::none;
   // The autotune's moments: 40 thrust units on roll and pitch (about 0.09 N m on the simulator's
   // vehicle, 8 rad/s^2: the loops hold the vehicle within about 2 degrees), 150 on yaw, whose

@@ -101,6 +101,9 @@ class LandedDetector {
     return landed_;
   }
   bool landed() const { return landed_; }
+  // Off the ground, or leaving it: the accelerometer has read a firm take-off (beyond takeoff_mg,
+  // with the thrust to lift) for half of the 50 ms that make it a take-off.
+  bool lifting() const { return !landed_ || climbing_ >= kClimbSamples / 2; }
   // A landing (panic): flying until its touchdown says otherwise, and then on the ground; a
   // touchdown counts only near the ground (near_ground below), at the height estimate `height`.
   void take_off() { set_landed(false); }
