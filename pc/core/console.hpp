@@ -65,6 +65,7 @@ class Console {
     uint8_t first_seq = 0;         // of every request type (docs/protocol.md section 6)
     bool simulator = false;        // the console started qrsim and has its truth channel
     std::string params_file;       // where `params` came from: the parameter screen's "file" column
+    bool params_file_exists = true;  // false: there was no such file, `params` are the defaults
     size_t rx_hex_part_bytes = kRxHexPartBytes;
     int battery_cells = 0;  // the pack's LiPo cells (--cells); 0: counted at connection
   };
@@ -147,6 +148,7 @@ class Console {
   uint32_t unhandled_frames() const { return unhandled_frames_; }
 
  private:
+  void route_key(Key key, uint32_t now_ms);
   struct Receiver;
   friend struct Receiver;
 

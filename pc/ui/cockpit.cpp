@@ -7,6 +7,7 @@
 #include <cstdarg>
 #include <cstdio>
 
+#include <pc/core/help_overlay.hpp>
 #include <pc/core/key_map.hpp>
 #include <pc/core/mode_names.hpp>
 #include <pc/core/param_file.hpp>
@@ -385,31 +386,10 @@ void Cockpit::draw_link_alarm(const Console& console, int width) {
 }
 
 void Cockpit::draw_help(int rows, int width) {
-  // Below the title, MODE/LINK, battery, QR and engine rows: the pilot flies by those while
-  // reading the keys. Two columns where the rows allow, else three narrower ones. Keys that do the
-  // same (x and ^C, h and ?) share an entry, so every entry fits at 80x24.
-  const std::vector<HelpEntry> entries = help_entries();
-  constexpr int kTop = 8;
-  constexpr int kEntry = 6 + static_cast<int>(kActionTextMax);  // "right " and the text
-  const int count = static_cast<int>(entries.size());
-  const int columns = (count + 1) / 2 + 2 <= rows - kTop ? 2 : 3;
-  const int per_column = (count + columns - 1) / columns;
-  const int column_width = std::max(kEntry, std::min(38, (width - 2) / columns));
-  const int box_width = std::min(width, columns * column_width + 2);
-  const int box_height = std::min(rows - kTop, per_column + 2);  // the title, the entries, a margin below
-  const int top = kTop + std::max(0, (rows - kTop - box_height) / 2);
-  const int left = std::max(0, (width - box_width) / 2);
-  for (int r = 0; r < box_height; ++r) put(top + r, left, std::string(static_cast<size_t>(box_width), ' '), kTitle);
-  put(top, left + 2, "keys (h or ? closes; any other key acts and closes)", kTitle, A_BOLD);
-  const int column_left = left + (box_width - columns * column_width) / 2;
-  for (int i = 0; i < count; ++i) {
-    const int column = i / per_column;
-    const int row = top + 1 + i % per_column;
-    if (row >= top + box_height) continue;
-    put(row, column_left + column * column_width,
-        text("%-5s %s", entries[static_cast<size_t>(i)].keys.c_str(),
-             action_text(entries[static_cast<size_t>(i)].action)),
-        kTitle);
+  // Its rows come from the core (help_overlay.hpp), which a test reads at 80x24.
+  const HelpOverlay overlay = help_overlay(rows, width);
+  for (size_t r = 0; r < overlay.rows.size(); ++r) {
+    put(overlay.top + static_cast<int>(r), overlay.left, overlay.rows[r], kTitle, r == 0 ? A_BOLD : A_NORMAL);
   }
 }
 

@@ -52,7 +52,8 @@ std::string folder_of_this_program() {
 
 struct StartedParams {
   wire::ParameterValues values;
-  std::string note;  // for the log: where they came from
+  std::string note;        // for the log: where they came from
+  bool from_file = false;  // false: no file, the defaults
 };
 
 StartedParams load_params(const std::string& path) {
@@ -70,7 +71,7 @@ StartedParams load_params(const std::string& path) {
     throw Failure{kUsageError, describe(path, contents.errors) +
                                    "qrterm: fix the parameter file (or move it away to start from the defaults)"};
   }
-  return {contents.values, "parameters from " + path};
+  return {contents.values, "parameters from " + path, true};
 }
 
 JoystickMap load_joystick_map(const std::string& path) {
@@ -276,7 +277,12 @@ int run(int argc, char** argv) {
     std::fputs(usage_text().c_str(), stdout);
     return 0;
   }
-  if (!::isatty(STDIN_FILENO) || !::isatty(STDOUT_FILENO)) throw Failure{kUsageError, "qrterm needs a terminal"};
+  // The cockpit and the wizard are screens and read single keys: nothing here runs without one.
+  if (!::isatty(STDIN_FILENO) || !::isatty(STDOUT_FILENO)) {
+    throw Failure{kUsageError, std::string(::isatty(STDIN_FILENO) ? "standard output" : "standard input") +
+                                   " is not a terminal: run qrterm in a terminal window (over ssh: ssh -t, or in "
+                                   "tmux); it has no mode without a screen, only qrterm --help"};
+  }
   if (options.joystick_wizard) return run_wizard(options);
 
   const StartedParams params = load_params(options.params);
@@ -291,6 +297,7 @@ int run(int argc, char** argv) {
   setup.first_seq = static_cast<uint8_t>(::time(nullptr));
   setup.simulator = line.sim != nullptr;
   setup.params_file = options.params;
+  setup.params_file_exists = params.from_file;
   setup.battery_cells = options.battery_cells;
   Console console(log, files.for_console(), setup, monotonic_ms());
   note_start(console, line, files.folder(), params, joystick.get(), options);

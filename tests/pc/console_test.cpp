@@ -358,9 +358,39 @@ TEST(Console, EscapePanicsAndTheQrSettlesInSafe) {
   b.run(50);
   EXPECT_EQ(b.qr.mode, wire::Mode::panic);
   EXPECT_TRUE(b.logged("ABORT (ESC): panic requested, trims centred"));
+  EXPECT_TRUE(b.logged("QR mode: panic: asked by the pilot (ESC)"));
   EXPECT_EQ(b.console.controls().trims(), qrterm::Sticks{}) << "ready to leave safe again";
   EXPECT_TRUE(b.run_until([&] { return b.console.telemetry().attitude->mode == wire::Mode::safe; }, 1500));
   EXPECT_FALSE(b.console.finished());
+}
+
+// 0 in flight logged "mode: panic (requested)", the QR's words for a request, which name no key:
+// the console's line says what the pilot did (the QR's own line stays as the QR sent it). A panic
+// the QR enters by its own rules names nobody.
+TEST(Console, APanicThePilotAskedForSaysWhichKey) {
+  Bench b;
+  enter_manual(b);
+  b.keys("aaaaa");
+  b.run(100);
+  b.key('0');
+  b.run(50);
+  EXPECT_EQ(b.qr.mode, wire::Mode::panic);
+  EXPECT_TRUE(b.logged("QR mode: panic: asked by the pilot (key 0, safe from flight goes through panic)"));
+  ASSERT_TRUE(b.run_until([&] { return b.console.telemetry().attitude->mode == wire::Mode::safe; }, 1500));
+
+  b.key('c');  // the lift trim back to zero: leaving safe needs it
+  enter_manual(b);
+  ASSERT_EQ(b.qr.mode, wire::Mode::manual);
+  b.keys("aaaaa");
+  b.run(qrterm::kPanicAskedMs + 100);
+  b.cut = true;  // the QR's own rule: its link watchdog
+  b.run(qrterm_test::FakeQr::kLinkTimeoutMs + 50);
+  ASSERT_EQ(b.qr.mode, wire::Mode::panic);
+  b.cut = false;
+  b.run(50);
+  const qrterm::LogLine* line = b.log.find_last("QR mode: panic");
+  ASSERT_NE(line, nullptr);
+  EXPECT_EQ(line->text, "QR mode: panic") << "nobody here asked";
 }
 
 TEST(Console, SecondEscapeInARowExitsAfterTheQrConfirms) {
@@ -530,7 +560,38 @@ TEST(Console, GainKeysStepTheParameterAndSendIt) {
   b.run(100);
   const int32_t c2 = default_of(wire::ParamId::attitude_c2) / 4;
   EXPECT_EQ(b.qr.params.get(wire::ParamId::attitude_c2), c2);
+  b.run(qrterm::kStepsSettleMs);
   EXPECT_TRUE(b.logged("attitude_c2 = " + std::to_string(c2)));
+}
+
+// 30 presses of a gain key were 30 log lines: a burst of steps of one gain is one line, written
+// when the steps stop for a second, when another gain is stepped, or when another key comes; every
+// step still goes to the QR at once.
+TEST(Console, ABurstOfGainStepsIsOneLogLine) {
+  Bench b;
+  b.connect();
+  const auto lines_naming = [&](const std::string& what) {
+    size_t n = 0;
+    for (const qrterm::LogLine& line : b.log.lines()) n += line.text.find(what) != std::string::npos ? 1 : 0;
+    return n;
+  };
+  for (int i = 0; i < 30; ++i) {
+    b.key('u');
+    b.run(50);  // a key held: its repeats 50 ms apart
+  }
+  EXPECT_EQ(lines_naming("yaw_p"), 0u) << "nothing while the steps go on";
+  EXPECT_EQ(b.qr.params.get(wire::ParamId::yaw_p), default_of(wire::ParamId::yaw_p) + 30 * 80) << "each one sent";
+  b.run(qrterm::kStepsSettleMs);
+  EXPECT_EQ(lines_naming("yaw_p"), 1u);
+  EXPECT_TRUE(b.logged("yaw_p = 450 (300 -> 450 in 30 steps)"));
+
+  // Another gain's key ends the burst at once, and so does any other key.
+  b.keys("ii");
+  b.key('o');
+  EXPECT_TRUE(b.logged("roll_pitch_p1 = 6 (5.5 -> 6 in 2 steps)"));
+  b.key('c');
+  EXPECT_TRUE(b.logged("roll_pitch_p2 = 222.5")) << "one step: the value alone, as before";
+  EXPECT_EQ(lines_naming("roll_pitch_p2"), 1u);
 }
 
 TEST(Console, GainAtTheEndOfItsRangeStaysAndSaysSo) {

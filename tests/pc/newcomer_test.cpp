@@ -106,5 +106,21 @@ TEST(ParameterEditor, EveryParameterBackToItsDefault) {
   EXPECT_EQ(describe_changes(file, file), "");
 }
 
+// The file column showed values when there was no parameter file (the defaults stood for it):
+// without a file it is empty, until a file is written (the orientation check's) or saved.
+TEST(ParameterEditor, NoFileNoFileColumn) {
+  wire::ParameterValues defaults;
+  ParameterSync sync(defaults, [](Severity, const std::string&) {});
+  ParameterEditor editor(defaults, "qrterm-params.txt", /*file_exists=*/false);
+  ASSERT_EQ(sync.set(wire::ParamId::yaw_p, 310 * 16), wire::NackReason::none);
+  EXPECT_FALSE(editor.file_exists());
+  EXPECT_EQ(editor.file_difference(sync, wire::ParamId::yaw_p), std::nullopt) << "no file, no file value";
+  editor.file_written("qrterm-params.txt", wire::ParamId::imu_orientation, 1);
+  EXPECT_TRUE(editor.file_exists());
+  EXPECT_EQ(editor.file_difference(sync, wire::ParamId::yaw_p), 300 * 16) << "the file written holds the default";
+  const ParameterEditor with_file(defaults, "qrterm-params.txt");
+  EXPECT_EQ(with_file.file_difference(sync, wire::ParamId::yaw_p), 300 * 16);
+}
+
 }  // namespace
 }  // namespace qrterm
