@@ -79,6 +79,7 @@ Console::Console(ConsoleLog& log, ConsoleFiles files, const Setup& setup, uint32
             autotune_.on_carried(ids, index, values);
           }}),
       autotune_(note_hook()), editor_(setup.params, setup.params_file, setup.params_file_exists), params_file_(setup.params_file),
+      devboard_(setup.devboard),
       check_(OrientationCheck::Hooks{
           note_hook(),
           [this] {
@@ -205,7 +206,8 @@ void Console::abort(const std::string& why) { requests_.abort(why, link_state_ =
 
 void Console::print_tasks() {
   if (telemetry_.tasks.empty()) return note(Severity::warning, "no task figures from the QR yet");
-  for (const std::string& line : task_figure_lines(telemetry_.tasks, simulator_.present())) note(Severity::info, line);
+  for (const std::string& line : task_figure_lines(telemetry_.tasks, figures_from(), devboard(), control_hz()))
+    note(Severity::info, line);
 }
 
 void Console::joystick_moved(const Sticks& sticks, bool position_known, uint32_t now_ms) {

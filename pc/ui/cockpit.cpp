@@ -12,6 +12,7 @@
 #include <pc/core/mode_names.hpp>
 #include <pc/core/param_file.hpp>
 #include <pc/core/radio_pilot.hpp>
+#include <pc/core/task_figures.hpp>
 #include <pc/platform/clock.hpp>
 #include <pc/ui/screen_draw.hpp>
 #include <pc/ui/screens.hpp>
@@ -105,17 +106,10 @@ void Cockpit::draw_system(const Console& console, int width) {
     if (const std::optional<BatteryReading> charge = console.battery()) {
       put(2, 16, charge_text(*charge), charge->near_panic ? kWarning : kInfo, charge->near_panic ? A_BOLD : A_NORMAL);
     }
-    // On the simulator the board's clock is simulated time, which stands still while a tick runs:
-    // load and loop time read 0 and the misses count the host's scheduling, so none is shown. A QR
-    // whose board has no clock (loop time 0) gets the same.
-    if (console.flying_simulator() || s.loop_time_us == 0) {
-      put(2, 37,
-          console.flying_simulator() ? "cpu n/a  loop n/a  misses n/a (simulator)"
-                                     : "cpu n/a  loop n/a (the board has no clock)",
-          kDim);
-    } else {
-      put(2, 37, text("cpu %5.1f %%  loop %5u us  misses %u", s.cpu_load / 10.0, s.loop_time_us, s.deadline_misses));
-    }
+    // What the figures are depends on what flies (task_figures.hpp): none on the simulator's host
+    // build, the devboard's instructions or its core's load, a board's own.
+    const CpuRow cpu = cpu_row(s, console.figures_from(), console.devboard());
+    put(2, 37, cpu.text, cpu.figures ? 0 : kDim);
   } else {
     put(2, 8, "-- V", kDim);
     put(2, 37, "cpu -- %  loop -- us  misses --", kDim);

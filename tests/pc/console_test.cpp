@@ -9,6 +9,7 @@
 #include <common/link_timing.hpp>
 #include <common/task_names.hpp>
 #include <pc/core/key.hpp>
+#include <pc/core/task_figures.hpp>
 #include <pc/core/telemetry_csv.hpp>
 
 #include "console_bench.hpp"
@@ -887,7 +888,8 @@ TEST(Console, TaskTableIsPrintedOnRequest) {
   const qrterm::LogLine* line = b.log.find_last("mixer");
   ASSERT_NE(line, nullptr);
   EXPECT_NE(line->text.find("212    530        3"), std::string::npos) << line->text;
-  EXPECT_TRUE(b.logged("cycles: mean    max overruns  (instructions on the devboard)")) << "the unit";
+  EXPECT_TRUE(b.logged("cycles: mean    max overruns  (the board's cycle counter: instructions on the devboard)"))
+      << "the unit";
   // Every task the QR reports has its name, none a bare number.
   for (uint8_t task = 0; task < wire::kTaskCount; ++task) {
     const wire::FrameBytes each = wire::encode(wire::TelemetryTask{task, 1, 2, 0});
@@ -903,6 +905,51 @@ TEST(Console, TaskTableIsPrintedOnRequest) {
   sim.console.receive(frame.bytes, frame.size, sim.now);
   sim.key('b');
   EXPECT_TRUE(sim.logged("ns: mean    max overruns  (the host's ns: the simulator's board)"));
+}
+
+// The devboard flown by the simulator printed "the host's ns" for its RV32 instruction counts, and
+// its CPU row read n/a: its figures are labelled instructions, the whole tick comes from the
+// simulator's devboard line, and without a core clock the log says what clock the tick needs, with
+// one what share of the period it takes.
+TEST(Console, TheDevboardsFiguresAreInstructions) {
+  qrterm::Console::Setup setup;
+  setup.simulator = true;
+  setup.devboard = true;
+  Bench b(setup);
+  const wire::FrameBytes frame = wire::encode(wire::TelemetryTask{8, 212, 530, 0});
+  b.console.receive(frame.bytes, frame.size, b.now);
+  EXPECT_EQ(b.console.figures_from(), qrterm::FiguresFrom::simulator_devboard) << "from the simulator's arguments";
+  b.key('b');
+  EXPECT_TRUE(b.logged("instr.: mean    max overruns  (RV32 instructions: the devboard in the simulator)"));
+  EXPECT_FALSE(b.logged("host's ns"));
+  EXPECT_FALSE(b.logged("the whole tick")) << "nothing before the simulator's line";
+
+  b.console.truth_line("devboard t=3.000 core_mhz=0 tick_instr_mean=2738 tick_instr_max=8012 ticks=3000");
+  b.key('b');
+  EXPECT_TRUE(b.logged("tick             2738   8012           (the whole tick, over 3000 ticks)"));
+  EXPECT_TRUE(b.logged("no core clock (qrsim --core-mhz N): 8.0 MHz runs the longest tick within its 1000 us period"));
+
+  b.console.truth_line("devboard t=4.000 core_mhz=16 tick_instr_mean=2738 tick_instr_max=8012 ticks=4000");
+  b.key('b');
+  EXPECT_TRUE(b.logged("at 16 MHz (--core-mhz): the tick 171 us mean, 501 us at most, of its 1000 us period"));
+}
+
+// The CPU row: what the figures are, said on the row itself.
+TEST(CpuRow, SaysWhatItsFiguresAre) {
+  const wire::TelemetrySystem s{11850, 171, 501, 0};
+  using qrterm::FiguresFrom;
+  EXPECT_EQ(qrterm::cpu_row(s, FiguresFrom::board, std::nullopt).text, "cpu  17.1 %  loop   501 us  misses 0");
+  EXPECT_FALSE(qrterm::cpu_row(wire::TelemetrySystem{11850, 0, 0, 0}, FiguresFrom::board, std::nullopt).figures);
+  EXPECT_EQ(qrterm::cpu_row(s, FiguresFrom::simulator_host, std::nullopt).text,
+            "cpu n/a  loop n/a  misses n/a (simulator)");
+  const qrterm::DevboardFigures no_clock{0, 2738, 8012, 3000};
+  EXPECT_EQ(qrterm::cpu_row(s, FiguresFrom::simulator_devboard, no_clock).text, "cpu 2738 instr/tick, max 8012 (no clock)");
+  const qrterm::DevboardFigures clocked{16, 2738, 8012, 3000};
+  const qrterm::CpuRow row = qrterm::cpu_row(s, FiguresFrom::simulator_devboard, clocked);
+  EXPECT_EQ(row.text, "cpu 17.1 %  loop 501 us  misses 0 at 16 MHz") << "the board's own, its clock said";
+  EXPECT_TRUE(row.figures);
+  EXPECT_LE(row.text.size(), 43u) << "fits the row at 80 columns, after the battery";
+  EXPECT_FALSE(qrterm::cpu_row(s, FiguresFrom::simulator_devboard, std::nullopt).figures);
 }
 
 // A simulator key on a real serial port: the log says "no simulator", and nothing goes out.
