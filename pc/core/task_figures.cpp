@@ -34,15 +34,14 @@ std::string printed(const char* format, ...) {
 // The whole tick on the devboard, and what it needs of a core at the control rate.
 std::vector<std::string> tick_lines(const DevboardFigures& d, uint32_t control_hz) {
   const double period_us = 1e6 / control_hz;
-  std::vector<std::string> lines{printed("  %-14s %6.0f %6u           (the whole tick, over %u ticks)", "tick",
-                                         d.tick_instr_mean, d.tick_instr_max, d.ticks)};
+  std::vector<std::string> lines{
+      printed("  %-14s %6.0f %6u           (the whole tick)", "tick", d.tick_instr_mean, d.tick_instr_max)};
   if (d.core_mhz > 0) {
-    lines.push_back(printed("  at %u MHz (--core-mhz): the tick %.0f us mean, %.0f us at most, of its %.0f us period",
-                            d.core_mhz, d.tick_instr_mean / d.core_mhz, d.tick_instr_max / static_cast<double>(d.core_mhz),
+    lines.push_back(printed("  at %u MHz: the tick %.0f us mean, %.0f us at most, of %.0f us", d.core_mhz,
+                            d.tick_instr_mean / d.core_mhz, d.tick_instr_max / static_cast<double>(d.core_mhz),
                             period_us));
   } else {
-    lines.push_back(printed("  no core clock (qrsim --core-mhz N): %.1f MHz runs the longest tick within its %.0f us "
-                            "period",
+    lines.push_back(printed("  no clock (qrsim --core-mhz N): %.1f MHz runs the longest tick in %.0f us",
                             d.tick_instr_max / period_us, period_us));
   }
   return lines;
