@@ -78,8 +78,8 @@ Console::Console(ConsoleLog& log, ConsoleFiles files, const Setup& setup, uint32
           [this](const std::vector<uint8_t>& ids, uint32_t index, const std::vector<double>& values) {
             autotune_.on_carried(ids, index, values);
           }}),
-      autotune_(note_hook()), editor_(setup.params, setup.params_file, setup.params_file_exists), params_file_(setup.params_file),
-      devboard_(setup.devboard),
+      autotune_(note_hook()), editor_(setup.params, setup.params_file, setup.params_file_exists),
+      params_file_(setup.params_file), devboard_(setup.devboard),
       check_(OrientationCheck::Hooks{
           note_hook(),
           [this] {
@@ -267,7 +267,8 @@ void Console::on_attitude(const wire::TelemetryAttitude& attitude) {
   bench_.mode(attitude.mode);
   check_.on_mode(attitude.mode);
   autotune_.on_attitude(attitude, telemetry_hz(), control_hz(), parameters_.wanted(), now_ms_);
-  for (const Notice& notice : attitude_notices(before, attitude, requests_.panic_asked_by(now_ms_))) note(notice.severity, notice.text);
+  for (const Notice& notice : attitude_notices(before, attitude, requests_.panic_asked_by(now_ms_)))
+    note(notice.severity, notice.text);
   recordings_.telemetry_row(now_ms_ - start_ms_, telemetry_, requests_.last_control());
 }
 

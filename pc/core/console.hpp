@@ -60,12 +60,12 @@ inline constexpr uint32_t kDefaultControlHz = 1000;
 class Console {
  public:
   struct Setup {
-    wire::ParameterValues params;  // sent to the QR whenever the link comes up
-    bool joystick = false;         // a joystick is part of the cockpit
-    uint8_t first_seq = 0;         // of every request type (docs/protocol.md section 6)
-    bool simulator = false;        // the console started qrsim and has its truth channel
-    bool devboard = false;         // and it flies the devboard (qrsim --devboard), not the host build
-    std::string params_file;       // where `params` came from: the parameter screen's "file" column
+    wire::ParameterValues params;    // sent to the QR whenever the link comes up
+    bool joystick = false;           // a joystick is part of the cockpit
+    uint8_t first_seq = 0;           // of every request type (docs/protocol.md section 6)
+    bool simulator = false;          // the console started qrsim and has its truth channel
+    bool devboard = false;           // and it flies the devboard (qrsim --devboard), not the host build
+    std::string params_file;         // where `params` came from: the parameter screen's "file" column
     bool params_file_exists = true;  // false: there was no such file, `params` are the defaults
     size_t rx_hex_part_bytes = kRxHexPartBytes;
     int battery_cells = 0;  // the pack's LiPo cells (--cells); 0: counted at connection
@@ -205,7 +205,7 @@ class Console {
   AutotuneSession autotune_;
   ParameterEditor editor_;
   std::string params_file_;  // the parameter file the console keeps (--params)
-  bool devboard_;             // the simulator flies the devboard (Setup::devboard)
+  bool devboard_;            // the simulator flies the devboard (Setup::devboard)
   OrientationCheck check_;
   ScreenState screens_;
   PilotRequests requests_;

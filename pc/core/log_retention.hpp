@@ -20,7 +20,6 @@ bool is_session_folder_name(const std::string& name);
 // Of `names` (the folders beside the session's), the session folders to remove so that `keep`
 // remain with the current one among them: the oldest first (their names sort by time). keep 0:
 // none is removed.
-std::vector<std::string> log_folders_to_remove(std::vector<std::string> names, const std::string& current,
-                                               size_t keep);
+std::vector<std::string> log_folders_to_remove(std::vector<std::string> names, const std::string& current, size_t keep);
 
 }  // namespace qrterm

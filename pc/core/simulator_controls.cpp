@@ -159,7 +159,8 @@ void SimulatorControls::take_devboard(const std::string& line) {
       !field(line, "ticks", ticks) || mhz < 0 || mean < 0 || max < 0 || ticks < 0) {
     return;
   }
-  devboard_ = DevboardFigures{static_cast<uint32_t>(mhz), mean, static_cast<uint32_t>(max), static_cast<uint32_t>(ticks)};
+  devboard_ = DevboardFigures{static_cast<uint32_t>(mhz), mean, static_cast<uint32_t>(max),
+                              static_cast<uint32_t>(ticks)};
 }
 
 std::vector<std::string> SimulatorControls::take_commands() {

@@ -297,8 +297,9 @@ int run(int argc, char** argv) {
   SessionFiles files(options.log_dir.empty() ? default_log_folder() : options.log_dir);
   // Folders of earlier starts beyond --keep-logs go; a folder named with --log-dir is the pilot's.
   std::string prune_failed;
-  const size_t pruned =
-      options.log_dir.empty() ? remove_old_log_folders(files.folder(), options.keep_logs, prune_failed) : 0;
+  const size_t pruned = options.log_dir.empty()
+                            ? remove_old_log_folders(files.folder(), options.keep_logs, prune_failed)
+                            : 0;
 
   ConsoleLog log(500, files.console_log());
   Console::Setup setup;

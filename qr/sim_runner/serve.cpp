@@ -295,8 +295,8 @@ class ServeSession {
       next_devboard_us_ = now - now % 1000000 + 1000000;
       const InstructionStats& tick = devboard_->instructions().back();  // the last row: the whole tick
       if (tick.reported) {
-        truth_.send(devboard_line(static_cast<double>(now) * 1e-6, devboard_->core_mhz(), tick.mean(), tick.max,
-                                  tick.runs));
+        truth_.send(
+            devboard_line(static_cast<double>(now) * 1e-6, devboard_->core_mhz(), tick.mean(), tick.max, tick.runs));
       }
     }
     if (options_.status && now >= next_status_us_) {

@@ -943,7 +943,8 @@ TEST(CpuRow, SaysWhatItsFiguresAre) {
   EXPECT_EQ(qrterm::cpu_row(s, FiguresFrom::simulator_host, std::nullopt).text,
             "cpu n/a  loop n/a  misses n/a (simulator)");
   const qrterm::DevboardFigures no_clock{0, 2738, 8012, 3000};
-  EXPECT_EQ(qrterm::cpu_row(s, FiguresFrom::simulator_devboard, no_clock).text, "cpu 2738 instr/tick, max 8012 (no clock)");
+  EXPECT_EQ(qrterm::cpu_row(s, FiguresFrom::simulator_devboard, no_clock).text,
+            "cpu 2738 instr/tick, max 8012 (no clock)");
   const qrterm::DevboardFigures clocked{16, 2738, 8012, 3000};
   const qrterm::CpuRow row = qrterm::cpu_row(s, FiguresFrom::simulator_devboard, clocked);
   EXPECT_EQ(row.text, "cpu 17.1 %  loop 501 us  misses 0 at 16 MHz") << "the board's own, its clock said";

@@ -55,8 +55,8 @@ class FakeQr {
   // Not none: every request to leave safe is refused with it (as the firmware's sensor faults,
   // docs/safety.md rule 20, refuse with imu_fault).
   wire::NackReason refuse_leaving_safe = wire::NackReason::none;
-  bool observable_table = false;            // answers observable_get with the table (the plot's names)
-  std::vector<wire::TelemetryTask> tasks;   // one sent per telemetry period, in turn, when any
+  bool observable_table = false;           // answers observable_get with the table (the plot's names)
+  std::vector<wire::TelemetryTask> tasks;  // one sent per telemetry period, in turn, when any
 
   // --- what it has seen and what it is
   wire::Mode mode = wire::Mode::safe;

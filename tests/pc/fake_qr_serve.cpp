@@ -43,7 +43,8 @@ int main(int argc, char** argv) {
     chatty = chatty || std::strcmp(argv[i], "--chatty") == 0;
     table = table || std::strcmp(argv[i], "--table") == 0;
     devboard = devboard || std::strcmp(argv[i], "--devboard") == 0;
-    if (i + 1 < argc && std::strcmp(argv[i], "--core-mhz") == 0) core_mhz = static_cast<unsigned>(std::atoi(argv[i + 1]));
+    if (i + 1 < argc && std::strcmp(argv[i], "--core-mhz") == 0)
+      core_mhz = static_cast<unsigned>(std::atoi(argv[i + 1]));
     if (i + 1 < argc && std::strcmp(argv[i], "--truth-fd") == 0) truth_fd = std::atoi(argv[i + 1]);
   }
   if (!serve) {
@@ -95,9 +96,9 @@ int main(int argc, char** argv) {
       next_devboard += 1000;
       const unsigned seconds = (now - started) / 1000;
       char line[128];
-      const int length = std::snprintf(line, sizeof line,
-                                  "devboard t=%u.000 core_mhz=%u tick_instr_mean=2738 tick_instr_max=8012 ticks=%u\n",
-                                  seconds, core_mhz, seconds * 1000);
+      const int length = std::snprintf(
+          line, sizeof line, "devboard t=%u.000 core_mhz=%u tick_instr_mean=2738 tick_instr_max=8012 ticks=%u\n",
+          seconds, core_mhz, seconds * 1000);
       if (write(truth_fd, line, static_cast<size_t>(length)) < 0 && errno != EAGAIN) truth_fd = -1;
     }
     if (chatty && now - next_chatter < 0x80000000u) {
