@@ -21,9 +21,9 @@
 
 namespace qrterm {
 
-// rx.hex grows by some 60 MB an hour of telemetry (6.2 MB in 6 minutes): past this size it starts
-// again, the part before kept as rx.hex.1, so a session holds at most twice this (16 MiB, the last
-// quarter of an hour or so of bytes) and the newest bytes are always there.
+// rx.hex grows by some 70 MB an hour of telemetry: past this size it starts again, the part before
+// kept as rx.hex.1, so a session holds at most twice this (16 MiB; with the session folders kept,
+// log_retention.hpp, the disk holds a bounded amount) and the newest bytes are always there.
 inline constexpr size_t kRxHexPartBytes = 8u << 20;
 inline constexpr const char* kRxHexPrevious = "rx.hex.1";
 
