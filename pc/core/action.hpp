@@ -63,9 +63,10 @@ struct ActionSpec {
 };
 
 // Texts stay within kActionTextMax characters: at 80x24 the help overlay shows three columns under
-// the engine rows, so the pilot still sees mode, link and engines while reading it.
+// the engine rows, so the pilot still sees mode, link and engines while reading it, with two
+// spaces between the columns (help_overlay.hpp).
 inline constexpr ActionSpec kActions[] = {
-    {Action::abort, "panic now (2x: exit)"},
+    {Action::abort, "panic (2x: exit)"},
     {Action::exit, "exit (QR to safe)"},
     {Action::mode_safe, "mode safe"},
     {Action::mode_panic, "mode panic"},
@@ -91,28 +92,28 @@ inline constexpr ActionSpec kActions[] = {
     {Action::trims_center, "all trims to zero"},
     {Action::yaw_p_up, "yaw P up"},
     {Action::yaw_p_down, "yaw P down"},
-    {Action::p1_up, "P1 (angle gain) up"},
-    {Action::p1_down, "P1 (angle gain) down"},
-    {Action::p2_up, "P2 (rate gain) up"},
-    {Action::p2_down, "P2 (rate gain) down"},
+    {Action::p1_up, "P1 angle gain up"},
+    {Action::p1_down, "P1 angle gain down"},
+    {Action::p2_up, "P2 rate gain up"},
+    {Action::p2_down, "P2 rate gain down"},
     {Action::c1_up, "C1 (filter) x2"},
     {Action::c1_down, "C1 (filter) /2"},
-    {Action::c2_up, "C2 (filter bias) x2"},
-    {Action::c2_down, "C2 (filter bias) /2"},
+    {Action::c2_up, "C2 filter bias x2"},
+    {Action::c2_down, "C2 filter bias /2"},
     {Action::log_start, "QR logging start"},
     {Action::log_stop, "QR logging stop"},
     {Action::log_download, "download QR logs"},
-    {Action::params_read, "read parameters back"},
-    {Action::tasks_print, "task cycles to log"},
+    {Action::params_read, "read params back"},
+    {Action::tasks_print, "task costs to log"},
     {Action::sim_push, "sim: push (roll)"},
     {Action::sim_reset, "sim: set upright"},
-    {Action::sim_turn, "sim: turn (z, x, y)"},
+    {Action::sim_turn, "sim: turn z, x, y"},
     {Action::sim_radio_off, "sim radio: arm off"},
     {Action::orientation_check, "orientation check"},
     {Action::help, "help on/off"},
 };
 
-inline constexpr size_t kActionTextMax = 20;
+inline constexpr size_t kActionTextMax = 18;
 
 const char* action_text(Action action);
 

@@ -50,6 +50,13 @@ constexpr OptionSpec kOptions[] = {
      [](Options& o, const std::string& v) { return o.params = v, std::string(); }},
     {"--log-dir", "DIR", "where the session's files go (default ./logs/<date>-<time>)",
      [](Options& o, const std::string& v) { return o.log_dir = v, std::string(); }},
+    {"--keep-logs", "N", "log folders kept in ./logs, the oldest removed at start (default 20; 0 keeps all)",
+     [](Options& o, const std::string& v) {
+       const auto [end, error] = std::from_chars(v.data(), v.data() + v.size(), o.keep_logs);
+       if (error != std::errc{} || end != v.data() + v.size() || o.keep_logs > 100000)
+         return "--keep-logs: \"" + v + "\" is not a number of folders (0 keeps every one)";
+       return std::string();
+     }},
     {"--cells", "N", "LiPo cells of the QR's pack, 1..8 (default: counted from its voltage at connection)",
      [](Options& o, const std::string& v) {
        const auto [end, error] = std::from_chars(v.data(), v.data() + v.size(), o.battery_cells);

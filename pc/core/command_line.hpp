@@ -2,11 +2,14 @@
 // the same rows.
 #pragma once
 
+#include <stddef.h>
 #include <stdint.h>
 
 #include <optional>
 #include <string>
 #include <vector>
+
+#include <pc/core/log_retention.hpp>
 
 namespace qrterm {
 
@@ -20,8 +23,9 @@ struct Options {
   std::string joystick_map = "./qrterm-joystick.txt";
   bool joystick_wizard = false;  // find the joystick's map step by step and write it; flies nothing
   std::string params = "./qrterm-params.txt";
-  std::string log_dir;    // empty: ./logs/<date>-<time>
-  int battery_cells = 0;  // 0: counted from the voltage at connection
+  std::string log_dir;                 // empty: ./logs/<date>-<time>
+  size_t keep_logs = kLogFoldersKept;  // session folders kept in ./logs, the oldest removed at start; 0: all
+  int battery_cells = 0;               // 0: counted from the voltage at connection
   bool help = false;
 };
 

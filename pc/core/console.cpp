@@ -78,7 +78,8 @@ Console::Console(ConsoleLog& log, ConsoleFiles files, const Setup& setup, uint32
           [this](const std::vector<uint8_t>& ids, uint32_t index, const std::vector<double>& values) {
             autotune_.on_carried(ids, index, values);
           }}),
-      autotune_(note_hook()), editor_(setup.params, setup.params_file), params_file_(setup.params_file),
+      autotune_(note_hook()), editor_(setup.params, setup.params_file, setup.params_file_exists),
+      params_file_(setup.params_file), devboard_(setup.devboard),
       check_(OrientationCheck::Hooks{
           note_hook(),
           [this] {
@@ -129,6 +130,13 @@ uint32_t Console::telemetry_hz() const {
 }
 
 void Console::key(Key key, uint32_t now_ms) {
+  // A key that stepped no gain ends a burst of steps: its log line comes before the key's own.
+  const size_t steps_before = parameters_.steps_taken();
+  route_key(key, now_ms);
+  if (parameters_.steps_taken() == steps_before) parameters_.end_steps();
+}
+
+void Console::route_key(Key key, uint32_t now_ms) {
   set_time(now_ms);
   // The motor test's screen takes every key but the abort and exit keys, which act as anywhere
   // (and end a test at the QR too): a key meant for the cockpit must stop an engine, not fly.
@@ -198,7 +206,8 @@ void Console::abort(const std::string& why) { requests_.abort(why, link_state_ =
 
 void Console::print_tasks() {
   if (telemetry_.tasks.empty()) return note(Severity::warning, "no task figures from the QR yet");
-  for (const std::string& line : task_figure_lines(telemetry_.tasks, simulator_.present())) note(Severity::info, line);
+  for (const std::string& line : task_figure_lines(telemetry_.tasks, figures_from(), devboard(), control_hz()))
+    note(Severity::info, line);
 }
 
 void Console::joystick_moved(const Sticks& sticks, bool position_known, uint32_t now_ms) {
@@ -258,7 +267,8 @@ void Console::on_attitude(const wire::TelemetryAttitude& attitude) {
   bench_.mode(attitude.mode);
   check_.on_mode(attitude.mode);
   autotune_.on_attitude(attitude, telemetry_hz(), control_hz(), parameters_.wanted(), now_ms_);
-  for (const Notice& notice : attitude_notices(before, attitude)) note(notice.severity, notice.text);
+  for (const Notice& notice : attitude_notices(before, attitude, requests_.panic_asked_by(now_ms_)))
+    note(notice.severity, notice.text);
   recordings_.telemetry_row(now_ms_ - start_ms_, telemetry_, requests_.last_control());
 }
 
@@ -394,6 +404,7 @@ void Console::line_closed(const std::string& why, uint32_t now_ms) {
 
 void Console::request_exit(uint32_t now_ms) {
   set_time(now_ms);
+  parameters_.end_steps();
   const LinkState state = link_.state(now_ms);
   if (exit_.request(state != LinkState::closed && link_.ever_up(), now_ms)) link_.request(wire::Exit{}, now_ms);
 }
@@ -402,6 +413,7 @@ void Console::tick(uint32_t now_ms) {
   set_time(now_ms);
   if (exit_.done()) return;
 
+  parameters_.settle_steps(now_ms);
   const LinkState state = link_.state(now_ms);
   if (state != link_state_) on_link_state(state);
 

@@ -60,11 +60,13 @@ inline constexpr uint32_t kDefaultControlHz = 1000;
 class Console {
  public:
   struct Setup {
-    wire::ParameterValues params;  // sent to the QR whenever the link comes up
-    bool joystick = false;         // a joystick is part of the cockpit
-    uint8_t first_seq = 0;         // of every request type (docs/protocol.md section 6)
-    bool simulator = false;        // the console started qrsim and has its truth channel
-    std::string params_file;       // where `params` came from: the parameter screen's "file" column
+    wire::ParameterValues params;    // sent to the QR whenever the link comes up
+    bool joystick = false;           // a joystick is part of the cockpit
+    uint8_t first_seq = 0;           // of every request type (docs/protocol.md section 6)
+    bool simulator = false;          // the console started qrsim and has its truth channel
+    bool devboard = false;           // and it flies the devboard (qrsim --devboard), not the host build
+    std::string params_file;         // where `params` came from: the parameter screen's "file" column
+    bool params_file_exists = true;  // false: there was no such file, `params` are the defaults
     size_t rx_hex_part_bytes = kRxHexPartBytes;
     int battery_cells = 0;  // the pack's LiPo cells (--cells); 0: counted at connection
   };
@@ -135,6 +137,12 @@ class Console {
   // The console started the simulator: the QR's CPU load, loop time and deadline misses are the
   // host's scheduling of a simulated board there, not figures of a flight computer.
   bool flying_simulator() const { return simulator_.present(); }
+  // What the QR's CPU figures are (task_figures.hpp), and the devboard's own from the simulator.
+  FiguresFrom figures_from() const {
+    if (!simulator_.present()) return FiguresFrom::board;
+    return devboard_ || simulator_.devboard() ? FiguresFrom::simulator_devboard : FiguresFrom::simulator_host;
+  }
+  const std::optional<DevboardFigures>& devboard() const { return simulator_.devboard(); }
   // The simulator's clock on the console's (ms to add to a QR time); empty without truth lines.
   std::optional<int64_t> sim_clock_offset_ms() const { return simulator_.clock_offset_ms(); }
   bool exiting() const { return !exit_.running(); }
@@ -147,6 +155,7 @@ class Console {
   uint32_t unhandled_frames() const { return unhandled_frames_; }
 
  private:
+  void route_key(Key key, uint32_t now_ms);
   struct Receiver;
   friend struct Receiver;
 
@@ -196,6 +205,7 @@ class Console {
   AutotuneSession autotune_;
   ParameterEditor editor_;
   std::string params_file_;  // the parameter file the console keeps (--params)
+  bool devboard_;            // the simulator flies the devboard (Setup::devboard)
   OrientationCheck check_;
   ScreenState screens_;
   PilotRequests requests_;

@@ -25,8 +25,15 @@ inline constexpr Key kKeyBackspace = 0x110004;
 inline constexpr Key kKeyPageUp = 0x110005;
 inline constexpr Key kKeyPageDown = 0x110006;
 inline constexpr Key kKeyHome = 0x110007;
+// Keys no screen binds, named so that "key F1 does nothing" says which key it was, not a code.
+inline constexpr Key kKeyEnd = 0x110008;
+inline constexpr Key kKeyInsert = 0x110009;
+inline constexpr Key kKeyDelete = 0x11000A;
+inline constexpr Key kKeyBackTab = 0x11000B;  // Shift+Tab
+inline constexpr Key kKeyF1 = 0x110010;       // F1 .. F12: kKeyF1 + 0 .. 11
+inline constexpr int kFunctionKeys = 12;
 
-// "ESC", "up", "a", "?": what the help overlay and the documentation call the key.
+// "ESC", "up", "a", "?", "F1": what the help overlay and the documentation call the key.
 std::string key_name(Key key);
 
 }  // namespace qrterm

@@ -135,17 +135,6 @@ std::string format_param_file(const wire::ParameterValues& values) {
   return text;
 }
 
-std::string describe_changes(const wire::ParameterValues& before, const wire::ParameterValues& after) {
-  std::string text;
-  for (const wire::ParameterSpec& spec : wire::kParameterTable) {
-    const int32_t was = before.get(spec.id), is = after.get(spec.id);
-    if (was == is) continue;
-    if (!text.empty()) text += ", ";
-    text += std::string(spec.name) + " " + format_real(spec, was) + " -> " + format_real(spec, is);
-  }
-  return text;
-}
-
 std::string write_param_to_file(const std::string& path, wire::ParamId id, int32_t raw) {
   std::string text;
   wire::ParameterValues values;

@@ -29,10 +29,6 @@ std::string format_param_file(const wire::ParameterValues& values);
 // a finite binary fraction, so the text is exact and reads back to the same raw value.
 std::string format_real(const wire::ParameterSpec& spec, int32_t raw);
 
-// "roll_pitch_p1 5.5 -> 5.75, yaw_p 300 -> 310": what differs from `before` to `after`, in table
-// order; empty when nothing does. Said at exit, so gains changed by a stray key are not saved
-// without a word.
-std::string describe_changes(const wire::ParameterValues& before, const wire::ParameterValues& after);
 
 // One parameter set in the parameter file at `path`, the others as the file has them (the
 // defaults where it is silent or missing), written through a temporary file: what went wrong, or

@@ -64,6 +64,7 @@ ParamStatus ParameterEditor::status(const ParameterSync& sync, wire::ParamId id)
 }
 
 std::optional<int32_t> ParameterEditor::file_difference(const ParameterSync& sync, wire::ParamId id) const {
+  if (!file_exists_) return std::nullopt;
   const int32_t in_file = file_values_.get(id);
   if (in_file == sync.wanted().get(id)) return std::nullopt;
   return in_file;
@@ -112,7 +113,11 @@ size_t ParameterEditor::reset_all_defaults(ParameterSync& sync) const {
 }
 
 void ParameterEditor::file_written(const std::string& path, wire::ParamId id, int32_t raw) {
-  if (path == file_name_) (void)file_values_.set(static_cast<uint8_t>(id), raw);
+  if (path != file_name_) return;
+  // A file written where there was none holds the defaults and this value (write_param_to_file).
+  if (!file_exists_) file_values_ = wire::ParameterValues{};
+  file_exists_ = true;
+  (void)file_values_.set(static_cast<uint8_t>(id), raw);
 }
 
 std::string ParameterEditor::save(const ParameterSync& sync, const std::string& path) {
@@ -127,6 +132,7 @@ std::string ParameterEditor::save(const ParameterSync& sync, const std::string& 
   if (std::rename(temporary.c_str(), path.c_str()) != 0) return "cannot write " + path;
   file_values_ = sync.wanted();
   file_name_ = path;
+  file_exists_ = true;
   return "";
 }
 
@@ -147,6 +153,7 @@ std::string ParameterEditor::load(ParameterSync& sync, const std::string& path) 
   }
   file_values_ = contents.values;
   file_name_ = path;
+  file_exists_ = true;
   return "";
 }
 

@@ -40,17 +40,21 @@ std::string unit_with_degrees(const wire::ParameterSpec& spec, int32_t raw);
 
 class ParameterEditor {
  public:
-  explicit ParameterEditor(const wire::ParameterValues& file_values, std::string file_name)
-      : file_values_(file_values), file_name_(std::move(file_name)) {}
+  // `file_exists`: the values came from that file; false when there was none (the defaults), and
+  // then no row shows a file value until a file is written or loaded.
+  explicit ParameterEditor(const wire::ParameterValues& file_values, std::string file_name, bool file_exists = true)
+      : file_values_(file_values), file_name_(std::move(file_name)), file_exists_(file_exists) {}
 
   size_t cursor() const { return cursor_; }
   const wire::ParameterSpec& selected() const { return wire::kParameterTable[cursor_]; }
   void move(int rows);
 
   ParamStatus status(const ParameterSync& sync, wire::ParamId id) const;
-  // The value the file holds, or nothing when the console's value is the file's.
+  // The value the file holds, or nothing when the console's value is the file's or there is no
+  // file.
   std::optional<int32_t> file_difference(const ParameterSync& sync, wire::ParamId id) const;
   const std::string& file_name() const { return file_name_; }
+  bool file_exists() const { return file_exists_; }
   // One parameter written into the file at `path` by someone else (the orientation check): the
   // file column follows when it is this file.
   void file_written(const std::string& path, wire::ParamId id, int32_t raw);
@@ -71,6 +75,7 @@ class ParameterEditor {
  private:
   wire::ParameterValues file_values_;
   std::string file_name_;
+  bool file_exists_;
   size_t cursor_ = 0;
 };
 

@@ -39,15 +39,36 @@ void ParameterSync::send_all() {
 }
 
 void ParameterSync::step(const GainStep& step) {
+  ++steps_taken_;
+  if (burst_ && burst_->id != step.id) end_steps();
   const int32_t before = wanted_.get(step.id);
   const int32_t after = stepped(step, before);
   if (after == before) {
+    end_steps();
     note_(Severity::warning, param_text(step.id, before) + " is at the end of its range");
     return;
   }
+  if (!burst_) burst_ = StepBurst{step.id, before, 0, now_ms_};
+  ++burst_->steps;
+  burst_->last_ms = now_ms_;
   wanted_.set(id_byte(step.id), after);
-  note_(Severity::info, param_text(step.id, after));
   queue(step.id);
+}
+
+void ParameterSync::end_steps() {
+  if (!burst_) return;
+  const StepBurst burst = *burst_;
+  burst_.reset();
+  const int32_t now = wanted_.get(burst.id);
+  if (burst.steps == 1) return note_(Severity::info, param_text(burst.id, now));
+  const wire::ParameterSpec* spec = wire::find_parameter(id_byte(burst.id));
+  note_(Severity::info, param_text(burst.id, now) + " (" + format_real(*spec, burst.from) + " -> " +
+                            format_real(*spec, now) + " in " + std::to_string(burst.steps) + " steps)");
+}
+
+void ParameterSync::settle_steps(uint32_t now_ms) {
+  now_ms_ = now_ms;
+  if (burst_ && now_ms - burst_->last_ms >= kStepsSettleMs) end_steps();
 }
 
 wire::NackReason ParameterSync::set(wire::ParamId id, int32_t raw) {

@@ -34,8 +34,14 @@ class ParameterSync {
 
   // Every parameter goes up (the link came up: the QR may have restarted with its defaults).
   void send_all();
-  // A gain key: one step of its parameter, sent at once.
+  // A gain key: one step of its parameter, sent at once. The log gets one line for a burst of
+  // steps of one parameter (30 presses are one change to read, not 30): when the steps stop for
+  // kStepsSettleMs, another parameter is stepped, or end_steps() says another key came.
   void step(const GainStep& step);
+  void end_steps();
+  size_t steps_taken() const { return steps_taken_; }  // every step asked for, since start
+  // The clock, for the burst's end; called every console tick, link or not.
+  void settle_steps(uint32_t now_ms);
   // A value typed or loaded on the parameter screen: sent at once if in range, else refused.
   wire::NackReason set(wire::ParamId id, int32_t raw);
   // Sent and not answered yet, or waiting its turn.
@@ -50,6 +56,14 @@ class ParameterSync {
   void tick(LinkSession& link, uint32_t now_ms);
 
  private:
+  // The steps of one parameter not yet in the log.
+  struct StepBurst {
+    wire::ParamId id;
+    int32_t from;  // before the first step
+    uint32_t steps;
+    uint32_t last_ms;
+  };
+
   void queue(wire::ParamId id);
   bool on_its_way(wire::ParamId id) const;
   void take_report(const wire::ParamReport& report);
@@ -64,7 +78,13 @@ class ParameterSync {
   bool read_back_owed_ = false;
   size_t read_back_left_ = 0;  // reports still to come after the pilot's p
   std::vector<std::string> read_back_differ_;
+  std::optional<StepBurst> burst_;
+  uint32_t now_ms_ = 0;
+  size_t steps_taken_ = 0;
 };
+
+// A burst of gain steps ends after this long without one.
+inline constexpr uint32_t kStepsSettleMs = 1000;
 
 // "roll_pitch_p1 = 4.25": a parameter and a raw value in its real unit.
 std::string param_text(wire::ParamId id, int32_t raw);

@@ -22,6 +22,8 @@ void PilotRequests::mode(wire::Mode mode, uint32_t now_ms) {
         std::string("asking for mode ") + mode_name(mode) +
             (mode == wire::Mode::safe && flying ? " (from flight through panic: the engines ramp down first)" : ""));
   requested_ = mode;
+  if (mode == wire::Mode::panic) asked_panic("the pilot (key 1)", now_ms);
+  if (mode == wire::Mode::safe && flying) asked_panic("the pilot (key 0, safe from flight goes through panic)", now_ms);
   // The QR judges "neutral" by the last control it received, which may be up to 20 ms old: a
   // pilot who centres the trims and at once asks for a mode would be refused. A control message
   // with the sticks as they are now goes first; frames arrive in order.
@@ -61,6 +63,8 @@ void PilotRequests::abort(const std::string& why, bool line_closed, uint32_t now
   }
   note_(Severity::error, "ABORT (" + why + "): panic requested" + (trimmed ? ", trims centred" : ""));
   requested_ = wire::Mode::panic;
+  // The pilot's keys and button, or the console's own rule (a joystick lost in flight).
+  asked_panic(why == "joystick lost" ? "the console (joystick lost)" : "the pilot (" + why + ")", now_ms);
   link_.request(wire::ModeChange{0, wire::Mode::panic}, now_ms);
 }
 
@@ -73,6 +77,16 @@ void PilotRequests::on_mode_answer(wire::NackReason reason) {
   if (reason == wire::NackReason::none) return;
   const std::string mode = requested_ ? mode_name(*requested_) : "?";
   note_(Severity::warning, "QR refused mode " + mode + ": " + reason_text(reason));
+}
+
+void PilotRequests::asked_panic(std::string who, uint32_t now_ms) {
+  panic_asked_by_ = std::move(who);
+  panic_asked_ms_ = now_ms;
+}
+
+std::string PilotRequests::panic_asked_by(uint32_t now_ms) const {
+  if (panic_asked_by_.empty() || now_ms - panic_asked_ms_ > kPanicAskedMs) return {};
+  return panic_asked_by_;
 }
 
 }  // namespace qrterm

@@ -45,6 +45,10 @@ class PilotRequests {
   const wire::Control& last_control() const { return last_control_; }
   // The QR's answer to the last mode change (reason none: ack).
   void on_mode_answer(wire::NackReason reason);
+  // Who asked the QR for a panic in the last kPanicAskedMs, in the pilot's words: "the pilot (key
+  // 0, safe from flight goes through panic)", "the pilot (ESC)", "the console (joystick lost)";
+  // empty when nobody here did (the QR panicked by its own rules).
+  std::string panic_asked_by(uint32_t now_ms) const;
 
  private:
   LinkSession& link_;
@@ -53,8 +57,16 @@ class PilotRequests {
   const PilotInput& input_;
   SimulatorControls& simulator_;
   Note note_;
+  void asked_panic(std::string who, uint32_t now_ms);
+
   std::optional<wire::Mode> requested_;  // the last mode asked for, for its refusal
   wire::Control last_control_;
+  std::string panic_asked_by_;
+  uint32_t panic_asked_ms_ = 0;
 };
+
+// A panic the QR reports this long after the console asked for one is the one it asked for (the
+// request is re-sent for 1 s at most, and the QR's mode is in every attitude report).
+inline constexpr uint32_t kPanicAskedMs = 2000;
 
 }  // namespace qrterm

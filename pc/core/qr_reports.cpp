@@ -8,11 +8,13 @@
 namespace qrterm {
 
 std::vector<Notice> attitude_notices(const std::optional<wire::TelemetryAttitude>& before,
-                                     const wire::TelemetryAttitude& now) {
+                                     const wire::TelemetryAttitude& now, const std::string& panic_asked_by) {
   std::vector<Notice> notices;
   if (!before || before->mode != now.mode) {
-    notices.push_back({now.mode == wire::Mode::panic ? Severity::warning : Severity::info,
-                       std::string("QR mode: ") + mode_name(now.mode)});
+    const bool panic = now.mode == wire::Mode::panic;
+    notices.push_back({panic ? Severity::warning : Severity::info,
+                       std::string("QR mode: ") + mode_name(now.mode) +
+                           (panic && !panic_asked_by.empty() ? ": asked by " + panic_asked_by : "")});
   }
   const auto rose = [&](uint8_t bit) { return (now.flags & bit) != 0 && (!before || (before->flags & bit) == 0); };
   if (rose(wire::kFlagCalibrated)) notices.push_back({Severity::info, "QR calibrated"});

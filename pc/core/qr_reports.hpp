@@ -5,6 +5,7 @@
 #include <stdint.h>
 
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <common/log_records.hpp>
@@ -13,9 +14,12 @@
 
 namespace qrterm {
 
-// `before`: the last attitude report (empty: this is the first).
+// `before`: the last attitude report (empty: this is the first). `panic_asked_by`: who asked for
+// the panic the QR may now be in, in the pilot's words ("the pilot (key 0, ...)",
+// PilotRequests::panic_asked_by), or empty: the QR's debug text says its own cause ("mode: panic
+// (requested)"), which names no key.
 std::vector<Notice> attitude_notices(const std::optional<wire::TelemetryAttitude>& before,
-                                     const wire::TelemetryAttitude& now);
+                                     const wire::TelemetryAttitude& now, const std::string& panic_asked_by = {});
 
 // With the log_divider the console holds and the QR's control rate, for the time left.
 std::vector<Notice> log_status_notices(const std::optional<wire::LogStatus>& before, const wire::LogStatus& now,

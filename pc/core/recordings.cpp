@@ -17,8 +17,8 @@ void Recordings::received(uint32_t time_ms, const uint8_t* data, size_t count) {
     files_.rx_hex = files_.restart_rx_hex();
     rx_hex_bytes_ = 0;
     note_(Severity::info, files_.rx_hex != nullptr
-                              ? "rx.hex full: the part before is rx.old.hex now"
-                              : "rx.hex full and cannot start again: received bytes no longer recorded");
+                              ? std::string("rx.hex full: the part before is ") + kRxHexPrevious + " now"
+                              : std::string("rx.hex full and cannot start again: received bytes no longer recorded"));
     if (files_.rx_hex == nullptr) return;
   }
   *files_.rx_hex << line;

@@ -22,8 +22,10 @@
 namespace qrterm {
 
 // rx.hex grows by some 70 MB an hour of telemetry: past this size it starts again, the part before
-// kept as rx.old.hex, so the disk holds at most twice this and the newest bytes are always there.
-inline constexpr size_t kRxHexPartBytes = 16u << 20;
+// kept as rx.hex.1, so a session holds at most twice this (16 MiB; with the session folders kept,
+// log_retention.hpp, the disk holds a bounded amount) and the newest bytes are always there.
+inline constexpr size_t kRxHexPartBytes = 8u << 20;
+inline constexpr const char* kRxHexPrevious = "rx.hex.1";
 
 // Where the console writes; any may be absent.
 struct ConsoleFiles {

@@ -2,6 +2,8 @@
 
 #include <vector>
 
+#include <pc/core/completion.hpp>
+
 namespace qrterm {
 
 ScreenState::Taken ScreenState::key(Key key, double now_s) {
@@ -76,10 +78,8 @@ void ScreenState::prompt_key(Key key) {
     return;
   }
   if (key == kKeyTab && prompt.kind == PromptKind::observables) {
-    // Completes the last word from the QR's table when one name fits.
-    const size_t start = prompt.text.find_last_of(' ') + 1;
-    const std::vector<std::string> names = streams_.catalog().names_starting(prompt.text.substr(start));
-    if (names.size() == 1) prompt.text = prompt.text.substr(0, start) + names[0] + " ";
+    // As a shell: the one name that fits, or the start the candidates share (the screen lists them).
+    prompt.text = complete_last_word(prompt.text, streams_.catalog().names_starting(last_word(prompt.text))).text;
     return;
   }
   if (key >= ' ' && key < 0x7F && prompt.text.size() < 64) prompt.text += static_cast<char>(key);

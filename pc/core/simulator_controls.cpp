@@ -115,12 +115,23 @@ bool SimulatorControls::take_mode_request(wire::Mode mode, bool in_safe, const T
 }
 
 std::optional<PlotModel::TrueState> SimulatorControls::on_line(const std::string& line, uint32_t now_ms) {
+  if (line.rfind("error radio", 0) == 0) {
+    // The switches were asked for because the QR says its radio flies (pilot = 1, saved perhaps
+    // from a session with a radio): say how to fly from the keys again.
+    note_(Severity::warning, "sim: " + line + ": pilot = 1 makes the radio the pilot; set pilot 0 on the parameter " +
+                                 "screen (Tab Tab, select pilot, =) to fly from the keys");
+    return std::nullopt;
+  }
   if (line.rfind("error", 0) == 0) {
     note_(Severity::warning, "sim: " + line);
     return std::nullopt;
   }
   if (line.rfind("ok reset", 0) == 0) {
     note_(Severity::info, "sim: the QR stands upright and still; calibrate (3) again if the attitude is off");
+    return std::nullopt;
+  }
+  if (line.rfind("devboard ", 0) == 0) {
+    take_devboard(line);
     return std::nullopt;
   }
   if (line.rfind("truth ", 0) != 0) return std::nullopt;  // "ok push" and anything newer
@@ -140,6 +151,16 @@ std::optional<PlotModel::TrueState> SimulatorControls::on_line(const std::string
   constexpr double kRadPerDeg = 0.017453292519943295;
   if (!field(line, "climb", climb)) climb = std::nan("");  // an older simulator's line: no climb truth
   return PlotModel::TrueState{roll * kRadPerDeg, pitch * kRadPerDeg, yaw * kRadPerDeg, height, climb};
+}
+
+void SimulatorControls::take_devboard(const std::string& line) {
+  double mhz = 0, mean = 0, max = 0, ticks = 0;
+  if (!field(line, "core_mhz", mhz) || !field(line, "tick_instr_mean", mean) || !field(line, "tick_instr_max", max) ||
+      !field(line, "ticks", ticks) || mhz < 0 || mean < 0 || max < 0 || ticks < 0) {
+    return;
+  }
+  devboard_ = DevboardFigures{static_cast<uint32_t>(mhz), mean, static_cast<uint32_t>(max),
+                              static_cast<uint32_t>(ticks)};
 }
 
 std::vector<std::string> SimulatorControls::take_commands() {

@@ -18,6 +18,7 @@
 #include <pc/core/action.hpp>
 #include <pc/core/console_log.hpp>
 #include <pc/core/plot_model.hpp>
+#include <pc/core/task_figures.hpp>
 #include <pc/core/telemetry_model.hpp>
 
 namespace qrterm {
@@ -55,18 +56,23 @@ class SimulatorControls {
   // Each rotor's speed in the last truth line, rad/s, front, right, back, left, positive clockwise
   // seen from above; empty before a line that has them.
   const std::optional<std::array<double, 4>>& rotors() const { return rotors_; }
+  // The devboard's clock and the tick's instructions, from the simulator's "devboard" line (once
+  // a second while qrsim --devboard flies); empty before one, and for the host build.
+  const std::optional<DevboardFigures>& devboard() const { return devboard_; }
   // The simulator's clock on the console's (ms to add to a QR time): from the truth lines, the
   // smallest difference seen, so the one that waited least on its way. Empty without truth lines.
   std::optional<int64_t> clock_offset_ms() const { return clock_offset_ms_; }
 
  private:
   void turn();
+  void take_devboard(const std::string& line);
 
   bool present_;
   Note note_;
   std::string truth_;
   std::optional<std::array<double, 4>> rotors_;
   std::optional<int64_t> clock_offset_ms_;
+  std::optional<DevboardFigures> devboard_;
   std::vector<std::string> commands_;
   int next_turn_axis_ = 0;  // the y key's next axis: z, x, y
 };

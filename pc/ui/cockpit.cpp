@@ -7,10 +7,12 @@
 #include <cstdarg>
 #include <cstdio>
 
+#include <pc/core/help_overlay.hpp>
 #include <pc/core/key_map.hpp>
 #include <pc/core/mode_names.hpp>
 #include <pc/core/param_file.hpp>
 #include <pc/core/radio_pilot.hpp>
+#include <pc/core/task_figures.hpp>
 #include <pc/platform/clock.hpp>
 #include <pc/ui/screen_draw.hpp>
 #include <pc/ui/screens.hpp>
@@ -104,17 +106,10 @@ void Cockpit::draw_system(const Console& console, int width) {
     if (const std::optional<BatteryReading> charge = console.battery()) {
       put(2, 16, charge_text(*charge), charge->near_panic ? kWarning : kInfo, charge->near_panic ? A_BOLD : A_NORMAL);
     }
-    // On the simulator the board's clock is simulated time, which stands still while a tick runs:
-    // load and loop time read 0 and the misses count the host's scheduling, so none is shown. A QR
-    // whose board has no clock (loop time 0) gets the same.
-    if (console.flying_simulator() || s.loop_time_us == 0) {
-      put(2, 37,
-          console.flying_simulator() ? "cpu n/a  loop n/a  misses n/a (simulator)"
-                                     : "cpu n/a  loop n/a (the board has no clock)",
-          kDim);
-    } else {
-      put(2, 37, text("cpu %5.1f %%  loop %5u us  misses %u", s.cpu_load / 10.0, s.loop_time_us, s.deadline_misses));
-    }
+    // What the figures are depends on what flies (task_figures.hpp): none on the simulator's host
+    // build, the devboard's instructions or its core's load, a board's own.
+    const CpuRow cpu = cpu_row(s, console.figures_from(), console.devboard());
+    put(2, 37, cpu.text, cpu.figures ? 0 : kDim);
   } else {
     put(2, 8, "-- V", kDim);
     put(2, 37, "cpu -- %  loop -- us  misses --", kDim);
@@ -385,31 +380,10 @@ void Cockpit::draw_link_alarm(const Console& console, int width) {
 }
 
 void Cockpit::draw_help(int rows, int width) {
-  // Below the title, MODE/LINK, battery, QR and engine rows: the pilot flies by those while
-  // reading the keys. Two columns where the rows allow, else three narrower ones. Keys that do the
-  // same (x and ^C, h and ?) share an entry, so every entry fits at 80x24.
-  const std::vector<HelpEntry> entries = help_entries();
-  constexpr int kTop = 8;
-  constexpr int kEntry = 6 + static_cast<int>(kActionTextMax);  // "right " and the text
-  const int count = static_cast<int>(entries.size());
-  const int columns = (count + 1) / 2 + 2 <= rows - kTop ? 2 : 3;
-  const int per_column = (count + columns - 1) / columns;
-  const int column_width = std::max(kEntry, std::min(38, (width - 2) / columns));
-  const int box_width = std::min(width, columns * column_width + 2);
-  const int box_height = std::min(rows - kTop, per_column + 2);  // the title, the entries, a margin below
-  const int top = kTop + std::max(0, (rows - kTop - box_height) / 2);
-  const int left = std::max(0, (width - box_width) / 2);
-  for (int r = 0; r < box_height; ++r) put(top + r, left, std::string(static_cast<size_t>(box_width), ' '), kTitle);
-  put(top, left + 2, "keys (h or ? closes; any other key acts and closes)", kTitle, A_BOLD);
-  const int column_left = left + (box_width - columns * column_width) / 2;
-  for (int i = 0; i < count; ++i) {
-    const int column = i / per_column;
-    const int row = top + 1 + i % per_column;
-    if (row >= top + box_height) continue;
-    put(row, column_left + column * column_width,
-        text("%-5s %s", entries[static_cast<size_t>(i)].keys.c_str(),
-             action_text(entries[static_cast<size_t>(i)].action)),
-        kTitle);
+  // Its rows come from the core (help_overlay.hpp), which a test reads at 80x24.
+  const HelpOverlay overlay = help_overlay(rows, width);
+  for (size_t r = 0; r < overlay.rows.size(); ++r) {
+    put(overlay.top + static_cast<int>(r), overlay.left, overlay.rows[r], kTitle, r == 0 ? A_BOLD : A_NORMAL);
   }
 }
 

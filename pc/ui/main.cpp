@@ -18,6 +18,7 @@
 #include <pc/core/console.hpp>
 #include <pc/core/joystick_map.hpp>
 #include <pc/core/param_file.hpp>
+#include <pc/core/session_settings.hpp>
 #include <pc/platform/clock.hpp>
 #include <pc/platform/joystick_device.hpp>
 #include <pc/platform/log_folder.hpp>
@@ -52,7 +53,8 @@ std::string folder_of_this_program() {
 
 struct StartedParams {
   wire::ParameterValues values;
-  std::string note;  // for the log: where they came from
+  std::string note;        // for the log: where they came from
+  bool from_file = false;  // false: no file, the defaults
 };
 
 StartedParams load_params(const std::string& path) {
@@ -70,7 +72,7 @@ StartedParams load_params(const std::string& path) {
     throw Failure{kUsageError, describe(path, contents.errors) +
                                    "qrterm: fix the parameter file (or move it away to start from the defaults)"};
   }
-  return {contents.values, "parameters from " + path};
+  return {contents.values, "parameters from " + path, true};
 }
 
 JoystickMap load_joystick_map(const std::string& path) {
@@ -173,9 +175,7 @@ class SessionFiles {
     files.rx_hex = hex_.get();
     files.restart_rx_hex = [this]() -> std::ostream* {
       hex_.reset();
-      const std::string path = folder_ + "/rx.hex";
-      std::rename(path.c_str(), (folder_ + "/rx.old.hex").c_str());
-      hex_ = open_in(folder_, "rx.hex");
+      hex_ = start_again_in(folder_, "rx.hex", kRxHexPrevious);
       return hex_.get();
     };
     files.telemetry_csv = telemetry_.get();
@@ -217,14 +217,18 @@ void note_start(Console& console, const QrLine& line, const std::string& log_fol
     console.note(Severity::info, "no joystick: keyboard only");
   }
   console.note(Severity::info, "h or ? shows the keys");
+  // Last, so they are the newest lines on the screen at start: saved values this session cannot use.
+  const SessionKind session{line.sim != nullptr, simulator_has_radio(options.sim_arguments)};
+  for (const std::string& trap : settings_that_trap(params.values, session)) console.note(Severity::warning, trap);
 }
 
 // After the screen is closed, on the ordinary terminal: how the session ended, the parameters
 // saved for the next start (which changed, and how back), and where the logs are.
 void say_goodbye(const ConsoleLog& log, const Console& console, const StartedParams& params, const Options& options,
                  const std::string& log_folder) {
-  // Gains changed by keys (perhaps a stray one) load at the next start: say which, and how back.
-  const std::string changes = describe_changes(params.values, console.params());
+  // Gains changed by keys (perhaps a stray one) and settings (pilot) load at the next start: say
+  // which, and how to undo each.
+  const std::vector<std::string> changes = undo_lines(params.values, console.params());
   const std::string saved = write_file_atomically(options.params, format_param_file(console.params()));
   // The last few lines of the log say how the session ended.
   const auto& lines = log.lines();
@@ -236,10 +240,13 @@ void say_goodbye(const ConsoleLog& log, const Console& console, const StartedPar
   } else if (changes.empty()) {
     std::fprintf(stderr, "qrterm: parameters unchanged, in %s\n", options.params.c_str());
   } else {
+    std::fprintf(stderr, "qrterm: parameters changed in this session, saved to %s for the next start:\n",
+                 options.params.c_str());
+    for (const std::string& change : changes) std::fprintf(stderr, "  %s\n", change.c_str());
     std::fprintf(stderr,
-                 "qrterm: parameters changed in this session, saved to %s for the next start: %s\n"
-                 "  (to go back: edit the file, or ! on the parameter screen for the defaults)\n",
-                 options.params.c_str(), changes.c_str());
+                 "  (undo: that line in %s, or the value on the parameter screen: Tab Tab, Enter; ! there sets "
+                 "every default)\n",
+                 options.params.c_str());
   }
   std::fprintf(stderr, "qrterm: logs in %s\n", log_folder.c_str());
 }
@@ -276,13 +283,23 @@ int run(int argc, char** argv) {
     std::fputs(usage_text().c_str(), stdout);
     return 0;
   }
-  if (!::isatty(STDIN_FILENO) || !::isatty(STDOUT_FILENO)) throw Failure{kUsageError, "qrterm needs a terminal"};
+  // The cockpit and the wizard are screens and read single keys: nothing here runs without one.
+  if (!::isatty(STDIN_FILENO) || !::isatty(STDOUT_FILENO)) {
+    throw Failure{kUsageError, std::string(::isatty(STDIN_FILENO) ? "standard output" : "standard input") +
+                                   " is not a terminal: run qrterm in a terminal window (over ssh: ssh -t, or in "
+                                   "tmux); it has no mode without a screen, only qrterm --help"};
+  }
   if (options.joystick_wizard) return run_wizard(options);
 
   const StartedParams params = load_params(options.params);
   std::unique_ptr<JoystickDevice> joystick = open_joystick(options);
   QrLine line = open_qr_line(options);
   SessionFiles files(options.log_dir.empty() ? default_log_folder() : options.log_dir);
+  // Folders of earlier starts beyond --keep-logs go; a folder named with --log-dir is the pilot's.
+  std::string prune_failed;
+  const size_t pruned = options.log_dir.empty()
+                            ? remove_old_log_folders(files.folder(), options.keep_logs, prune_failed)
+                            : 0;
 
   ConsoleLog log(500, files.console_log());
   Console::Setup setup;
@@ -290,10 +307,16 @@ int run(int argc, char** argv) {
   setup.joystick = joystick != nullptr;
   setup.first_seq = static_cast<uint8_t>(::time(nullptr));
   setup.simulator = line.sim != nullptr;
+  setup.devboard = line.sim != nullptr && simulator_flies_devboard(options.sim_arguments);
   setup.params_file = options.params;
+  setup.params_file_exists = params.from_file;
   setup.battery_cells = options.battery_cells;
   Console console(log, files.for_console(), setup, monotonic_ms());
   note_start(console, line, files.folder(), params, joystick.get(), options);
+  if (pruned > 0)
+    console.note(Severity::info, "removed the " + std::to_string(pruned) + " oldest log folders: the newest " +
+                                     std::to_string(options.keep_logs) + " are kept (--keep-logs N, 0 keeps all)");
+  if (!prune_failed.empty()) console.note(Severity::warning, "could not remove an old log folder: " + prune_failed);
 
   install_signal_handlers();
   bool confirmed = false;

@@ -13,7 +13,11 @@ void draw_parameter_screen(const Console& console, int top, int rows, int width)
   const ParameterEditor& editor = console.parameter_editor();
   const ParameterSync& sync = console.parameter_sync();
   put(top, 0, "PARAMETERS", 0, A_BOLD);
-  put(top, 11, "file " + (editor.file_name().empty() ? std::string("(none)") : editor.file_name()), kDim);
+  put(top, 11,
+      editor.file_name().empty() ? std::string("file (none)")
+      : editor.file_exists()     ? "file " + editor.file_name()
+                                 : "no file " + editor.file_name() + " yet (written at exit)",
+      kDim);
   // 79 columns: names are at most 18 characters, the widest range (-100000..100000) 15.
   put(top + 1, 0, text("%-19s %10s %-10s %-15s %10s %10s", "name", "value", "QR", "range", "default", "file"), 0,
       A_UNDERLINE);

@@ -1,6 +1,7 @@
 // The plot screen: the chosen observables against time, newest at the right.
 #include <cmath>
 
+#include <pc/core/completion.hpp>
 #include <pc/core/plot_canvas.hpp>
 #include <pc/core/screen_keys.hpp>
 #include <pc/ui/screen_draw.hpp>
@@ -28,11 +29,14 @@ void draw_prompt_or_log(const Console& console, int row, int width) {
                                     "save parameters to file: ", "load parameters from file: "};
     put(row, 0, std::string(kAsk[static_cast<size_t>(prompt->kind)]) + prompt->text + "_", kTitle, A_BOLD);
     if (prompt->kind == PromptKind::observables) {
-      const std::string typed = prompt->text.substr(prompt->text.find_last_of(' ') + 1);
-      std::string names;
-      for (const std::string& n : console.streams().catalog().names_starting(typed)) names += n + " ";
+      // The names the word being typed may still become, as a shell lists them: Tab completes as
+      // far as they agree.
+      const std::vector<std::string> names = console.streams().catalog().names_starting(last_word(prompt->text));
       put(row - 1, 0, std::string(static_cast<size_t>(width), ' '));
-      put(row - 1, 0, names.empty() ? "(no observable starts so)" : names, kDim);
+      put(row - 1, 0,
+          names.empty() ? std::string("(no observable starts so)")
+                        : candidates_line(names, static_cast<size_t>(std::max(1, width - 1))),
+          kQr);
     }
     return;
   }

@@ -20,6 +20,8 @@ constexpr KeyCode kKeyCodes[] = {
     {KEY_RIGHT, kKeyRight},    {KEY_BACKSPACE, kKeyBackspace}, {KEY_PPAGE, kKeyPageUp},
     {KEY_NPAGE, kKeyPageDown}, {KEY_HOME, kKeyHome},           {127, kKeyBackspace},
     {8, kKeyBackspace},        {KEY_ENTER, kKeyEnter},         {'\n', kKeyEnter},
+    {KEY_END, kKeyEnd},        {KEY_IC, kKeyInsert},           {KEY_DC, kKeyDelete},
+    {KEY_BTAB, kKeyBackTab},
 };
 
 // A lone ESC is told from an arrow key's escape sequence by waiting this long for the rest. Short:
@@ -87,6 +89,7 @@ Key Terminal::next_key() {
     for (const KeyCode& entry : kKeyCodes) {
       if (entry.curses == code) return entry.key;
     }
+    if (code >= KEY_F(1) && code < KEY_F(1) + kFunctionKeys) return kKeyF1 + (code - KEY_F(1));
     return code;
   }
 }

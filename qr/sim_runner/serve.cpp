@@ -252,7 +252,7 @@ class ServeSession {
   ServeSession(const ServeOptions& options, FlyingQr& qr, const ConsoleLine& line)
       : options_(options), qr_(qr), line_(line),
         stop_us_(options.seconds > 0 ? static_cast<uint64_t>(std::llround(options.seconds * 1e6)) : 0),
-        truth_(options.truth_fd) {
+        truth_(options.truth_fd), devboard_(dynamic_cast<const DevboardQr*>(&qr)) {
     if (options.radio) radio_ = std::make_unique<ServeRadio>();
   }
 
@@ -290,6 +290,14 @@ class ServeSession {
     if (truth_.open() && now >= next_truth_us_) {
       next_truth_us_ = now - now % 20000 + 20000;
       truth_.send(truth_line(static_cast<double>(now) * 1e-6, qr_.world().plant()));
+    }
+    if (truth_.open() && devboard_ != nullptr && now >= next_devboard_us_) {
+      next_devboard_us_ = now - now % 1000000 + 1000000;
+      const InstructionStats& tick = devboard_->instructions().back();  // the last row: the whole tick
+      if (tick.reported) {
+        truth_.send(
+            devboard_line(static_cast<double>(now) * 1e-6, devboard_->core_mhz(), tick.mean(), tick.max, tick.runs));
+      }
     }
     if (options_.status && now >= next_status_us_) {
       next_status_us_ += 1000000;
@@ -358,6 +366,8 @@ class ServeSession {
   bool input_open_ = true;
   uint64_t next_status_us_ = 1000000;
   uint64_t next_truth_us_ = 0;
+  const DevboardQr* devboard_;  // null: the host build flies; else its figures once a second
+  uint64_t next_devboard_us_ = 1000000;
   sim::Vec3 push_torque_;
   uint64_t push_until_us_ = 0;
   bool pushing_ = false;  // a push's disturbance is on the plant

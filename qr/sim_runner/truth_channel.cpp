@@ -151,4 +151,13 @@ std::string truth_line(double t_s, const sim::Quadrotor& plant) {
   return text;
 }
 
+std::string devboard_line(double t_s, uint32_t core_mhz, double tick_instr_mean, uint32_t tick_instr_max,
+                          uint32_t ticks) {
+  char text[128];
+  std::snprintf(text, sizeof text, "devboard t=%.3f core_mhz=%u tick_instr_mean=%.0f tick_instr_max=%u ticks=%u\n", t_s,
+                static_cast<unsigned>(core_mhz), tick_instr_mean, static_cast<unsigned>(tick_instr_max),
+                static_cast<unsigned>(ticks));
+  return text;
+}
+
 }  // namespace qrsim

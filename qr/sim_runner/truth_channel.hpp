@@ -49,4 +49,12 @@ sim::PlantState reset_state(const sim::PlantState& now);
 // motor test), with a newline.
 std::string truth_line(double t_s, const sim::Quadrotor& plant);
 
+// "devboard t=12.340 core_mhz=16 tick_instr_mean=2738 tick_instr_max=8012 ticks=12340", with a
+// newline, once a second when the devboard flies (qrsim --serve --devboard): its core's clock
+// (--core-mhz; 0: none, its time stands still while a tick runs) and the whole tick's cost in RV32
+// instructions since start, mean and largest, over that many ticks. The console's CPU row and its
+// task figures (the b key) read it: the QR's own load and loop time are 0 without a clock.
+std::string devboard_line(double t_s, uint32_t core_mhz, double tick_instr_mean, uint32_t tick_instr_max,
+                          uint32_t ticks);
+
 }  // namespace qrsim

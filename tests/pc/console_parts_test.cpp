@@ -198,6 +198,8 @@ TEST(QrReports, AChangeIsToldOnceNotAtEveryReport) {
   EXPECT_EQ(told[2].text, "QR battery low");
   EXPECT_TRUE(attitude_notices(now, now).empty());
   EXPECT_EQ(attitude_notices(std::nullopt, before).size(), 1u) << "the first report says the mode";
+  EXPECT_EQ(attitude_notices(before, now, "the pilot (key 0, safe from flight goes through panic)")[0].text,
+            "QR mode: panic: asked by the pilot (key 0, safe from flight goes through panic)");
 
   wire::LogStatus full{};
   full.flags = wire::kLogStatusFull;

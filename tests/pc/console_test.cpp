@@ -9,6 +9,7 @@
 #include <common/link_timing.hpp>
 #include <common/task_names.hpp>
 #include <pc/core/key.hpp>
+#include <pc/core/task_figures.hpp>
 #include <pc/core/telemetry_csv.hpp>
 
 #include "console_bench.hpp"
@@ -358,9 +359,39 @@ TEST(Console, EscapePanicsAndTheQrSettlesInSafe) {
   b.run(50);
   EXPECT_EQ(b.qr.mode, wire::Mode::panic);
   EXPECT_TRUE(b.logged("ABORT (ESC): panic requested, trims centred"));
+  EXPECT_TRUE(b.logged("QR mode: panic: asked by the pilot (ESC)"));
   EXPECT_EQ(b.console.controls().trims(), qrterm::Sticks{}) << "ready to leave safe again";
   EXPECT_TRUE(b.run_until([&] { return b.console.telemetry().attitude->mode == wire::Mode::safe; }, 1500));
   EXPECT_FALSE(b.console.finished());
+}
+
+// 0 in flight logged "mode: panic (requested)", the QR's words for a request, which name no key:
+// the console's line says what the pilot did (the QR's own line stays as the QR sent it). A panic
+// the QR enters by its own rules names nobody.
+TEST(Console, APanicThePilotAskedForSaysWhichKey) {
+  Bench b;
+  enter_manual(b);
+  b.keys("aaaaa");
+  b.run(100);
+  b.key('0');
+  b.run(50);
+  EXPECT_EQ(b.qr.mode, wire::Mode::panic);
+  EXPECT_TRUE(b.logged("QR mode: panic: asked by the pilot (key 0, safe from flight goes through panic)"));
+  ASSERT_TRUE(b.run_until([&] { return b.console.telemetry().attitude->mode == wire::Mode::safe; }, 1500));
+
+  b.key('c');  // the lift trim back to zero: leaving safe needs it
+  enter_manual(b);
+  ASSERT_EQ(b.qr.mode, wire::Mode::manual);
+  b.keys("aaaaa");
+  b.run(qrterm::kPanicAskedMs + 100);
+  b.cut = true;  // the QR's own rule: its link watchdog
+  b.run(qrterm_test::FakeQr::kLinkTimeoutMs + 50);
+  ASSERT_EQ(b.qr.mode, wire::Mode::panic);
+  b.cut = false;
+  b.run(50);
+  const qrterm::LogLine* line = b.log.find_last("QR mode: panic");
+  ASSERT_NE(line, nullptr);
+  EXPECT_EQ(line->text, "QR mode: panic") << "nobody here asked";
 }
 
 TEST(Console, SecondEscapeInARowExitsAfterTheQrConfirms) {
@@ -530,7 +561,38 @@ TEST(Console, GainKeysStepTheParameterAndSendIt) {
   b.run(100);
   const int32_t c2 = default_of(wire::ParamId::attitude_c2) / 4;
   EXPECT_EQ(b.qr.params.get(wire::ParamId::attitude_c2), c2);
+  b.run(qrterm::kStepsSettleMs);
   EXPECT_TRUE(b.logged("attitude_c2 = " + std::to_string(c2)));
+}
+
+// 30 presses of a gain key were 30 log lines: a burst of steps of one gain is one line, written
+// when the steps stop for a second, when another gain is stepped, or when another key comes; every
+// step still goes to the QR at once.
+TEST(Console, ABurstOfGainStepsIsOneLogLine) {
+  Bench b;
+  b.connect();
+  const auto lines_naming = [&](const std::string& what) {
+    size_t n = 0;
+    for (const qrterm::LogLine& line : b.log.lines()) n += line.text.find(what) != std::string::npos ? 1 : 0;
+    return n;
+  };
+  for (int i = 0; i < 30; ++i) {
+    b.key('u');
+    b.run(50);  // a key held: its repeats 50 ms apart
+  }
+  EXPECT_EQ(lines_naming("yaw_p"), 0u) << "nothing while the steps go on";
+  EXPECT_EQ(b.qr.params.get(wire::ParamId::yaw_p), default_of(wire::ParamId::yaw_p) + 30 * 80) << "each one sent";
+  b.run(qrterm::kStepsSettleMs);
+  EXPECT_EQ(lines_naming("yaw_p"), 1u);
+  EXPECT_TRUE(b.logged("yaw_p = 450 (300 -> 450 in 30 steps)"));
+
+  // Another gain's key ends the burst at once, and so does any other key.
+  b.keys("ii");
+  b.key('o');
+  EXPECT_TRUE(b.logged("roll_pitch_p1 = 6 (5.5 -> 6 in 2 steps)"));
+  b.key('c');
+  EXPECT_TRUE(b.logged("roll_pitch_p2 = 222.5")) << "one step: the value alone, as before";
+  EXPECT_EQ(lines_naming("roll_pitch_p2"), 1u);
 }
 
 TEST(Console, GainAtTheEndOfItsRangeStaysAndSaysSo) {
@@ -826,7 +888,8 @@ TEST(Console, TaskTableIsPrintedOnRequest) {
   const qrterm::LogLine* line = b.log.find_last("mixer");
   ASSERT_NE(line, nullptr);
   EXPECT_NE(line->text.find("212    530        3"), std::string::npos) << line->text;
-  EXPECT_TRUE(b.logged("cycles: mean    max overruns  (instructions on the devboard)")) << "the unit";
+  EXPECT_TRUE(b.logged("cycles: mean    max overruns  (the board's cycle counter: instructions on the devboard)"))
+      << "the unit";
   // Every task the QR reports has its name, none a bare number.
   for (uint8_t task = 0; task < wire::kTaskCount; ++task) {
     const wire::FrameBytes each = wire::encode(wire::TelemetryTask{task, 1, 2, 0});
@@ -842,6 +905,52 @@ TEST(Console, TaskTableIsPrintedOnRequest) {
   sim.console.receive(frame.bytes, frame.size, sim.now);
   sim.key('b');
   EXPECT_TRUE(sim.logged("ns: mean    max overruns  (the host's ns: the simulator's board)"));
+}
+
+// The devboard flown by the simulator printed "the host's ns" for its RV32 instruction counts, and
+// its CPU row read n/a: its figures are labelled instructions, the whole tick comes from the
+// simulator's devboard line, and without a core clock the log says what clock the tick needs, with
+// one what share of the period it takes.
+TEST(Console, TheDevboardsFiguresAreInstructions) {
+  qrterm::Console::Setup setup;
+  setup.simulator = true;
+  setup.devboard = true;
+  Bench b(setup);
+  const wire::FrameBytes frame = wire::encode(wire::TelemetryTask{8, 212, 530, 0});
+  b.console.receive(frame.bytes, frame.size, b.now);
+  EXPECT_EQ(b.console.figures_from(), qrterm::FiguresFrom::simulator_devboard) << "from the simulator's arguments";
+  b.key('b');
+  EXPECT_TRUE(b.logged("instr.: mean    max overruns  (RV32 instructions: the devboard in the simulator)"));
+  EXPECT_FALSE(b.logged("host's ns"));
+  EXPECT_FALSE(b.logged("the whole tick")) << "nothing before the simulator's line";
+
+  b.console.truth_line("devboard t=3.000 core_mhz=0 tick_instr_mean=2738 tick_instr_max=8012 ticks=3000");
+  b.key('b');
+  EXPECT_TRUE(b.logged("tick             2738   8012           (the whole tick)"));
+  EXPECT_TRUE(b.logged("no clock (qrsim --core-mhz N): 8.0 MHz runs the longest tick in 1000 us"));
+
+  b.console.truth_line("devboard t=4.000 core_mhz=16 tick_instr_mean=2738 tick_instr_max=8012 ticks=4000");
+  b.key('b');
+  EXPECT_TRUE(b.logged("at 16 MHz: the tick 171 us mean, 501 us at most, of 1000 us"));
+}
+
+// The CPU row: what the figures are, said on the row itself.
+TEST(CpuRow, SaysWhatItsFiguresAre) {
+  const wire::TelemetrySystem s{11850, 171, 501, 0};
+  using qrterm::FiguresFrom;
+  EXPECT_EQ(qrterm::cpu_row(s, FiguresFrom::board, std::nullopt).text, "cpu  17.1 %  loop   501 us  misses 0");
+  EXPECT_FALSE(qrterm::cpu_row(wire::TelemetrySystem{11850, 0, 0, 0}, FiguresFrom::board, std::nullopt).figures);
+  EXPECT_EQ(qrterm::cpu_row(s, FiguresFrom::simulator_host, std::nullopt).text,
+            "cpu n/a  loop n/a  misses n/a (simulator)");
+  const qrterm::DevboardFigures no_clock{0, 2738, 8012, 3000};
+  EXPECT_EQ(qrterm::cpu_row(s, FiguresFrom::simulator_devboard, no_clock).text,
+            "cpu 2738 instr/tick, max 8012 (no clock)");
+  const qrterm::DevboardFigures clocked{16, 2738, 8012, 3000};
+  const qrterm::CpuRow row = qrterm::cpu_row(s, FiguresFrom::simulator_devboard, clocked);
+  EXPECT_EQ(row.text, "cpu 17.1 %  loop 501 us  misses 0 at 16 MHz") << "the board's own, its clock said";
+  EXPECT_TRUE(row.figures);
+  EXPECT_LE(row.text.size(), 43u) << "fits the row at 80 columns, after the battery";
+  EXPECT_FALSE(qrterm::cpu_row(s, FiguresFrom::simulator_devboard, std::nullopt).figures);
 }
 
 // A simulator key on a real serial port: the log says "no simulator", and nothing goes out.

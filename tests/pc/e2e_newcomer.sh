@@ -61,7 +61,7 @@ wait_for 'MODE +manual ' 3 "2 enters manual"
 keys PPage PPage PPage
 wait_for 'sending +lift +300 ' 3 "three PgUp give lift 300"
 keys h
-wait_for 'keys \(h or \? closes' 3 "h shows the help"
+wait_for 'keys +Tab: next screen +h or \?: close' 3 "h shows the help"
 pane=$(screen)
 for pattern in 'MODE +manual ' 'LINK +up' '^front +[0-9]+ ' '^right +[0-9]+ ' '^back +[0-9]+ ' '^left +[0-9]+ ' 'PgUp +lift up x10' 'v +sim: set upright'; do
   grep -Eq -- "$pattern" <<<"$pane" || fail "with the help shown at 80x24, /$pattern/ is not on the screen"

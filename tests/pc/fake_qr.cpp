@@ -4,6 +4,8 @@
 
 #include <common/link_timing.hpp>
 
+#include "observable_table_feed.hpp"
+
 namespace qrterm_test {
 namespace {
 
@@ -52,6 +54,16 @@ struct FakeQr::Handler {
       if (g.id == wire::kAllParameters || g.id == id)
         qr.send(wire::encode(wire::ParamReport{id, qr.params.get(spec.id)}));
     }
+  }
+  void operator()(const wire::ObservableGet&) {
+    if (!qr.observable_table) return;
+    // The whole table at once (the firmware sends a row a tick): the console takes it either way.
+    struct Encoder {
+      FakeQr& qr;
+      void on(const wire::ObservableInfo& m) { qr.send(wire::encode(m)); }
+      void on(const wire::ObservableText& m) { qr.send(wire::encode(m)); }
+    } encoder{qr};
+    qrterm::send_observable_table(encoder);
   }
   void operator()(const wire::LogStart&) { qr.logging = true; }
   void operator()(const wire::LogStop&) { qr.logging = false; }
@@ -185,6 +197,7 @@ void FakeQr::send_telemetry() {
   send(wire::encode(attitude));
   send(wire::encode(wire::TelemetryRates{}));
   if (height) send(wire::encode(*height));
+  if (!tasks.empty()) send(wire::encode(tasks[next_task_++ % tasks.size()]));
   switch (slow_group_++ % 5) {
     case 0: {
       wire::TelemetryEngines engines;

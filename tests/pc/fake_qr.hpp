@@ -55,6 +55,8 @@ class FakeQr {
   // Not none: every request to leave safe is refused with it (as the firmware's sensor faults,
   // docs/safety.md rule 20, refuse with imu_fault).
   wire::NackReason refuse_leaving_safe = wire::NackReason::none;
+  bool observable_table = false;           // answers observable_get with the table (the plot's names)
+  std::vector<wire::TelemetryTask> tasks;  // one sent per telemetry period, in turn, when any
 
   // --- what it has seen and what it is
   wire::Mode mode = wire::Mode::safe;
@@ -92,6 +94,7 @@ class FakeQr {
   uint32_t mode_since_ms_ = 0;
   uint8_t tick_ = 0;
   uint8_t slow_group_ = 0;
+  size_t next_task_ = 0;
 };
 
 }  // namespace qrterm_test

@@ -1,8 +1,11 @@
-// fake-qr --serve [--chatty]: the FakeQr on a pty, announcing it the way the simulator does
-// ("qrsim: serial on /dev/pts/N" as the first line of output), so qrterm --sim can fly it in the
-// tmux tests without the firmware. Real time; ends after the console's exit handshake or when the
-// console closes the line. --chatty: a debug text line every 10 ms, so the console's log scrolls
-// and every screen it draws is a big one.
+// fake-qr --serve [--chatty] [--table] [--devboard [--core-mhz N]] [--truth-fd N]: the FakeQr on a
+// pty, announcing it the way the simulator does ("qrsim: serial on /dev/pts/N" as the first line of
+// output), so qrterm --sim can fly it in the tmux tests without the firmware. Real time; ends after
+// the console's exit handshake or when the console closes the line. --chatty: a debug text line
+// every 10 ms, so the console's log scrolls and every screen it draws is a big one. --table: the
+// observable table for the plot's names. --devboard: task figures, and once a second on the truth
+// channel (--truth-fd, which qrterm passes) the line qrsim --serve --devboard sends about the
+// devboard, with --core-mhz N as its clock (docs/simulator.md section 5).
 #include <errno.h>
 #include <fcntl.h>
 #include <poll.h>
@@ -31,12 +34,21 @@ uint32_t now_ms() {
 int main(int argc, char** argv) {
   bool serve = false;
   bool chatty = false;
+  bool table = false;
+  bool devboard = false;
+  unsigned core_mhz = 0;
+  int truth_fd = -1;
   for (int i = 1; i < argc; ++i) {
     serve = serve || std::strcmp(argv[i], "--serve") == 0;
     chatty = chatty || std::strcmp(argv[i], "--chatty") == 0;
+    table = table || std::strcmp(argv[i], "--table") == 0;
+    devboard = devboard || std::strcmp(argv[i], "--devboard") == 0;
+    if (i + 1 < argc && std::strcmp(argv[i], "--core-mhz") == 0)
+      core_mhz = static_cast<unsigned>(std::atoi(argv[i + 1]));
+    if (i + 1 < argc && std::strcmp(argv[i], "--truth-fd") == 0) truth_fd = std::atoi(argv[i + 1]);
   }
   if (!serve) {
-    std::fprintf(stderr, "usage: fake-qr --serve [--chatty]\n");
+    std::fprintf(stderr, "usage: fake-qr --serve [--chatty] [--table] [--devboard [--core-mhz N]] [--truth-fd N]\n");
     return 2;
   }
   const int master = posix_openpt(O_RDWR | O_NOCTTY | O_NONBLOCK);
@@ -53,6 +65,13 @@ int main(int argc, char** argv) {
   std::fflush(stdout);
 
   qrterm_test::FakeQr qr(now_ms());
+  qr.observable_table = table;
+  const uint32_t started = now_ms();
+  uint32_t next_devboard = started + 1000;
+  if (devboard) {
+    // A few tasks' figures in instructions, as the devboard's would be.
+    qr.tasks = {{0, 1210, 3400, 0}, {1, 402, 410, 0}, {8, 212, 530, 0}, {10, 655, 1710, 0}};
+  }
   bool console_seen = false;
   uint32_t exited_at = 0;
   uint32_t next_chatter = now_ms();
@@ -73,6 +92,15 @@ int main(int argc, char** argv) {
       continue;
     }
     qr.tick(now);
+    if (devboard && truth_fd >= 0 && now - next_devboard < 0x80000000u) {
+      next_devboard += 1000;
+      const unsigned seconds = (now - started) / 1000;
+      char line[128];
+      const int length = std::snprintf(
+          line, sizeof line, "devboard t=%u.000 core_mhz=%u tick_instr_mean=2738 tick_instr_max=8012 ticks=%u\n",
+          seconds, core_mhz, seconds * 1000);
+      if (write(truth_fd, line, static_cast<size_t>(length)) < 0 && errno != EAGAIN) truth_fd = -1;
+    }
     if (chatty && now - next_chatter < 0x80000000u) {
       next_chatter = now + 10;
       char line[48];

@@ -8,6 +8,7 @@
 #include <set>
 #include <sstream>
 
+#include <pc/core/help_overlay.hpp>
 #include <pc/core/key_map.hpp>
 #include <pc/core/pilot_controls.hpp>
 
@@ -77,7 +78,8 @@ TEST(KeyMap, KeysHaveNamesForTheHelp) {
   EXPECT_EQ(qrterm::key_name(qrterm::kKeyEscape), "ESC");
   EXPECT_EQ(qrterm::key_name(qrterm::kKeyUp), "up");
   EXPECT_EQ(qrterm::key_name('a'), "a");
-  EXPECT_EQ(qrterm::key_name(7), "code 7");
+  EXPECT_EQ(qrterm::key_name(7), "^G") << "a control key as a terminal user writes it";
+  EXPECT_EQ(qrterm::key_name(0x2000), "code 8192") << "a key without a name still says what it is";
   EXPECT_EQ(qrterm::key_name(qrterm::kKeyEnter), "Enter") << "not \"key 13\"";
   EXPECT_EQ(qrterm::key_name(qrterm::kKeyTab), "Tab");
 }
@@ -132,6 +134,52 @@ TEST(KeyMap, TheHelpOverlayHoldsEveryKeyAt80x24) {
   }
   EXPECT_EQ(entries[1].keys, "x ^C");
   EXPECT_EQ(entries.back().keys, "h ?");
+}
+
+// F1 and Delete showed as "key code 265/330": the common keys no screen binds have names, so
+// "key F1 does nothing" says which key it was.
+TEST(KeyMap, UnboundCommonKeysHaveNames) {
+  EXPECT_EQ(qrterm::key_name(qrterm::kKeyF1), "F1");
+  EXPECT_EQ(qrterm::key_name(qrterm::kKeyF1 + 11), "F12");
+  EXPECT_EQ(qrterm::key_name(qrterm::kKeyDelete), "Delete");
+  EXPECT_EQ(qrterm::key_name(qrterm::kKeyInsert), "Insert");
+  EXPECT_EQ(qrterm::key_name(qrterm::kKeyEnd), "End");
+  EXPECT_EQ(qrterm::key_name(qrterm::kKeyBackTab), "Shift+Tab");
+  EXPECT_EQ(qrterm::key_name(qrterm::kKeyBackspace), "Backspace");
+  for (qrterm::Key f = qrterm::kKeyF1; f < qrterm::kKeyF1 + qrterm::kFunctionKeys; ++f)
+    EXPECT_EQ(qrterm::key_name(f).rfind("F", 0), 0u) << f;
+}
+
+// At 80x24 the help overlay's three columns ran together (an entry's text up against the next
+// column's key) and Tab was nowhere. Each entry now stands whole in its column with two spaces
+// before the next, and the title names Tab; the rows above it (mode, link, engines) stay clear.
+TEST(HelpOverlay, EveryEntryStandsApartAt80x24AndTabIsNamed) {
+  const qrterm::HelpOverlay overlay = qrterm::help_overlay(24, 80);
+  EXPECT_GE(overlay.top, qrterm::kHelpTopRow);
+  EXPECT_LE(overlay.top + static_cast<int>(overlay.rows.size()), 24);
+  EXPECT_LE(overlay.left + overlay.width, 80);
+  ASSERT_FALSE(overlay.rows.empty());
+  EXPECT_NE(overlay.rows[0].find("Tab: next screen"), std::string::npos) << overlay.rows[0];
+  for (const std::string& row : overlay.rows) EXPECT_EQ(row.size(), static_cast<size_t>(overlay.width));
+  for (const qrterm::HelpEntry& entry : qrterm::help_entries()) {
+    // "x ^C  exit (QR to safe)": the keys, padded, then the text, and then two spaces or the row's end.
+    std::string cell = entry.keys;
+    cell.resize(5 + 1, ' ');
+    cell += qrterm::action_text(entry.action);
+    bool found = false;
+    for (size_t r = 1; r < overlay.rows.size() && !found; ++r) {
+      const size_t at = overlay.rows[r].find(cell);
+      if (at == std::string::npos) continue;
+      found = true;
+      const std::string after = overlay.rows[r].substr(at + cell.size(), 2);
+      EXPECT_TRUE(after.find_first_not_of(' ') == std::string::npos) << "\"" << cell << "\" runs into \"" << after;
+      if (at > 0) EXPECT_EQ(overlay.rows[r][at - 1], ' ') << cell;
+    }
+    EXPECT_TRUE(found) << cell;
+  }
+  // A taller terminal: two columns, the same entries.
+  const qrterm::HelpOverlay tall = qrterm::help_overlay(40, 80);
+  EXPECT_EQ(tall.rows.size(), (qrterm::help_entries().size() + 1) / 2 + 1);
 }
 
 // docs/console.md has a table of keys, rows like "| `a` | ... |": it must list every bound key

@@ -11,6 +11,7 @@
 #include <pc/core/log_room.hpp>
 #include <pc/core/param_file.hpp>
 #include <pc/core/parameter_editor.hpp>
+#include <pc/core/session_settings.hpp>
 
 namespace qrterm {
 namespace {
@@ -39,7 +40,7 @@ TEST(CommandLine, ALineSpeedNoPortTakesIsABadOption) {
 }
 
 // rx.hex grew by some 70 MB an hour: past its part size it starts again, the full part moved aside
-// (the platform renames it rx.old.hex), so the newest bytes are always on disk and never more than
+// (the platform renames it rx.hex.1: Platform.RxHexStartsAgainKeepingOnePreviousFile), so the newest bytes are always on disk and never more than
 // two parts.
 TEST(Console, RxHexStartsAgainWhenFull) {
   std::vector<std::unique_ptr<std::ostringstream>> parts;
@@ -102,8 +103,25 @@ TEST(ParameterEditor, EveryParameterBackToItsDefault) {
     EXPECT_EQ(sync.wanted().get(spec.id), spec.default_value) << spec.name;
   EXPECT_TRUE(sync.pending(wire::ParamId::yaw_p)) << "sent to the QR";
   EXPECT_EQ(editor.reset_all_defaults(sync), 0u);
-  EXPECT_EQ(describe_changes(file, sync.wanted()), "yaw_p 310 -> 300");
-  EXPECT_EQ(describe_changes(file, file), "");
+  EXPECT_EQ(undo_lines(file, sync.wanted()),
+            (std::vector<std::string>{"yaw_p 310 -> 300                    undo: yaw_p = 310"}));
+  EXPECT_TRUE(undo_lines(file, file).empty());
+}
+
+// The file column showed values when there was no parameter file (the defaults stood for it):
+// without a file it is empty, until a file is written (the orientation check's) or saved.
+TEST(ParameterEditor, NoFileNoFileColumn) {
+  wire::ParameterValues defaults;
+  ParameterSync sync(defaults, [](Severity, const std::string&) {});
+  ParameterEditor editor(defaults, "qrterm-params.txt", /*file_exists=*/false);
+  ASSERT_EQ(sync.set(wire::ParamId::yaw_p, 310 * 16), wire::NackReason::none);
+  EXPECT_FALSE(editor.file_exists());
+  EXPECT_EQ(editor.file_difference(sync, wire::ParamId::yaw_p), std::nullopt) << "no file, no file value";
+  editor.file_written("qrterm-params.txt", wire::ParamId::imu_orientation, 1);
+  EXPECT_TRUE(editor.file_exists());
+  EXPECT_EQ(editor.file_difference(sync, wire::ParamId::yaw_p), 300 * 16) << "the file written holds the default";
+  const ParameterEditor with_file(defaults, "qrterm-params.txt");
+  EXPECT_EQ(with_file.file_difference(sync, wire::ParamId::yaw_p), 300 * 16);
 }
 
 }  // namespace

@@ -6,6 +6,14 @@
 #include <stdlib.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <pc/core/log_retention.hpp>
+#include <pc/core/recordings.hpp>
+#include <pc/platform/log_folder.hpp>
 #include <pc/platform/serial_port.hpp>
 #include <pc/platform/sim_process.hpp>
 
@@ -127,3 +135,77 @@ TEST(Console, SimulatorMissingOrSilentIsAClearError) {
 }
 
 }  // namespace
+
+namespace {
+
+// A fresh folder under the test's temporary directory, removed when the test ends.
+struct TemporaryFolder {
+  std::string path;
+  TemporaryFolder() {
+    char name[] = "/tmp/qrterm-logs.XXXXXX";
+    path = ::mkdtemp(name);
+  }
+  ~TemporaryFolder() { std::filesystem::remove_all(path); }
+};
+
+std::string read_all(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+}  // namespace
+
+// A week of flying left a folder per start under ./logs: the newest 20 stay (the session's own
+// among them), the oldest go with their files, and a folder the console did not name stays.
+TEST(LogRetention, TheNewestSessionFoldersStayTheOldestGo) {
+  EXPECT_TRUE(qrterm::is_session_folder_name("20250131-142502"));
+  EXPECT_FALSE(qrterm::is_session_folder_name("my-flight"));
+  EXPECT_FALSE(qrterm::is_session_folder_name("20250131-14250x"));
+  const std::vector<std::string> names{"20250103-100000", "20250101-100000", "keep-me", "20250102-100000",
+                                       "20250104-100000"};
+  EXPECT_EQ(qrterm::log_folders_to_remove(names, "20250104-100000", 2),
+            (std::vector<std::string>{"20250101-100000", "20250102-100000"}));
+  EXPECT_EQ(qrterm::log_folders_to_remove(names, "20250101-100000", 1),
+            (std::vector<std::string>{"20250102-100000", "20250103-100000", "20250104-100000"}))
+      << "the current folder stays even when it is the oldest (a clock set back)";
+  EXPECT_TRUE(qrterm::log_folders_to_remove(names, "20250104-100000", 0).empty()) << "0 keeps every folder";
+  EXPECT_TRUE(qrterm::log_folders_to_remove(names, "20250104-100000", 20).empty());
+
+  TemporaryFolder logs;
+  for (int day = 1; day <= 23; ++day) {
+    const std::string folder = logs.path + "/202501" + (day < 10 ? "0" : "") + std::to_string(day) + "-120000";
+    qrterm::make_folders(folder);
+    *qrterm::open_in(folder, "console.log") << "a session\n";
+  }
+  qrterm::make_folders(logs.path + "/by-hand");
+  const std::string session = logs.path + "/20250123-120000";
+  std::string failed;
+  EXPECT_EQ(qrterm::remove_old_log_folders(session, qrterm::kLogFoldersKept, failed), 3u);
+  EXPECT_EQ(failed, "");
+  std::vector<std::string> left = qrterm::folders_in(logs.path);
+  std::sort(left.begin(), left.end());
+  ASSERT_EQ(left.size(), qrterm::kLogFoldersKept + 1);
+  EXPECT_EQ(left.front(), "20250104-120000") << "the three oldest went";
+  EXPECT_EQ(left.back(), "by-hand");
+  EXPECT_TRUE(std::filesystem::exists(session + "/console.log"));
+}
+
+// rx.hex at its part size starts again: the full part is rx.hex.1 (replacing the one before),
+// so a session keeps two parts at most, the newest bytes always in rx.hex.
+TEST(Platform, RxHexStartsAgainKeepingOnePreviousFile) {
+  TemporaryFolder folder;
+  *qrterm::open_in(folder.path, "rx.hex") << "first\n";
+  auto second = qrterm::start_again_in(folder.path, "rx.hex", qrterm::kRxHexPrevious);
+  ASSERT_NE(second, nullptr);
+  *second << "second\n";
+  second.reset();
+  EXPECT_EQ(read_all(folder.path + "/rx.hex.1"), "first\n");
+  auto third = qrterm::start_again_in(folder.path, "rx.hex", qrterm::kRxHexPrevious);
+  *third << "third\n";
+  third.reset();
+  EXPECT_EQ(read_all(folder.path + "/rx.hex.1"), "second\n") << "one previous file, the newer";
+  EXPECT_EQ(read_all(folder.path + "/rx.hex"), "third\n");
+  EXPECT_EQ(qrterm::folders_in(folder.path).size(), 0u);
+}

@@ -10,6 +10,7 @@
 
 #include <common/messages.hpp>
 #include <common/sample_packing.hpp>
+#include <pc/core/completion.hpp>
 #include <pc/core/observable_catalog.hpp>
 #include <pc/core/plot_canvas.hpp>
 #include <pc/core/stream_session.hpp>
@@ -87,6 +88,42 @@ TEST(StreamSession, SamplesReachThePlotAndTheCsvWithUnitsInTheColumnNames) {
   EXPECT_EQ(files.opened[0].first, "observables_1.csv");
   const std::string csv = files.opened[0].second->str();
   EXPECT_EQ(csv.substr(0, csv.find('\r')), "time_s,qr_time_s,phi_rad,p_rad_per_s");
+}
+
+// Tab on an ambiguous prefix did nothing: as a shell, it now completes as far as the candidates
+// agree, and the row above the prompt lists them, saying how many more when they do not fit.
+TEST(Completion, AnAmbiguousPrefixGrowsToWhatTheCandidatesShare) {
+  EXPECT_EQ(last_word("phi th"), "th");
+  const Completion one = complete_last_word("phi th", {"theta"});
+  EXPECT_EQ(one.text, "phi theta ");
+  EXPECT_TRUE(one.candidates.empty());
+  const Completion several = complete_last_word("ph", {"phi", "phi_sp", "phi_acc"});
+  EXPECT_EQ(several.text, "phi") << "the start the three share";
+  EXPECT_EQ(several.candidates, (std::vector<std::string>{"phi", "phi_sp", "phi_acc"}));
+  const Completion shared_only = complete_last_word("phi_", {"phi_sp", "phi_acc"});
+  EXPECT_EQ(shared_only.text, "phi_") << "nothing more to add: the list says what may follow";
+  EXPECT_EQ(shared_only.candidates.size(), 2u);
+  const Completion none = complete_last_word("xyz", {});
+  EXPECT_EQ(none.text, "xyz");
+  EXPECT_TRUE(none.none);
+
+  EXPECT_EQ(candidates_line({"phi", "phi_sp"}, 80), "phi phi_sp");
+  const std::vector<std::string> many(30, "cycles_task");
+  const std::string cut = candidates_line(many, 80);
+  EXPECT_LE(cut.size(), 80u);
+  EXPECT_NE(cut.find("more: type more)"), std::string::npos) << cut;
+  EXPECT_EQ(candidates_line({"a_very_long_observable_name"}, 10), "(+1 more: type more)");
+}
+
+// With the QR's own table: "ph" is several names, and Tab gives the start they share.
+TEST(Completion, TheQrsTableCompletesAsFarAsItsNamesAgree) {
+  ObservableCatalog catalog;
+  send_observable_table(catalog);
+  const std::vector<std::string> ph = catalog.names_starting("ph");
+  ASSERT_GT(ph.size(), 1u) << "the table has several names starting ph";
+  const Completion tab = complete_last_word("theta ph", ph);
+  EXPECT_EQ(tab.text, "theta phi");
+  EXPECT_EQ(tab.candidates, ph);
 }
 
 TEST(PlotCanvas, ARisingTraceEndsHigherThanItStartsInBothCellKinds) {

@@ -13,6 +13,8 @@ mkdir -p "$tmp/scripts" "$tmp/$(dirname $file)"
 cp "$script" "$tmp/scripts/mutate"
 cp "$src/$file" "$tmp/$file"
 original=$(sha256sum <"$tmp/$file")
+touch -d '2020-01-02 03:04:05.123456789' "$tmp/$file"
+original_time=$(stat -c %y "$tmp/$file")
 fail() { echo "FAIL: $*" >&2; exit 1; }
 
 # Starts a holding run; returns once its mutant is in the tree.
@@ -36,6 +38,8 @@ for sig in TERM INT; do
   wait $pid || true
   ms=$(( ($(date +%s%N) - start) / 1000000 ))
   [[ $(sha256sum <"$tmp/$file") == "$original" ]] || fail "SIG$sig left the mutant in the file"
+  # Its time too: a fresh one would have every other build of the tree compile it again.
+  [[ $(stat -c %y "$tmp/$file") == "$original_time" ]] || fail "SIG$sig restored the file with a new time"
   (( ms < 2000 )) || fail "SIG$sig took $ms ms"
   echo "SIG$sig: restored in $ms ms"
 done

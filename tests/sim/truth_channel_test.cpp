@@ -161,4 +161,13 @@ TEST(TruthChannel, TruthLineFormat) {
       << "the right rotor turns counter-clockwise seen from above; a still one is 0.0, unsigned";
 }
 
+// The devboard's figures for the console's CPU row (issue 36): its clock and the tick's RV32
+// instructions, which the QR's own load cannot give while the board's time stands still in a tick.
+TEST(TruthChannel, TheDevboardLineCarriesItsClockAndTheTicksInstructions) {
+  EXPECT_EQ(qrsim::devboard_line(12.34, 16, 2738.4, 8012, 12340),
+            "devboard t=12.340 core_mhz=16 tick_instr_mean=2738 tick_instr_max=8012 ticks=12340\n");
+  EXPECT_EQ(qrsim::devboard_line(1, 0, 2738.6, 8012, 1000),
+            "devboard t=1.000 core_mhz=0 tick_instr_mean=2739 tick_instr_max=8012 ticks=1000\n");
+}
+
 }  // namespace
