@@ -160,6 +160,20 @@ void height_hold_figures(const FlightRecord& rec, std::vector<Figure>& f) {
   f.push_back({"height_hold_exit_periods", (rec.hold_left_at - rec.hold_lift_changed_at) * qr::kControlHz});
 }
 
+// Leaving the ground and coming back to it: the touchdown, the cuts, the take-off and the
+// firmware's landed/flying verdicts against the truth.
+void ground_figures(const FlightRecord& rec, std::vector<Figure>& f) {
+  f.push_back({"touchdown_speed_m_s", rec.touchdown_speed});
+  f.push_back({"engines_stop_s", rec.engines_stopped_at - rec.touchdown_at});
+  f.push_back({"panic_engines_zero_s", rec.panic_engines_zero_at - rec.panic_at});
+  f.push_back({"cut_after_liftoff_s", rec.panic_engines_zero_at - rec.left_ground_at});
+  f.push_back({"max_clearance_m_truth", rec.max_clearance});
+  // Left the ground but never seen flying: not measured, so a band on it fails.
+  f.push_back({"takeoff_seen_s", rec.flying_seen_at - rec.left_ground_at});
+  f.push_back({"false_takeoffs", rec.belief_seen ? static_cast<double>(rec.false_takeoffs) : kNotMeasured});
+  f.push_back({"touchdown_declared_clearance_m_max", rec.declared_clearance});
+}
+
 }  // namespace
 
 void add_flight_figures(const ScenarioScript& script, const FlightRecord& rec, const EndState& end,
@@ -232,15 +246,7 @@ void add_flight_figures(const ScenarioScript& script, const FlightRecord& rec, c
   }
   f.push_back({"battery_v_min", rec.battery_v_min});
   f.push_back({"battery_rested_v_min", rec.rested_v_min});
-  f.push_back({"touchdown_speed_m_s", rec.touchdown_speed});
-  f.push_back({"engines_stop_s", rec.engines_stopped_at - rec.touchdown_at});
-  f.push_back({"panic_engines_zero_s", rec.panic_engines_zero_at - rec.panic_at});
-  f.push_back({"cut_after_liftoff_s", rec.panic_engines_zero_at - rec.left_ground_at});
-  f.push_back({"max_clearance_m_truth", rec.max_clearance});
-  // Left the ground but never seen flying: not measured, so a band on it fails.
-  f.push_back({"takeoff_seen_s", rec.flying_seen_at - rec.left_ground_at});
-  f.push_back({"false_takeoffs", rec.belief_seen ? static_cast<double>(rec.false_takeoffs) : kNotMeasured});
-  f.push_back({"touchdown_declared_clearance_m_max", rec.declared_clearance});
+  ground_figures(rec, f);
   height_hold_figures(rec, f);
 }
 

@@ -39,7 +39,7 @@ wait_for 'MODE +full' 3 "5 enters full control from the plot screen"
 for _ in $(seq 54); do keys a; done
 # A climb that never reads 1.1 g: the QR must still believe it flies, and learn its hover lift
 # (issue 29: the accelerometer alone never saw this take-off).
-wait_for ' flying ' 3 "the QR believes it flies (a gentle climb)"
+wait_for ' flying( |$)' 3 "the QR believes it flies (a gentle climb)"
 wait_for 'hover lift [0-9]+' 3 "the hover lift the QR learnt"
 sleep 1
 before=$(screen)

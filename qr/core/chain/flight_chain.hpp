@@ -466,9 +466,9 @@ class FlightChain : public chain::DecimalReadouts<FlightChain<Num, SampleHz>> {
                              Num::round_to_int(fx::mul_wide(estimator_.r(), kThousand))};
     // An axis the kick pushes is not the monitor's: a push reversed, with the rate it made still
     // growing, is what the monitor looks for.
-    const uint8_t loops = static_cast<uint8_t>(((sources_.tilt != chain::Tilt::stick ? 3u : 0u) |
-                                                (sources_.yaw != chain::Yaw::stick ? 4u : 0u)) &
-                                               ~kick_.pushed_axes());
+    const uint8_t loops = static_cast<uint8_t>(
+        ((sources_.tilt != chain::Tilt::stick ? 3u : 0u) | (sources_.yaw != chain::Yaw::stick ? 4u : 0u)) &
+        ~kick_.pushed_axes());
     const chain::SignAxis found = monitor_.update(moment, rate, loops, landed_.landed(), true);
     if (found != chain::SignAxis::none) wrong_sign_ = found;
   }

@@ -91,9 +91,11 @@ class LandedDetector {
         // Not while the ground may carry part of the weight (that thrust is no hover). In the
         // air the accelerometer reads thrust over weight (f = -T/W g): the weight's thrust
         // is T / |f|, here T (2 - |f|), within 1 % for |f| within 0.1 g of 1 (a division per tick
-        // saved). Slow only: at a descent of some m/s the airframe's drag carries part of the
-        // weight and the accelerometer reads 1 g with less thrust (by hand at 6 m/s down, a lift
-        // of 510 was learnt for a hover of 535).
+        // saved). Slower than 1 m/s only: at a descent of some m/s the airframe's drag carries
+        // part of the weight and the accelerometer reads 1 g with less thrust (by hand at 6 m/s
+        // down, a lift of 510 was learnt for a hover of 535: 4.7 %; as the square of the speed,
+        // 0.13 % at 1 m/s). A gentle take-off a lift step above the hover climbs past 0.5 m/s
+        // within the half second the learning waits, and must still teach it.
         const Thrust weight = product<Thrust>(s.thrust, kTwoG + f_mean_);
         hover_ = hover_known() ? hover_ + product<Thrust>(weight - hover_, kHoverGain) : weight;
       }
@@ -130,7 +132,7 @@ class LandedDetector {
   static constexpr Height kNearGround = Height(1.0);
   static constexpr Climb kRising = Climb(0.1);
   static constexpr Climb kStill = Climb(0.25);
-  static constexpr Climb kSlow = Climb(0.5);
+  static constexpr Climb kSlow = Climb(1.0);
   static constexpr Accel kTwoG = Accel(2.0);
   using Scale = typename N::Scale;
   // Below 90 % of the hover thrust the engines cannot lift the vehicle, and on the ground

@@ -154,7 +154,7 @@ class WrongWayMonitor {
 // engines stopping or a mode without the angle loops stops the kick without one.
 class LiftOffKick {
  public:
-  static constexpr uint32_t kHalfTicks = kControlHz / 25;  // 40 ms each way
+  static constexpr uint32_t kHalfTicks = kControlHz / 25;       // 40 ms each way
   static constexpr uint32_t kPitchFrom = kControlHz * 6 / 100;  // pitch's push, 60 ms in
   static constexpr uint32_t kAcrossAt = kControlHz * 9 / 100;   // roll's answer read across
   // A push's own axis is judged from when its answer can show (30 ms in) for 70 ms; after that
@@ -203,12 +203,15 @@ class LiftOffKick {
       from_[1] = angle[1];
     }
     const uint32_t t = tick_++;
+    // Pitch's own turn counts from its push's start: a vehicle may lift off turning slowly on
+    // pitch (seen: 6 mrad in 90 ms at vibration x8.6), which is no answer to the push.
+    if (t == kPitchFrom) pitch_from_ = angle[1];
     const int32_t roll = angle[0] - from_[0], pitch = angle[1] - from_[1];
     const bool across = t == kAcrossAt && magnitude(pitch) >= kMinAcrossMrad && 2 * magnitude(pitch) > roll;
     SignAxis verdict = SignAxis::none;
     if ((t >= kLagTicks && t < kAnswerTicks && roll <= -kMinTurnMrad) || across) {
       verdict = SignAxis::roll;
-    } else if (t >= kPitchFrom + kLagTicks && pitch <= -kMinTurnMrad) {
+    } else if (t >= kPitchFrom + kLagTicks && angle[1] - pitch_from_ <= -kMinTurnMrad) {
       verdict = SignAxis::pitch;
     }
     if (verdict != SignAxis::none || t + 1 >= kTicks) armed_ = false;
@@ -221,6 +224,7 @@ class LiftOffKick {
   bool armed_ = false;
   uint32_t tick_ = 0;
   int32_t from_[2] = {0, 0};
+  int32_t pitch_from_ = 0;
 };
 
 }  // namespace qr::chain
