@@ -13,7 +13,9 @@
 
 namespace qrterm {
 
-// A panel's fewest rows: its top value, its unit and its bottom value each need one.
+// A panel's fewest rows: its top value, its unit and its bottom value each need one. The plot
+// area holds a panel for each of the most units a selection can have (kMaxTraces) with this many
+// rows: at the console's least terminal, 80x24, it has 13 (plot_screen.cpp checks).
 inline constexpr int kPanelMinRows = 3;
 
 struct PlotPanel {
@@ -24,15 +26,13 @@ struct PlotPanel {
 };
 
 struct PlotLayout {
-  // In the order the units were first picked. Panels are split by a row of their own when the
-  // area has room for one between each two, else they touch.
+  // In the order the units were first picked, filling the area; split by a row of their own when
+  // the area has room for one between each two and kPanelMinRows each, else touching.
   std::vector<PlotPanel> panels;
-  // Traces whose unit found no panel (the area holds only area_rows / kPanelMinRows of them): the
-  // readout still shows their values and says they are not drawn.
-  std::vector<size_t> not_drawn;
   bool separated = false;
 };
 
+// `area_rows`: at least kMaxTraces * kPanelMinRows.
 PlotLayout plot_layout(const PlotModel& plot, double now_s, int area_rows);
 
 }  // namespace qrterm

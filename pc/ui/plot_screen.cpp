@@ -1,11 +1,11 @@
 // The plot screen: the chosen observables against time, newest at the right.
-#include <algorithm>
 #include <cmath>
 
 #include <pc/core/completion.hpp>
 #include <pc/core/plot_canvas.hpp>
 #include <pc/core/plot_panels.hpp>
 #include <pc/core/screen_keys.hpp>
+#include <pc/ui/cockpit.hpp>
 #include <pc/ui/screen_draw.hpp>
 #include <pc/ui/screens.hpp>
 #include <pc/ui/terminal.hpp>
@@ -16,6 +16,11 @@ namespace {
 // Trace i's colour (its glyph: plot_canvas.hpp); the truth is drawn dim, in dots.
 constexpr short kTraceColors[kMaxTraces] = {kInfo, kWarning, kQr, kMagenta};
 constexpr int kLabelColumns = 9;
+// Beside the plot area: the selection's two rows, the time axis, two of readout, the keys, the
+// prompt. Below the cockpit's four status rows, the least terminal leaves the area a panel of
+// kPanelMinRows for each unit of a full selection.
+constexpr int kRowsBesideArea = 7;
+static_assert(Cockpit::kMinRows - 4 - kRowsBesideArea >= static_cast<int>(kMaxTraces) * kPanelMinRows);
 
 std::string value_text(double v) {
   const double a = std::fabs(v);
@@ -87,7 +92,7 @@ void draw_plot_screen(const Console& console, int top, int rows, int width, bool
   put(top + 1, 5, streams.cost_text(console.telemetry_hz()) + text("  lost %u", streams.samples_lost()), kDim);
 
   const int area_top = top + 2;
-  const int area_rows = std::max(3, rows - 7);
+  const int area_rows = std::max(3, rows - kRowsBesideArea);
   const int area_columns = std::max(10, width - kLabelColumns - 1);
   const double end = plot.view_end_s(now_s);
   const double begin = end - plot.window_s();
@@ -118,13 +123,9 @@ void draw_plot_screen(const Console& console, int top, int rows, int width, bool
     std::string latest = t.points.empty() ? "--" : value_text(t.points.back().value);
     if (const auto* truth = plot.truth_for(t); truth != nullptr && !truth->empty())
       latest += " truth " + value_text(truth->back().value);
-    // A unit the area had no room for: its value still here, and why its trace is not.
-    const bool drawn = std::find(layout.not_drawn.begin(), layout.not_drawn.end(), i) == layout.not_drawn.end();
     const int row = readout + static_cast<int>(i / 2);
     const int column = static_cast<int>(i % 2) * (width / 2);
-    put(row, column,
-        text("%c %s %s %s%s", kTraceGlyphs[i], t.name.c_str(), latest.c_str(), t.unit.c_str(),
-             drawn ? "" : " (no room)"),
+    put(row, column, text("%c %s %s %s", kTraceGlyphs[i], t.name.c_str(), latest.c_str(), t.unit.c_str()),
         kTraceColors[i], A_BOLD);
   }
   put(top + rows - 2, 0, "/ pick  Bksp drop  m window  y scale  +/- zoom  spc freeze  ,/. rate  Tab next", kDim);

@@ -256,7 +256,6 @@ TEST(PlotPanels, AnAngleAndAHeightEachGetAPanelWithItsOwnScale) {
 
   const PlotLayout layout = plot_layout(plot, 5.0, 13);  // the plot area at 80x24
   ASSERT_EQ(layout.panels.size(), 2u);
-  EXPECT_TRUE(layout.not_drawn.empty());
   EXPECT_TRUE(layout.separated) << "13 rows hold two panels and a row between";
   const PlotPanel& rad = layout.panels[0];
   const PlotPanel& m = layout.panels[1];
@@ -287,10 +286,10 @@ TEST(PlotPanels, AnAngleAndAHeightEachGetAPanelWithItsOwnScale) {
   EXPECT_LE(rows_touched(-0.1, 5.5), 2);
 }
 
-// More units than the area has room for: at 80x24 (13 rows) four panels of three rows touch; in 7
-// rows two fit, split by a row, and the traces of the units picked last are not drawn (the
-// readout says so). Nothing picked: one empty panel over the whole area.
-TEST(PlotPanels, PanelsTouchWhenTightAndTheLastPickedUnitsGoWithoutRoom) {
+// A full selection of four units at 80x24 (13 rows): four panels of three rows or more, touching,
+// filling the area; in a taller terminal a row between each two. Nothing picked: one empty panel
+// over the whole area.
+TEST(PlotPanels, FourUnitsTouchAt80x24AndAreSplitInATallerTerminal) {
   PlotModel plot;
   ASSERT_TRUE(plot.add(0, row("phi", "rad")));
   ASSERT_TRUE(plot.add(27, row("height", "m")));
@@ -300,7 +299,6 @@ TEST(PlotPanels, PanelsTouchWhenTightAndTheLastPickedUnitsGoWithoutRoom) {
   const PlotLayout four = plot_layout(plot, 0, 13);
   ASSERT_EQ(four.panels.size(), 4u);
   EXPECT_FALSE(four.separated) << "4 x 3 rows and 3 between do not fit in 13";
-  EXPECT_TRUE(four.not_drawn.empty());
   int next = 0;
   for (const PlotPanel& p : four.panels) {
     EXPECT_EQ(p.top, next);
@@ -308,13 +306,14 @@ TEST(PlotPanels, PanelsTouchWhenTightAndTheLastPickedUnitsGoWithoutRoom) {
     next = p.top + p.rows;
   }
   EXPECT_EQ(next, 13) << "the panels fill the area";
+  EXPECT_EQ(four.panels[3].unit, "V");
+  EXPECT_EQ(four.panels[3].traces, (std::vector<size_t>{3}));
 
-  const PlotLayout two = plot_layout(plot, 0, 7);
-  ASSERT_EQ(two.panels.size(), 2u);
-  EXPECT_TRUE(two.separated);
-  EXPECT_EQ(two.panels[1].unit, "m");
-  EXPECT_EQ(two.panels[1].top, 4);
-  EXPECT_EQ(two.not_drawn, (std::vector<size_t>{2, 3})) << "climb and battery: no room";
+  const PlotLayout tall = plot_layout(plot, 0, 30);
+  EXPECT_TRUE(tall.separated);
+  EXPECT_EQ(tall.panels[0].rows, 7) << "27 rows for four panels: the 3 left over to the top ones";
+  EXPECT_EQ(tall.panels[3].rows, 6);
+  EXPECT_EQ(tall.panels[3].top + tall.panels[3].rows, 30);
 
   const PlotLayout empty = plot_layout(PlotModel{}, 0, 13);
   ASSERT_EQ(empty.panels.size(), 1u);
