@@ -1,4 +1,4 @@
-// The plot screen: the chosen observables against time, newest at the right.
+// The plot screen: the chosen observables against time, newest at the right, a panel per unit.
 #include <cmath>
 
 #include <pc/core/completion.hpp>
