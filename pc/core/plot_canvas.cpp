@@ -82,8 +82,7 @@ std::vector<PlotSeries> plot_series(const PlotModel& plot, const std::vector<siz
   }
   for (int pass = 0; pass < 2; ++pass) {
     for (size_t i : traces) {
-      if (all[i].is_setpoint() == (pass == 0))
-        series.push_back({&all[i].points, static_cast<int>(i), kTraceGlyphs[i]});
+      if (all[i].is_setpoint() == (pass == 0)) series.push_back({&all[i].points, static_cast<int>(i), kTraceGlyphs[i]});
     }
   }
   return series;
