@@ -74,19 +74,24 @@ std::vector<std::vector<PlotCell>> draw_plot(const PlotFrame& frame, const std::
   return cells;
 }
 
-std::vector<PlotSeries> plot_series(const PlotModel& plot) {
-  const std::vector<Trace>& traces = plot.traces();
+std::vector<PlotSeries> plot_series(const PlotModel& plot, const std::vector<size_t>& traces) {
+  const std::vector<Trace>& all = plot.traces();
   std::vector<PlotSeries> series;
-  for (const Trace& t : traces) {
-    if (const auto* truth = plot.truth_for(t)) series.push_back({truth, kTruthStyle, '.'});
+  for (size_t i : traces) {
+    if (const auto* truth = plot.truth_for(all[i])) series.push_back({truth, kTruthStyle, '.'});
   }
   for (int pass = 0; pass < 2; ++pass) {
-    for (size_t i = 0; i < traces.size(); ++i) {
-      if (traces[i].is_setpoint() == (pass == 0))
-        series.push_back({&traces[i].points, static_cast<int>(i), kTraceGlyphs[i]});
+    for (size_t i : traces) {
+      if (all[i].is_setpoint() == (pass == 0)) series.push_back({&all[i].points, static_cast<int>(i), kTraceGlyphs[i]});
     }
   }
   return series;
+}
+
+std::vector<PlotSeries> plot_series(const PlotModel& plot) {
+  std::vector<size_t> every(plot.traces().size());
+  for (size_t i = 0; i < every.size(); ++i) every[i] = i;
+  return plot_series(plot, every);
 }
 
 }  // namespace qrterm

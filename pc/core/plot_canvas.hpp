@@ -37,9 +37,11 @@ std::vector<std::vector<PlotCell>> draw_plot(const PlotFrame& frame, const std::
 
 // The plot's traces as the screen draws them, in drawing order: the simulator's truth under
 // the traces it belongs to (style kTruthStyle, glyph '.'), then the set-points, then what follows
-// them, so the followers end on top. Trace i has style i and glyph kTraceGlyphs[i].
+// them, so the followers end on top. Trace i has style i and glyph kTraceGlyphs[i]. Of the traces
+// listed (indices into the plot's traces: one panel's), or of all.
 inline constexpr char kTraceGlyphs[kMaxTraces] = {'*', 'o', '+', 'x'};
 inline constexpr int kTruthStyle = static_cast<int>(kMaxTraces);
+std::vector<PlotSeries> plot_series(const PlotModel& plot, const std::vector<size_t>& traces);
 std::vector<PlotSeries> plot_series(const PlotModel& plot);
 
 }  // namespace qrterm

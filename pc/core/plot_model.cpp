@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <tuple>
 #include <type_traits>
 
 namespace qrterm {
@@ -46,8 +45,18 @@ uint16_t PlotModel::divider(uint16_t control_hz) const {
   return static_cast<uint16_t>(std::clamp<uint32_t>(d, 1, 65535));
 }
 
-std::pair<double, double> PlotModel::scale(double now_s) const {
-  if (fixed_) return {fixed_low_, fixed_high_};
+std::vector<std::string> PlotModel::units() const {
+  std::vector<std::string> units;
+  for (const Trace& t : traces_) {
+    if (std::find(units.begin(), units.end(), t.unit) == units.end()) units.push_back(t.unit);
+  }
+  return units;
+}
+
+std::pair<double, double> PlotModel::scale(double now_s, const std::string& unit) const {
+  if (fixed_) {
+    if (const auto found = fixed_ranges_.find(unit); found != fixed_ranges_.end()) return found->second;
+  }
   const double end = view_end_s(now_s);
   const double begin = end - window_s();
   double low = std::numeric_limits<double>::infinity();
@@ -60,6 +69,7 @@ std::pair<double, double> PlotModel::scale(double now_s) const {
     }
   };
   for (const Trace& t : traces_) {
+    if (t.unit != unit) continue;
     take(t.points);
     if (const auto* truth = truth_for(t)) take(*truth);
   }
@@ -71,16 +81,21 @@ std::pair<double, double> PlotModel::scale(double now_s) const {
 }
 
 void PlotModel::toggle_scale(double now_s) {
-  if (!fixed_) std::tie(fixed_low_, fixed_high_) = scale(now_s);
+  fixed_ranges_.clear();
+  if (!fixed_) {
+    for (const std::string& unit : units()) fixed_ranges_[unit] = scale(now_s, unit);
+  }
   fixed_ = !fixed_;
 }
 
 void PlotModel::zoom(double factor, double now_s) {
   if (!fixed_) toggle_scale(now_s);
-  const double middle = (fixed_low_ + fixed_high_) / 2;
-  const double half = (fixed_high_ - fixed_low_) / 2 * factor;
-  fixed_low_ = middle - half;
-  fixed_high_ = middle + half;
+  for (const std::string& unit : units()) {
+    const auto [low, high] = scale(now_s, unit);  // a unit picked since the toggle: its fitted range
+    const double middle = (low + high) / 2;
+    const double half = (high - low) / 2 * factor;
+    fixed_ranges_[unit] = {middle - half, middle + half};
+  }
 }
 
 void PlotModel::toggle_freeze(double now_s) {

@@ -1,13 +1,16 @@
 // The plot screen's state, without a terminal: which observables are traced (up to four, picked
-// by name from the QR's table), at what rate, the time window, the scale, freeze; the samples of
-// each trace over the longest window; and the simulator's true attitude, height and climb when the
-// console has them, to draw over the estimate. Times are the console's seconds since start.
+// by name from the QR's table), at what rate, the time window, the scale of each unit, freeze; the
+// samples of each trace over the longest window; and the simulator's true attitude, height and
+// climb when the console has them, to draw over the estimate. Times are the console's seconds
+// since start. Each unit has its own vertical scale: a roll angle in rad beside a height in m on
+// one axis would draw the angle flat (plot_panels.hpp stacks one panel per unit).
 #pragma once
 
 #include <stddef.h>
 #include <stdint.h>
 
 #include <deque>
+#include <map>
 #include <optional>
 #include <string>
 #include <utility>
@@ -54,11 +57,16 @@ class PlotModel {
   double window_s() const { return kPlotWindowsS[window_]; }
   void next_window() { window_ = (window_ + 1) % std::size(kPlotWindowsS); }
 
+  // The traces' units, each once, in the order they were first picked.
+  std::vector<std::string> units() const;
+
   bool autoscale() const { return !fixed_; }
-  // Fixed: the range now on the screen stays; zoom() scales it about its middle.
+  // Fixed: each unit's range now on the screen stays (a unit picked later is scaled to fit until
+  // the next toggle or zoom); zoom() scales every unit's range about its middle.
   void toggle_scale(double now_s);
   void zoom(double factor, double now_s);
-  std::pair<double, double> scale(double now_s) const;  // low, high of the vertical axis
+  // Low, high of the vertical axis of the traces in `unit` (and the truth under them).
+  std::pair<double, double> scale(double now_s, const std::string& unit) const;
 
   bool frozen() const { return frozen_at_.has_value(); }
   void toggle_freeze(double now_s);
@@ -83,8 +91,7 @@ class PlotModel {
   size_t rate_ = kDefaultRate;
   size_t window_ = 1;  // 5 s
   bool fixed_ = false;
-  double fixed_low_ = -1;
-  double fixed_high_ = 1;
+  std::map<std::string, std::pair<double, double>> fixed_ranges_;  // by unit, while fixed
   std::optional<double> frozen_at_;
   std::deque<PlotPoint> truth_[5];  // roll, pitch, yaw, height, climb
 };

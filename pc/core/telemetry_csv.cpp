@@ -53,7 +53,11 @@ std::vector<std::string> telemetry_csv_header() {
           "ctl_lift",
           "ctl_roll",
           "ctl_pitch",
-          "ctl_yaw"};
+          "ctl_yaw",
+          "height_mm",
+          "climb_mm_s",
+          "height_flags",
+          "hover_lift"};
 }
 
 CsvRow telemetry_csv_row(uint32_t time_ms, const TelemetryModel& telemetry, const wire::Control& sent) {
@@ -66,6 +70,7 @@ CsvRow telemetry_csv_row(uint32_t time_ms, const TelemetryModel& telemetry, cons
   put(row, telemetry.system);
   put(row, telemetry.qr_link);
   put(row, std::optional<wire::Control>(sent));
+  put(row, telemetry.height);  // last: the columns before it stay where earlier files had them
   return row;
 }
 

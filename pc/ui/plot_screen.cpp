@@ -1,9 +1,11 @@
-// The plot screen: the chosen observables against time, newest at the right.
+// The plot screen: the chosen observables against time, newest at the right, a panel per unit.
 #include <cmath>
 
 #include <pc/core/completion.hpp>
 #include <pc/core/plot_canvas.hpp>
+#include <pc/core/plot_panels.hpp>
 #include <pc/core/screen_keys.hpp>
+#include <pc/ui/cockpit.hpp>
 #include <pc/ui/screen_draw.hpp>
 #include <pc/ui/screens.hpp>
 #include <pc/ui/terminal.hpp>
@@ -14,11 +16,38 @@ namespace {
 // Trace i's colour (its glyph: plot_canvas.hpp); the truth is drawn dim, in dots.
 constexpr short kTraceColors[kMaxTraces] = {kInfo, kWarning, kQr, kMagenta};
 constexpr int kLabelColumns = 9;
+// Beside the plot area: the selection's two rows, the time axis, two of readout, the keys, the
+// prompt. Below the cockpit's four status rows, the least terminal leaves the area a panel of
+// kPanelMinRows for each unit of a full selection.
+constexpr int kRowsBesideArea = 7;
+static_assert(Cockpit::kMinRows - 4 - kRowsBesideArea >= static_cast<int>(kMaxTraces) * kPanelMinRows);
 
 std::string value_text(double v) {
   const double a = std::fabs(v);
   if (a >= 1e5) return text("%+.2e", v);
   return text(a < 10 ? "%+.4f" : a < 1000 ? "%+.2f" : "%+.0f", v);
+}
+
+// One panel: its traces on its own scale, the axis beside it with its ends, its middle when there
+// is room, and its unit under the top value.
+void draw_panel(const PlotModel& plot, const PlotPanel& panel, int area_top, int columns, double begin, double end,
+                bool braille) {
+  const int top = area_top + panel.top;
+  const PlotFrame frame{begin, end, panel.low, panel.high, columns, panel.rows, braille};
+  const auto cells = draw_plot(frame, plot_series(plot, panel.traces));
+  for (int r = 0; r < panel.rows; ++r) {
+    put(top + r, kLabelColumns - 1, "|", kDim);
+    for (int c = 0; c < columns; ++c) {
+      const PlotCell& cell = cells[static_cast<size_t>(r)][static_cast<size_t>(c)];
+      if (cell.style < 0) continue;
+      const short color = cell.style == kTruthStyle ? kDim : kTraceColors[cell.style];
+      put(top + r, kLabelColumns + c, cell.text, color, cell.style == kTruthStyle ? A_NORMAL : A_BOLD);
+    }
+  }
+  put(top, 0, value_text(panel.high), kDim);
+  put(top + 1, 0, panel.unit.substr(0, kLabelColumns - 1), kDim, A_BOLD);
+  if (panel.rows >= 5) put(top + panel.rows / 2, 0, value_text((panel.low + panel.high) / 2), kDim);
+  put(top + panel.rows - 1, 0, value_text(panel.low), kDim);
 }
 
 }  // namespace
@@ -63,33 +92,21 @@ void draw_plot_screen(const Console& console, int top, int rows, int width, bool
   put(top + 1, 5, streams.cost_text(console.telemetry_hz()) + text("  lost %u", streams.samples_lost()), kDim);
 
   const int area_top = top + 2;
-  const int area_rows = std::max(3, rows - 7);
+  const int area_rows = std::max(3, rows - kRowsBesideArea);
   const int area_columns = std::max(10, width - kLabelColumns - 1);
   const double end = plot.view_end_s(now_s);
   const double begin = end - plot.window_s();
-  const auto [low, high] = plot.scale(now_s);
 
-  // Truth first, then set-points, then what follows them: the followers end on top.
-  const PlotFrame frame{begin, end, low, high, area_columns, area_rows, braille};
-  const auto cells = draw_plot(frame, plot_series(plot));
-  for (int r = 0; r < area_rows; ++r) {
-    put(area_top + r, kLabelColumns - 1, "|", kDim);
-    for (int c = 0; c < area_columns; ++c) {
-      const PlotCell& cell = cells[static_cast<size_t>(r)][static_cast<size_t>(c)];
-      if (cell.style < 0) continue;
-      const short color = cell.style == kTruthStyle ? kDim : kTraceColors[cell.style];
-      put(area_top + r, kLabelColumns + c, cell.text, color, cell.style == kTruthStyle ? A_NORMAL : A_BOLD);
+  // One panel per unit, stacked, each on its own scale; a dashed row between two when there is room.
+  const PlotLayout layout = plot_layout(plot, now_s, area_rows);
+  for (const PlotPanel& panel : layout.panels) {
+    draw_panel(plot, panel, area_top, area_columns, begin, end, braille);
+    if (layout.separated && &panel != &layout.panels.back()) {
+      std::string dashes;
+      for (int c = 0; c < area_columns; ++c) dashes += c % 2 == 0 ? '-' : ' ';
+      put(area_top + panel.top + panel.rows, kLabelColumns - 1, "+" + dashes, kDim);
     }
   }
-  // The vertical axis: its ends and middle, and the unit.
-  std::string unit = traces.empty() ? "" : traces[0].unit;
-  for (const Trace& t : traces) {
-    if (t.unit != unit) unit = "mixed";
-  }
-  put(area_top, 0, value_text(high), kDim);
-  put(area_top + 1, 0, unit, kDim, A_BOLD);
-  put(area_top + area_rows / 2, 0, value_text((low + high) / 2), kDim);
-  put(area_top + area_rows - 1, 0, value_text(low), kDim);
   // The time axis.
   const int axis = area_top + area_rows;
   put(axis, kLabelColumns - 1, "+" + std::string(static_cast<size_t>(area_columns), '-'), kDim);

@@ -1133,6 +1133,7 @@ TEST(Console, TelemetryCsvRowFitsItsHeaderEvenWithGroupsMissing) {
   full.setpoints = wire::TelemetrySetpoints{};
   full.system = wire::TelemetrySystem{};
   full.qr_link = wire::TelemetryLink{};
+  full.height = wire::TelemetryHeight{};
   EXPECT_EQ(qrterm::telemetry_csv_row(0, full, {}).fields().size(), qrterm::telemetry_csv_header().size());
 }
 

@@ -1,6 +1,7 @@
 #include "fake_qr.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include <common/link_timing.hpp>
 
@@ -64,6 +65,12 @@ struct FakeQr::Handler {
       void on(const wire::ObservableText& m) { qr.send(wire::encode(m)); }
     } encoder{qr};
     qrterm::send_observable_table(encoder);
+  }
+  void operator()(const wire::StreamRequest& r) {
+    Stream& stream = qr.streams_[r.stream];  // valid(): a stream there is
+    stream.asked = r;
+    stream.packer.start(r.stream, r.count());
+    stream.next_ms = qr.now_ms_;
   }
   void operator()(const wire::LogStart&) { qr.logging = true; }
   void operator()(const wire::LogStop&) { qr.logging = false; }
@@ -172,6 +179,30 @@ void FakeQr::tick(uint32_t now_ms) {
     next_telemetry_ms_ = now_ms + kTelemetryPeriodMs;
     send_telemetry();
   }
+  send_samples();
+}
+
+void FakeQr::send_samples() {
+  for (Stream& stream : streams_) {
+    const uint8_t count = stream.asked.count();
+    for (; stream.asked.divider > 0 && wire::reached(now_ms_, stream.next_ms); stream.next_ms += stream.asked.divider) {
+      int16_t values[wire::kStreamObservablesMax] = {};
+      for (uint8_t i = 0; i < count; ++i) values[i] = stream_wave(stream.asked.id[i], stream.next_ms);
+      wire::ObservableSamples frame;
+      if (stream.packer.add(values, frame)) send(wire::encode(frame));
+    }
+  }
+}
+
+int16_t stream_wave(uint8_t id, uint32_t t_ms) {
+  constexpr double kTwoPi = 6.283185307179586;
+  const double t_s = t_ms / 1000.0;
+  double value = 0;
+  if (id == static_cast<uint8_t>(wire::ObservableId::phi)) value = 0.1 * std::sin(kTwoPi * t_s / 2);
+  if (id == static_cast<uint8_t>(wire::ObservableId::height)) value = 5.0 + 0.5 * std::sin(kTwoPi * t_s / 4);
+  const wire::ObservableSpec* spec = wire::find_observable(id);
+  const double raw = spec == nullptr ? 0 : std::round(value * std::pow(10.0, -spec->scale));
+  return static_cast<int16_t>(std::clamp(raw, -32768.0, 32767.0));
 }
 
 void FakeQr::update_engines() {

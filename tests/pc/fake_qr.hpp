@@ -2,7 +2,8 @@
 // answers requests (with the QR's dedup, so resends are answered and not applied twice), keeps a
 // small safety machine (modes entered from safe with neutral controls, calibration first for yaw
 // and full, panic then safe, link loss panics, a motor test's engine for 2 s), sends telemetry,
-// and serves logs. Tests script it:
+// runs the observable streams asked for (made-up values: stream_wave) and serves logs. Tests
+// script it:
 // silence it, make it refuse, drop log parts. Not the firmware: the end-to-end test flies that.
 #pragma once
 
@@ -18,6 +19,7 @@
 #include <common/messages.hpp>
 #include <common/parameter_table.hpp>
 #include <common/request_dedup.hpp>
+#include <common/sample_packing.hpp>
 
 namespace qrterm_test {
 
@@ -79,6 +81,7 @@ class FakeQr {
   wire::NackReason change_mode(wire::Mode wanted);
   void send(const wire::FrameBytes& frame);
   void send_telemetry();
+  void send_samples();
   void send_log(wire::LogKind log, uint16_t first, uint16_t count);
   void update_engines();
   uint8_t test_engine_ = 0;  // the motor test's engine and level
@@ -95,6 +98,18 @@ class FakeQr {
   uint8_t tick_ = 0;
   uint8_t slow_group_ = 0;
   size_t next_task_ = 0;
+  // A stream as last asked (divider 0: stopped), sampled every divider control periods (1 ms).
+  struct Stream {
+    wire::StreamRequest asked;
+    wire::SamplePacker packer;
+    uint32_t next_ms = 0;
+  };
+  Stream streams_[wire::kStreamCount];
 };
+
+// What the fake's streams carry for an observable at a time, raw as on the wire: phi swings
+// 0.1 rad every 2 s and height 0.5 m about 5 m every 4 s (an angle and a height far apart in
+// size, for the plot's per-unit axes), every other observable reads 0.
+int16_t stream_wave(uint8_t id, uint32_t t_ms);
 
 }  // namespace qrterm_test

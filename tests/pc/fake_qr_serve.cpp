@@ -3,7 +3,8 @@
 // output), so qrterm --sim can fly it in the tmux tests without the firmware. Real time; ends after
 // the console's exit handshake or when the console closes the line. --chatty: a debug text line
 // every 10 ms, so the console's log scrolls and every screen it draws is a big one. --table: the
-// observable table for the plot's names. --devboard: task figures, and once a second on the truth
+// observable table for the plot's names (and so the plot's streams, made-up values: stream_wave in
+// fake_qr.hpp). --devboard: task figures, and once a second on the truth
 // channel (--truth-fd, which qrterm passes) the line qrsim --serve --devboard sends about the
 // devboard, with --core-mhz N as its clock (docs/simulator.md section 5).
 #include <errno.h>

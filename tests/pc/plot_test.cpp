@@ -2,6 +2,7 @@
 // the wire, the samples of a stream into the plot and its CSV, the canvas a trace is drawn on.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <sstream>
@@ -13,6 +14,7 @@
 #include <pc/core/completion.hpp>
 #include <pc/core/observable_catalog.hpp>
 #include <pc/core/plot_canvas.hpp>
+#include <pc/core/plot_panels.hpp>
 #include <pc/core/stream_session.hpp>
 
 #include "observable_table_feed.hpp"
@@ -216,6 +218,10 @@ TEST(PlotModel, ATruthLineWithoutAFieldLeavesThatSeriesAlone) {
 
 TEST(PlotModel, FreezeHoldsTheViewAndFixedScaleHoldsTheRange) {
   PlotModel plot;
+  ObservableRow phi;
+  phi.name = "phi";
+  phi.unit = "rad";
+  ASSERT_TRUE(plot.add(0, phi));
   plot.add_truth(0, {0.1, 0, 0, 0, 0});
   plot.toggle_freeze(5.0);
   EXPECT_EQ(plot.view_end_s(9.0), 5.0);
@@ -223,8 +229,125 @@ TEST(PlotModel, FreezeHoldsTheViewAndFixedScaleHoldsTheRange) {
   EXPECT_EQ(plot.view_end_s(9.0), 9.0);
   plot.zoom(2.0, 9.0);
   EXPECT_FALSE(plot.autoscale());
-  const auto [low, high] = plot.scale(9.0);
-  EXPECT_DOUBLE_EQ(high - low, 4.0) << "the default band of 2, zoomed out twice";
+  const auto [low, high] = plot.scale(9.0, "rad");
+  EXPECT_DOUBLE_EQ(high - low, 4.0) << "the default band of 2 (no sample in the window), zoomed out twice";
+}
+
+ObservableRow row(const char* name, const char* unit) {
+  ObservableRow r;
+  r.name = name;
+  r.unit = unit;
+  return r;
+}
+
+// Issue 36: phi (rad) beside height (m) on one axis labelled "mixed" drew the roll flat. Each unit
+// now has its own panel and scale: the angle's spans tenths of a radian, the height's metres, and
+// phi's trace climbs and falls over most of its panel's rows.
+TEST(PlotPanels, AnAngleAndAHeightEachGetAPanelWithItsOwnScale) {
+  PlotModel plot;
+  ASSERT_TRUE(plot.add(0, row("phi", "rad")));
+  ASSERT_TRUE(plot.add(27, row("height", "m")));
+  ASSERT_TRUE(plot.add(6, row("phi_sp", "rad")));
+  for (int i = 0; i <= 500; ++i) {
+    const double t = i * 0.01;
+    plot.add_sample(t, {0.1 * std::sin(3.14159 * t), 5 + 0.5 * std::sin(1.5708 * t), 0.0});
+  }
+  EXPECT_EQ(plot.units(), (std::vector<std::string>{"rad", "m"}));
+
+  const PlotLayout layout = plot_layout(plot, 5.0, 13);  // the plot area at 80x24
+  ASSERT_EQ(layout.panels.size(), 2u);
+  EXPECT_TRUE(layout.separated) << "13 rows hold two panels and a row between";
+  const PlotPanel& rad = layout.panels[0];
+  const PlotPanel& m = layout.panels[1];
+  EXPECT_EQ(rad.unit, "rad");
+  EXPECT_EQ(rad.traces, (std::vector<size_t>{0, 2})) << "phi and its set-point share the angle's panel";
+  EXPECT_EQ(m.traces, (std::vector<size_t>{1}));
+  EXPECT_EQ(rad.top, 0);
+  EXPECT_EQ(rad.rows, 6);
+  EXPECT_EQ(m.top, 7) << "after the separating row";
+  EXPECT_EQ(m.rows, 6);
+  EXPECT_GT(rad.low, -0.2);
+  EXPECT_LT(rad.high, 0.2) << "the angle's scale is tenths of a radian, not the height's metres";
+  EXPECT_GT(m.low, 4.0);
+  EXPECT_LT(m.high, 6.0);
+
+  // phi's trace in its panel covers most rows; on the height's scale (the old single axis, about
+  // -0.1..5.5) it stayed within one or two.
+  const auto rows_touched = [&](double low, double high) {
+    const PlotFrame frame{0, 5, low, high, 60, rad.rows, false};
+    const auto cells = draw_plot(frame, {{&plot.traces()[0].points, 0, '*'}});
+    int touched = 0;
+    for (const auto& cells_row : cells) {
+      touched += std::any_of(cells_row.begin(), cells_row.end(), [](const PlotCell& c) { return c.style == 0; });
+    }
+    return touched;
+  };
+  EXPECT_GE(rows_touched(rad.low, rad.high), 5);
+  EXPECT_LE(rows_touched(-0.1, 5.5), 2);
+}
+
+// A full selection of four units at 80x24 (13 rows): four panels of three rows or more, touching,
+// filling the area; in a taller terminal a row between each two. Nothing picked: one empty panel
+// over the whole area.
+TEST(PlotPanels, FourUnitsTouchAt80x24AndAreSplitInATallerTerminal) {
+  PlotModel plot;
+  ASSERT_TRUE(plot.add(0, row("phi", "rad")));
+  ASSERT_TRUE(plot.add(27, row("height", "m")));
+  ASSERT_TRUE(plot.add(28, row("climb", "m/s")));
+  ASSERT_TRUE(plot.add(26, row("battery", "V")));
+
+  const PlotLayout four = plot_layout(plot, 0, 13);
+  ASSERT_EQ(four.panels.size(), 4u);
+  EXPECT_FALSE(four.separated) << "4 x 3 rows and 3 between do not fit in 13";
+  int next = 0;
+  for (const PlotPanel& p : four.panels) {
+    EXPECT_EQ(p.top, next);
+    EXPECT_GE(p.rows, kPanelMinRows);
+    next = p.top + p.rows;
+  }
+  EXPECT_EQ(next, 13) << "the panels fill the area";
+  EXPECT_EQ(four.panels[3].unit, "V");
+  EXPECT_EQ(four.panels[3].traces, (std::vector<size_t>{3}));
+
+  const PlotLayout tall = plot_layout(plot, 0, 30);
+  EXPECT_TRUE(tall.separated);
+  EXPECT_EQ(tall.panels[0].rows, 7) << "27 rows for four panels: the 3 left over to the top ones";
+  EXPECT_EQ(tall.panels[3].rows, 6);
+  EXPECT_EQ(tall.panels[3].top + tall.panels[3].rows, 30);
+
+  const PlotLayout empty = plot_layout(PlotModel{}, 0, 13);
+  ASSERT_EQ(empty.panels.size(), 1u);
+  EXPECT_EQ(empty.panels[0].unit, "");
+  EXPECT_EQ(empty.panels[0].rows, 13);
+  EXPECT_DOUBLE_EQ(empty.panels[0].high, 1.0);
+}
+
+// A fixed scale holds each unit's own range; zoom scales each about its middle; the truth goes to
+// its trace's panel only.
+TEST(PlotPanels, FixedScaleAndZoomKeepEachUnitsRangeAndTheTruthStaysInItsPanel) {
+  PlotModel plot;
+  ASSERT_TRUE(plot.add(0, row("phi", "rad")));
+  ASSERT_TRUE(plot.add(27, row("height", "m")));
+  plot.add_sample(0, {-0.1, 4.0});
+  plot.add_sample(1, {0.1, 6.0});
+  plot.add_truth(1, {0.05, 0, 0, 5.5, 0});
+  const auto rad = plot.scale(1, "rad");
+  const auto m = plot.scale(1, "m");
+  plot.toggle_scale(1);
+  plot.add_sample(2, {3.0, 60.0});  // far outside: the fixed ranges stay
+  EXPECT_EQ(plot.scale(2, "rad"), rad);
+  EXPECT_EQ(plot.scale(2, "m"), m);
+  plot.zoom(0.5, 2);
+  EXPECT_DOUBLE_EQ(plot.scale(2, "m").second - plot.scale(2, "m").first, (m.second - m.first) / 2);
+  EXPECT_DOUBLE_EQ(plot.scale(2, "m").first + plot.scale(2, "m").second, m.first + m.second) << "about its middle";
+  EXPECT_DOUBLE_EQ(plot.scale(2, "rad").second - plot.scale(2, "rad").first, (rad.second - rad.first) / 2);
+
+  const PlotLayout layout = plot_layout(plot, 2, 13);
+  const std::vector<PlotSeries> height = plot_series(plot, layout.panels[1].traces);
+  ASSERT_EQ(height.size(), 2u);
+  EXPECT_EQ(height[0].style, kTruthStyle) << "the true height under the height";
+  EXPECT_EQ(height[1].style, 1);
+  EXPECT_EQ(plot_series(plot, layout.panels[0].traces).size(), 2u) << "the true roll under phi, nothing else";
 }
 
 }  // namespace

@@ -3,7 +3,9 @@
 renamed column breaks this test, not a user's plot). Two flights give the same roll step at
 different times; each log's time 0 must land on its own step (or mode change), in what the script
 prints and in the data it hands gnuplot. Bad input fails with one line and the right status.
-usage: plot_overlay_test.py align|errors"""
+The telemetry plot's panels: height (where the QR marked it valid) and the lift set-point on the
+engines' panel, read from the gnuplot script and data the plot keeps.
+usage: plot_overlay_test.py align|errors|telemetry"""
 import math
 import pathlib
 import re
@@ -135,9 +137,54 @@ def errors(folder):
     refused([good, "--over", good, "--align", "roll"], 2, ["not an event", "step:COLUMN"], "an event that does not exist")
 
 
+def panel(script, ylabel):
+    """The gnuplot lines of the panel with this label: from its ylabel to the next panel's."""
+    start = script.find(f'set ylabel "{ylabel}"')
+    end = script.find("set ylabel", start + 1)
+    return "" if start < 0 else script[start:end if end > 0 else len(script)]
+
+
+def telemetry(folder):
+    console = header("pc/core/telemetry_csv.cpp", r"telemetry_csv_header\(\)")
+    # 1 s at 50 rows a second: the height group heard from row 5, valid from row 10, climbing 10 mm a
+    # row from 1.1 m; the lift set-point rising 300 -> 349 under engines at 400.
+    rows = [{"pc_time_ms": 20 * i, "mode": 5, "sp_lift": 300 + i, "hover_lift": 0,
+             **{f"engine_{e}": 400 for e in ("front", "right", "back", "left")},
+             "height_mm": None if i < 5 else 1000 + 10 * i, "climb_mm_s": None if i < 5 else 500,
+             "height_flags": None if i < 5 else int(i >= 10)} for i in range(50)]
+    write_log(folder / "telemetry.csv", console, rows)
+    keep = folder / "keep"
+    keep.mkdir()
+    run = plot(folder / "telemetry.csv", "--keep-data", keep, "--out", folder / "t.png")
+    expect(run.returncode == 0, f"telemetry.csv with height drawn ({run.stderr.strip()})")
+    script = (keep / "plot.gp").read_text()
+    height = panel(script, "height (m)")
+    expect('height.dat" u 1:2 w l' in height and 't "height"' in height, "a height panel with the height on it")
+    points = data(keep / "log1" / "height.dat", 1)
+    expect(len(points) == 40 and abs(points[0][0] - 0.2) < 1e-9 and abs(points[0][1] - 1.1) < 1e-9,
+           f"height from the first valid row (0.2 s, 1.1 m), in metres: {points[:1]}, {len(points)} points")
+    engines = panel(script, "engine (0..1000)")
+    expect('lift.dat" u 1:2 w l dt 2 lw 2 lc rgb "#000000" t "lift set-point"' in engines,
+           "the lift set-point on the engines' panel, dashed, black")
+    expect(data(keep / "log1" / "lift.dat", 1)[-1][1] == 349, "the lift set-point's values as logged")
+
+    # The QR's telemetry log records no height: no panel, and the title says why.
+    log = header("pc/core/log_csv.cpp", r"log_header\(const wire::TelemetryLogRecord&\)")
+    write_log(folder / "qr.csv", log, flight(0, full_at=50, step_at=100, lines=200))
+    run = plot(folder / "qr.csv", "--keep-data", keep, "--out", folder / "q.png")
+    script = (keep / "plot.gp").read_text()
+    expect(run.returncode == 0 and not panel(script, "height (m)") and "no height: this log does not record it" in script,
+           f"a QR telemetry log: no height panel, the title says so ({run.stderr.strip()})")
+    expect('t "lift set-point"' in panel(script, "engine (0..1000)"), "its lift set-point on the engines' panel")
+    # A telemetry.csv from before the height columns still draws.
+    write_log(folder / "old.csv", console[:-4], rows)
+    run = plot(folder / "old.csv", "--out", folder / "o.png")
+    expect(run.returncode == 0, f"a telemetry.csv without height columns ({run.stderr.strip()})")
+
+
 def main():
     with tempfile.TemporaryDirectory() as folder:
-        {"align": align, "errors": errors}[sys.argv[1]](pathlib.Path(folder))
+        {"align": align, "errors": errors, "telemetry": telemetry}[sys.argv[1]](pathlib.Path(folder))
 
 
 if __name__ == "__main__":
