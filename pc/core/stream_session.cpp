@@ -276,8 +276,9 @@ void StreamSession::answered(uint8_t stream, const StreamPlan& plan, wire::NackR
     state_ = "stopped";
     return;
   }
-  state_ = lowered() && plan.divider == plot_divider() ? "streaming at " + plot_rate(plan.divider) + " during the download"
-                                                       : "streaming";
+  state_ = lowered() && plan.divider == plot_divider()
+               ? "streaming at " + plot_rate(plan.divider) + " during the download"
+               : "streaming";
   open_csv();
 }
 

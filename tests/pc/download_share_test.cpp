@@ -34,9 +34,8 @@ using qrterm::StreamSession;
 
 struct PlotStream : ::testing::Test {
   std::vector<std::string> notes;
-  StreamSession session{StreamSession::Hooks{[this](qrterm::Severity, const std::string& t) { notes.push_back(t); },
-                                             {},
-                                             {}}};
+  StreamSession session{
+      StreamSession::Hooks{[this](qrterm::Severity, const std::string& t) { notes.push_back(t); }, {}, {}}};
   qrterm::LinkSession link{0, 1};
 
   PlotStream() { qrterm::send_observable_table(session); }
@@ -122,7 +121,7 @@ TEST_F(PlotStream, EachSelectionIsLoweredToItsOwnFastestRateThatFits) {
 }
 
 TEST_F(PlotStream, ASelectionThatFitsIsLeftAloneAndNothingIsSaid) {
-  session.pick("phi phi_sp");  // 200 Hz: 1200 B/s
+  session.pick("phi phi_sp");                    // 200 Hz: 1200 B/s
   for (int i = 0; i < 2; ++i) session.slower();  // 50 Hz: 300 B/s
   ASSERT_EQ(settle(), std::vector<uint16_t>{20});
   notes.clear();
@@ -149,22 +148,22 @@ constexpr uint32_t kStartMs = 5000;
 // qrterm's model on one end of the simulated QR's serial line and the host firmware on the other,
 // a control period (1 ms) a step: the QR's tick, what has arrived to the console, the console's
 // tick, and its bytes onto the line towards the QR.
-class ConsoleOnTheLine {
- public:
+struct ConsoleOnTheLine {
   ConsoleOnTheLine()
-      : qr_(qrsim::make_qr(sim::default_vehicle(), sim::WorldConfig{.seed = 1})), console(log, files(), setup(), now()) {}
+      : qr(qrsim::make_qr(sim::default_vehicle(), sim::WorldConfig{.seed = 1})), console(log, files(), setup(), now()) {
+  }
 
-  uint32_t now() const { return kStartMs + static_cast<uint32_t>(qr_->world.now_us() / 1000); }
+  uint32_t now() const { return kStartMs + static_cast<uint32_t>(qr->world.now_us() / 1000); }
 
   void run(uint32_t ms) {
     std::vector<uint8_t> down;
     for (uint32_t i = 0; i < ms; ++i) {
-      qr_->tick();
+      qr->tick();
       down.clear();
-      for (uint8_t byte = 0; qr_->board.pc_receive(byte);) down.push_back(byte);
+      for (uint8_t byte = 0; qr->board.pc_receive(byte);) down.push_back(byte);
       console.receive(down.data(), down.size(), now());
       console.tick(now());
-      for (uint8_t byte : console.output()) qr_->board.pc_send(byte);
+      for (uint8_t byte : console.output()) qr->board.pc_send(byte);
       console.output().clear();
     }
   }
@@ -189,10 +188,6 @@ class ConsoleOnTheLine {
     return (console.streams().samples_received() - before) * 1000.0 / ms;
   }
 
-  qrterm::ConsoleLog log;
-  std::map<std::string, std::string> written;  // the log folder's files
-
- private:
   static qrterm::Console::Setup setup() {
     qrterm::Console::Setup s;
     s.params.set(static_cast<uint8_t>(wire::ParamId::log_divider), 1);  // a line every control period
@@ -211,9 +206,10 @@ class ConsoleOnTheLine {
     return f;
   }
 
-  std::unique_ptr<qrsim::SimQr> qr_;
-
- public:
+  // In this order: the console reads the QR's clock and takes the log and the files as it starts.
+  std::unique_ptr<qrsim::SimQr> qr;
+  qrterm::ConsoleLog log;
+  std::map<std::string, std::string> written;  // the log folder's files
   qrterm::Console console;
 };
 
@@ -269,9 +265,10 @@ TEST(DownloadShare, ADownloadBesideAStreamKeepsFourFifthsOfItsRate) {
   const double stream_after = line.samples_per_s(500);
 
   const double quiet = lines / quiet_s, busy = lines / busy_s;
-  std::printf("{\"download_share\": {\"lines\": %u, \"quiet_lines_per_s\": %.1f, \"busy_lines_per_s\": %.1f, "
-              "\"ratio\": %.3f, \"stream_hz_before\": %.0f, \"stream_hz_during\": %.0f, \"stream_hz_after\": %.0f}}\n",
-              lines, quiet, busy, busy / quiet, stream_before, stream_during, stream_after);
+  std::printf(
+      "{\"download_share\": {\"lines\": %u, \"quiet_lines_per_s\": %.1f, \"busy_lines_per_s\": %.1f, "
+      "\"ratio\": %.3f, \"stream_hz_before\": %.0f, \"stream_hz_during\": %.0f, \"stream_hz_after\": %.0f}}\n",
+      lines, quiet, busy, busy / quiet, stream_before, stream_during, stream_after);
   EXPECT_GE(busy, 0.8 * quiet);
   EXPECT_TRUE(console.log().find_last("the plot's stream lowered to 100 Hz during the log download"));
   EXPECT_GT(stream_during, 80) << "the plot goes on, lowered";
