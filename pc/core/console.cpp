@@ -178,7 +178,10 @@ void Console::act(Action action, uint32_t now_ms) {
         note(Severity::info, "QR log: " + log_room_text(*telemetry_.log_status, log_divider(), control_hz()));
       break;
     case Action::log_stop: link_.request(wire::LogStop{}, now_ms_); break;
-    case Action::log_download: downloader_.start(telemetry_.log_status, now_ms_); break;
+    case Action::log_download:
+      downloader_.start(telemetry_.log_status, now_ms_);
+      streams_.download_running(downloader_.active());
+      break;
     case Action::params_read: parameters_.read_back(link_, now_ms_); break;
     case Action::tasks_print: print_tasks(); break;
     case Action::motor_test: open_motor_test(); break;
@@ -427,6 +430,8 @@ void Console::tick(uint32_t now_ms) {
   }
 
   downloader_.tick(now_ms);
+  // A download has the line to itself but for a lowered plot stream (docs/protocol.md section 13.6).
+  streams_.download_running(downloader_.active());
   bench_.tick(now_ms);
   exit_.tick(now_ms);
 }

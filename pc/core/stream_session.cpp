@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <iterator>
 #include <sstream>
 
 #include <common/nack_reason.hpp>
@@ -113,6 +114,42 @@ void StreamSession::close_radio() {
   stalled_ = false;
 }
 
+bool StreamSession::lowered() const {
+  const bool plot_has_it = !radio_streams() && carried_.empty() && !plot_.traces().empty();
+  return download_ && plot_has_it && catalog_.control_hz() != 0 &&
+         plot_divider() != plot_.divider(catalog_.control_hz());
+}
+
+void StreamSession::download_running(bool running) {
+  if (running == download_) return;
+  const std::string chosen = plot_rate(plot_.divider(catalog_.control_hz()));
+  if (!running && lowered()) hooks_.note(Severity::info, "log download over: the plot's stream back to " + chosen);
+  download_ = running;
+  stalled_ = false;
+  if (running && lowered()) {
+    hooks_.note(Severity::info, "the plot's stream lowered to " + plot_rate(plot_divider()) +
+                                    " during the log download (" + chosen + " would slow it; back after)");
+  }
+}
+
+uint16_t StreamSession::plot_divider() const {
+  const uint16_t hz = catalog_.control_hz();
+  const uint16_t chosen = plot_.divider(hz);
+  const uint8_t n = static_cast<uint8_t>(plot_.traces().size());
+  if (!download_ || wire::stream_bytes_per_s(hz, chosen, n) <= kDownloadStreamBytesPerS) return chosen;
+  // The plot's rates from the fastest down: the first slower than the pilot's that fits.
+  uint16_t divider = chosen;
+  for (size_t i = std::size(kPlotRatesHz); i-- > 0;) {
+    divider = static_cast<uint16_t>(std::clamp<uint32_t>(hz / kPlotRatesHz[i], 1, 65535));
+    if (divider > chosen && wire::stream_bytes_per_s(hz, divider, n) <= kDownloadStreamBytesPerS) break;
+  }
+  return divider;
+}
+
+std::string StreamSession::plot_rate(uint16_t divider) const {
+  return number(static_cast<double>(catalog_.control_hz()) / divider) + " Hz";
+}
+
 std::string StreamSession::cost_text(uint32_t telemetry_hz) const {
   const uint32_t room = wire::stream_room_bytes_per_s(telemetry_hz);
   const size_t n = plot_.traces().size();
@@ -134,7 +171,7 @@ StreamPlan StreamSession::wanted(uint8_t stream) const {
   if (stream != kPlotStream) return StreamPlan{};
   if (!carried_.empty()) return StreamPlan{carried_, 1};
   if (plot_.traces().empty()) return StreamPlan{};
-  return StreamPlan{plot_.ids(), plot_.divider(catalog_.control_hz())};
+  return StreamPlan{plot_.ids(), plot_divider()};
 }
 
 void StreamSession::note_radio_state() {
@@ -239,7 +276,9 @@ void StreamSession::answered(uint8_t stream, const StreamPlan& plan, wire::NackR
     state_ = "stopped";
     return;
   }
-  state_ = "streaming";
+  state_ = lowered() && plan.divider == plot_divider()
+               ? "streaming at " + plot_rate(plan.divider) + " during the download"
+               : "streaming";
   open_csv();
 }
 
@@ -295,7 +334,8 @@ void StreamSession::on_carried_samples(const wire::ObservableSamples& m) {
 void StreamSession::on_plot_samples(const wire::ObservableSamples& m, double now_s) {
   wire::SampleUnpacker& unpacker = unpackers_[kPlotStream];
   const std::vector<Trace>& traces = plot_.traces();
-  const double period_s = static_cast<double>(plot_.divider(catalog_.control_hz())) / catalog_.control_hz();
+  // The plan the QR runs: the pilot's rate, or the lowered one during a download.
+  const double period_s = static_cast<double>(running_[kPlotStream].divider) / catalog_.control_hz();
   std::vector<std::vector<double>> samples;
   unpacker.unpack(m, [&](const int16_t* bits) {
     std::vector<double> values;

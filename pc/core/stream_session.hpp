@@ -6,7 +6,8 @@
 // asked again only when what it should carry changes. The plot's samples go into the PlotModel
 // and to a CSV in the log folder (a new file for each selection, units in the column names), the
 // radio's into the RadioSetup. The cost of a selection is shown before it is asked for; the QR
-// has the last word (nack over_budget).
+// has the last word (nack over_budget). While a log download runs, the plot's stream is lowered so
+// that the download keeps its share of the line, and restored when it ends (section 13.6).
 #pragma once
 
 #include <stddef.h>
@@ -22,6 +23,7 @@
 
 #include <common/observable_messages.hpp>
 #include <common/sample_packing.hpp>
+#include <common/stream_budget.hpp>
 #include <pc/core/console_log.hpp>
 #include <pc/core/csv_writer.hpp>
 #include <pc/core/link_session.hpp>
@@ -37,6 +39,11 @@ inline constexpr uint8_t kStreams = wire::kStreamCount;
 static_assert(kStreams * wire::kStreamObservablesMax == kRadioChannels, "four streams of four carry the channels");
 // A table with rows missing is asked for again this often.
 inline constexpr uint32_t kTableRetryMs = 2000;
+// What the plot's stream may take of the line while a log download runs (docs/protocol.md section
+// 13.6): a tenth of it. The download's parts get the line the telemetry leaves, about 9400 B/s at
+// 50 Hz, so it keeps nearly nine tenths of its rate on a quiet line; `phi phi_sp` at 1000 Hz
+// (6000 B/s) left it a third.
+inline constexpr uint32_t kDownloadStreamBytesPerS = wire::kLineBytesPerS / 10;
 
 // A stream as the console wants the QR to run it: these observables, in sample order, every
 // `divider` control periods; divider 0 and no observables: stopped.
@@ -91,6 +98,13 @@ class StreamSession {
   void carry(const std::vector<uint8_t>& ids) { carried_ = ids; }
   const std::vector<uint8_t>& carried() const { return carried_; }
 
+  // --- a log download: while one runs, the plot's stream is asked for at the fastest of the
+  // plot's rates that costs at most kDownloadStreamBytesPerS, and at the pilot's rate again after
+  // (the radio's channels and autotune's identification are left as they are). Said in the log.
+  void download_running(bool running);
+  // The plot's stream runs slower than the pilot chose, for a download.
+  bool lowered() const;
+
   // --- the pilot
   // Adds the observables named in `names` (separated by spaces), as many as fit.
   void pick(const std::string& names);
@@ -118,6 +132,10 @@ class StreamSession {
   // The radio's channels' rows in the QR's table, once it has all sixteen.
   bool radio_streams() const { return radio_open_ && rc_ids_.has_value(); }
   StreamPlan wanted(uint8_t stream) const;
+  // The divider the plot's stream is asked for at: the pilot's, or lowered during a download.
+  uint16_t plot_divider() const;
+  // The plot's rate at `divider`, as the pilot reads it: "100 Hz".
+  std::string plot_rate(uint16_t divider) const;
   void ask(LinkSession& link, uint8_t stream, const StreamPlan& plan, uint32_t now_ms);
   void answered(uint8_t stream, const StreamPlan& plan, wire::NackReason reason, uint32_t telemetry_hz);
   void on_plot_samples(const wire::ObservableSamples& m, double now_s);
@@ -138,6 +156,7 @@ class StreamSession {
   StreamPlan running_[kStreams];                             // the last plan the QR acked
   std::optional<std::pair<uint8_t, StreamPlan>> in_flight_;  // sent, not answered yet
   bool stalled_ = false;                                     // a request went unanswered
+  bool download_ = false;                                    // a log download runs
   bool table_owed_ = true;
   uint32_t table_asked_ms_ = 0;
   bool table_asked_ = false;
