@@ -329,6 +329,18 @@ TEST(LiftOffKick, TheSticksStopItWithoutAVerdict) {
   EXPECT_EQ(v.kick.pushed_axes(), 0);
 }
 
+// A lift-off with the sticks moving is not kicked, nor is the flight later, when the vehicle
+// would still be answering them.
+TEST(LiftOffKick, ALiftOffWithTheSticksMovingIsNotKickedLater) {
+  KickedVehicle v;
+  v.answer[0][0] = -1;
+  v.kick.arm();
+  ASSERT_EQ(v.step(/*quiet=*/false, /*lifting=*/true), SignAxis::none);
+  SignAxis found = SignAxis::none;
+  EXPECT_EQ(v.run(1000, found), -1);
+  EXPECT_EQ(v.pushes_seen[0], 0);
+}
+
 // ---- the calibration: gravity where a level vehicle does not read it ----
 
 SensorSample at_rest(int16_t ax, int16_t ay, int16_t az) {

@@ -196,7 +196,9 @@ class LiftOffKick {
   // vehicle is seen leaving the ground (or off it), `angle` the estimate's roll and pitch (mrad).
   // The axis of a verdict, once; else none.
   SignAxis update(bool quiet, bool lifting, const int32_t (&angle)[2]) {
-    if (!quiet && tick_ > 0) armed_ = false;
+    // Only at the lift-off: sticks that move then (or while it runs) leave this flight unkicked;
+    // later in the air the vehicle would still be answering them.
+    if (!quiet && (tick_ > 0 || lifting)) armed_ = false;
     if (!armed_ || !quiet || (tick_ == 0 && !lifting)) return SignAxis::none;
     if (tick_ == 0) {
       from_[0] = angle[0];
