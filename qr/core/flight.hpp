@@ -190,7 +190,7 @@ class Flight {
   Chain& chain() { return chain_; }
   const wire::LinkCounters& link_counters() const { return parser_.counters(); }
   const wire::ParameterValues& parameters() const { return params_; }
-  const FlightLog& log() const { return log_; }
+  const FlightLog<Chain>& log() const { return log_; }
   const FlightTelemetry& telemetry() const { return telemetry_; }
   const SchedulerStats<kTaskCount>* task_stats() const { return task_stats_; }
   uint32_t tx_dropped_frames() const { return tx_dropped_; }
@@ -316,7 +316,7 @@ class Flight {
   uint32_t tx_dropped_ = 0;
   const SchedulerStats<kTaskCount>* task_stats_ = nullptr;  // the scheduler's, once it ran
 
-  FlightLog log_;
+  FlightLog<Chain> log_;
   bool log_status_owed_ = false;  // after a log request, its effect is reported at once
 
   ObservableStreams<Flight> streams_;

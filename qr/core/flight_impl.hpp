@@ -91,7 +91,7 @@ uint8_t Flight<Chain>::telemetry_flags() const {
 // A line in each running log (the row's rate is log_divider).
 template <SignalChain Chain>
 void Flight<Chain>::run_logger() {
-  if (log_.logging()) log_.write(sensor_log_line(*this), telemetry_log_line(*this));
+  if (log_.logging()) log_.write(sensor_log_line(*this), telemetry_log_line(*this), chain_);
 }
 
 // Observable samples that are due, and a row of the observable table when one is owed and the

@@ -1,6 +1,8 @@
-// The QR's two logs (sensor and telemetry) over the board's log memory: start, stop, writing a
-// line, and a download that sends the stored lines as log parts while the link has room. How
-// often a line is written is the logger task's row (its rate is the log_divider parameter).
+// The QR's two logs (sensor and telemetry) packed together in the board's log memory
+// (log_pack/packed_log.hpp): start, stop, writing a line, and a download that unpacks the stored
+// lines and sends them as log parts while the link has room, so the wire and the console see the
+// same flat lines as ever. How often a line is written is the logger task's row (its rate is the
+// log_divider parameter); the telemetry record comes with every kTelemetryEvery-th line.
 #pragma once
 
 #include <stddef.h>
@@ -11,46 +13,41 @@
 #include <common/nack_reason.hpp>
 #include <common/requests.hpp>
 #include <qr/core/board.hpp>
+#include <qr/core/log_filter_model.hpp>
+#include <qr/core/log_pack/packed_log.hpp>
 #include <qr/core/log_repairs.hpp>
-#include <qr/core/record_log.hpp>
 
 namespace qr {
 
+template <class Chain>
 class FlightLog {
  public:
-  // Both logs get the same number of lines, so they cover the same stretch of flight.
-  void attach(LogArea area) {
-    constexpr size_t kLineBytes = RecordLog<wire::SensorLogRecord>::kRecordBytes +
-                                  RecordLog<wire::TelemetryLogRecord>::kRecordBytes;
-    const size_t lines = area.data == nullptr ? 0 : area.size / kLineBytes;
-    const size_t sensor_bytes = lines * RecordLog<wire::SensorLogRecord>::kRecordBytes;
-    sensor_.attach(area.data, sensor_bytes);
-    telemetry_.attach(area.data == nullptr ? nullptr : area.data + sensor_bytes,
-                      lines * RecordLog<wire::TelemetryLogRecord>::kRecordBytes);
-  }
+  using Model = ChainFilterModel<Chain>;
+  // Lines unpacked at most per call of send_parts(): a seek to a part asked for again spreads over
+  // ticks (about 1,500 RV32 instructions a line).
+  static constexpr uint16_t kUnpackLinesPerCall = 8;
+  // What the keyframes' index takes of the board's log area (log_pack/packed_log.hpp).
+  static constexpr size_t kIndexBytes = log_pack::PackedLog<Model>::kIndexBytes;
+
+  void attach(LogArea area) { packed_.attach(area.data, area.size); }
 
   wire::NackReason start(uint8_t logs) {
-    if (sensor_.capacity() == 0) return wire::NackReason::not_supported;  // no log memory
+    if (packed_.bytes() == 0) return wire::NackReason::not_supported;  // no log memory
     downloading_ = false;
     repairs_.clear();
-    full_ = false;
-    if ((logs & wire::kLogSensor) != 0) {
-      sensor_.clear();
-      sensor_on_ = true;
-    }
-    if ((logs & wire::kLogTelemetry) != 0) {
-      telemetry_.clear();
-      telemetry_on_ = true;
-    }
+    stream_.forget();
+    repair_.forget();
+    packed_.clear({(logs & wire::kLogSensor) != 0, (logs & wire::kLogTelemetry) != 0});
+    logging_ = true;
     return wire::NackReason::none;
   }
   wire::NackReason stop() {
-    sensor_on_ = telemetry_on_ = false;
+    logging_ = false;
     return wire::NackReason::none;
   }
   wire::NackReason download(const wire::LogDownload& d) {
     if (logging()) return wire::NackReason::busy;
-    const uint16_t lines = d.log == wire::LogKind::sensor ? sensor_.lines() : telemetry_.lines();
+    const uint16_t lines = lines_of(d.log);
     if (d.first_line >= lines) return wire::NackReason::bad_value;
     const uint32_t end = d.count == 0 ? lines : uint32_t{d.first_line} + d.count;
     kind_ = d.log;
@@ -64,37 +61,32 @@ class FlightLog {
   // Parts asked for again: sent before the stream's next parts (log_repairs.hpp).
   wire::NackReason resend(const wire::LogResend& r) {
     if (logging()) return wire::NackReason::busy;
-    if (r.first_line >= lines(r.log)) return wire::NackReason::bad_value;
+    if (r.first_line >= lines_of(r.log)) return wire::NackReason::bad_value;
     return repairs_.add(r) ? wire::NackReason::none : wire::NackReason::busy;
   }
 
-  bool logging() const { return sensor_on_ || telemetry_on_; }
-  void write(const wire::SensorLogRecord& s, const wire::TelemetryLogRecord& t) {
-    if (sensor_on_ && !sensor_.append(s)) full_ = true;
-    if (telemetry_on_ && !telemetry_.append(t)) full_ = true;
+  bool logging() const { return logging_; }
+  void write(const wire::SensorLogRecord& s, const wire::TelemetryLogRecord& t, const Chain& chain) {
+    if (!logging_ || packed_.full()) return;
+    packed_.append({s, t, false}, [&chain](Model& m) { m.take(chain); });
   }
 
   // Sends the next parts of a download while `send` accepts them (it returns false when the
-  // link has no room), at most `max_parts` this call.
+  // link has no room), at most `max_parts` this call; a line still being unpacked waits.
   template <class Send>
   void send_parts(uint8_t max_parts, Send&& send) {
     uint8_t n = 0;
     LogRepairs::Part repair{};
-    const auto lines_of = [this](wire::LogKind log) { return lines(log); };
-    for (; n < max_parts && repairs_.next(parts_per_line, lines_of, repair); ++n) {
-      const wire::FrameBytes frame = repair.log == wire::LogKind::sensor
-                                         ? wire::encode(sensor_.part(repair.line, repair.part))
-                                         : wire::encode(telemetry_.part(repair.line, repair.part));
-      if (!send(frame)) return;
+    const auto lines_of_log = [this](wire::LogKind log) { return lines_of(log); };
+    for (; n < max_parts && repairs_.next(parts_per_line, lines_of_log, repair); ++n) {
+      if (!reach(repair_, repair.log, repair.line)) return;
+      if (!send(part(repair_, repair.log, repair.line, repair.part))) return;
       repairs_.sent();
     }
     for (; n < max_parts && downloading_; ++n) {
-      const bool sensor = kind_ == wire::LogKind::sensor;
-      const uint8_t parts = sensor ? wire::SensorLogRecord::kParts : wire::TelemetryLogRecord::kParts;
-      const wire::FrameBytes frame = sensor ? wire::encode(sensor_.part(next_line_, next_part_))
-                                            : wire::encode(telemetry_.part(next_line_, next_part_));
-      if (!send(frame)) return;
-      if (++next_part_ == parts) {
+      if (!reach(stream_, kind_, next_line_)) return;
+      if (!send(part(stream_, kind_, next_line_, next_part_))) return;
+      if (++next_part_ == parts_per_line(kind_)) {
         next_part_ = 0;
         if (++next_line_ >= end_line_) downloading_ = false;
       }
@@ -103,30 +95,61 @@ class FlightLog {
 
   wire::LogStatus status() const {
     uint8_t flags = 0;
-    if (sensor_on_) flags |= wire::kLogStatusSensorOn;
-    if (telemetry_on_) flags |= wire::kLogStatusTelemetryOn;
-    if (full_) flags |= wire::kLogStatusFull;
-    return {flags, sensor_.lines(), telemetry_.lines(), sensor_.capacity()};
+    if (logging_ && packed_.contents().sensor) flags |= wire::kLogStatusSensorOn;
+    if (logging_ && packed_.contents().telemetry) flags |= wire::kLogStatusTelemetryOn;
+    if (full()) flags |= wire::kLogStatusFull;
+    return {flags, lines_of(wire::LogKind::sensor), lines_of(wire::LogKind::telemetry), packed_.capacity_estimate()};
   }
-  bool full() const { return full_; }
+  bool full() const { return packed_.full(); }
+  // Line `line` of a log, unpacked from its keyframe (for checks: a download unpacks as it goes).
+  bool read_line(wire::LogKind log, uint16_t line, log_pack::LogLine& out) const {
+    log_pack::LogCursor<Model> cursor;
+    if (line >= lines_of(log) || !cursor.reach(packed_, index_of(log, line), log_pack::kKeyframeLines)) return false;
+    out = cursor.line();
+    return true;
+  }
   // A part of a telemetry line as a download sends it: what a line that came whole must equal.
-  wire::TelemetryLogPart telemetry_part(uint16_t line, uint8_t part) const { return telemetry_.part(line, part); }
+  wire::TelemetryLogPart telemetry_part(uint16_t line, uint8_t part) const {
+    log_pack::LogLine l;
+    if (!read_line(wire::LogKind::telemetry, line, l)) return {};
+    l.telemetry.line = line;
+    return wire::make_log_part(l.telemetry, part);
+  }
   // A stream or parts asked for again are still to send.
   bool downloading() const { return downloading_ || !repairs_.empty(); }
+  // The packing's figures: the area's bytes for lines and the bits they took.
+  size_t packed_bytes() const { return packed_.bytes(); }
+  size_t packed_bits_used() const { return packed_.bits_used(); }
 
  private:
-  uint16_t lines(wire::LogKind log) const {
-    return log == wire::LogKind::sensor ? sensor_.lines() : telemetry_.lines();
+  uint16_t lines_of(wire::LogKind log) const {
+    const log_pack::Contents c = packed_.contents();
+    if (log == wire::LogKind::sensor) return c.sensor ? packed_.lines() : 0;
+    return c.telemetry ? packed_.telemetry_lines() : 0;
+  }
+  uint32_t index_of(wire::LogKind log, uint16_t line) const {
+    return log_pack::LogCursor<Model>::index_of(packed_.contents(), log == wire::LogKind::telemetry, line);
+  }
+  bool reach(log_pack::LogCursor<Model>& cursor, wire::LogKind log, uint16_t line) {
+    return cursor.reach(packed_, index_of(log, line), kUnpackLinesPerCall);
+  }
+  static wire::FrameBytes part(const log_pack::LogCursor<Model>& cursor, wire::LogKind log, uint16_t line, uint8_t p) {
+    log_pack::LogLine l = cursor.line();
+    if (log == wire::LogKind::sensor) {
+      l.sensor.line = line;
+      return wire::encode(wire::make_log_part(l.sensor, p));
+    }
+    l.telemetry.line = line;
+    return wire::encode(wire::make_log_part(l.telemetry, p));
   }
   static uint8_t parts_per_line(wire::LogKind log) {
     return log == wire::LogKind::sensor ? wire::SensorLogRecord::kParts : wire::TelemetryLogRecord::kParts;
   }
 
-  RecordLog<wire::SensorLogRecord> sensor_;
-  RecordLog<wire::TelemetryLogRecord> telemetry_;
-  bool sensor_on_ = false;
-  bool telemetry_on_ = false;
-  bool full_ = false;
+  log_pack::PackedLog<Model> packed_;
+  log_pack::LogCursor<Model> stream_;
+  log_pack::LogCursor<Model> repair_;
+  bool logging_ = false;
 
   bool downloading_ = false;
   wire::LogKind kind_ = wire::LogKind::sensor;

@@ -25,7 +25,7 @@ using Firmware = Flight<test::ScriptedChain>;
 using Record = wire::TelemetryLogRecord;
 
 constexpr uint16_t kLines = 10000;
-constexpr size_t kLineBytes = RecordLog<wire::SensorLogRecord>::kRecordBytes + RecordLog<Record>::kRecordBytes;
+constexpr size_t kLineBytes = wire::wire_size<Record>();  // more than a packed line takes
 
 struct DownloadRun {
   uint32_t ms = 0;
@@ -38,15 +38,15 @@ struct DownloadRun {
 // serial port sends 11.52 bytes a millisecond (115200 baud, 8N1), as the simulator's line does.
 DownloadRun download(const wire_test::ChannelFaults& faults) {
   fake::FakeBoard board;
-  std::vector<uint8_t> memory(kLines * kLineBytes);
+  std::vector<uint8_t> memory(kLines * kLineBytes + FlightLog<test::ScriptedChain>::kIndexBytes);
   Firmware flight{LogArea{memory.data(), memory.size()}};
   Scheduler<fake::FakeBoard, Firmware> scheduler{board, flight};
   const auto feed = [&](const wire::FrameBytes& f) { board.rx.insert(board.rx.end(), f.bytes, f.bytes + f.size); };
 
-  // Fill the log on a clean line: a line every tick until it is full.
+  // Fill the log on a clean line: a line every tick until it has kLines.
   feed(wire::encode(wire::ParamSet{1, static_cast<uint8_t>(wire::ParamId::log_divider), 1}));
   feed(wire::encode(wire::LogStart{2, wire::kLogTelemetry}));
-  for (uint32_t i = 0; i < kLines + 200u; ++i) scheduler.tick();
+  for (uint32_t i = 0; i < 2u * kLines && flight.log().status().telemetry_lines < kLines; ++i) scheduler.tick();
   feed(wire::encode(wire::LogStop{3}));
   for (int i = 0; i < 10; ++i) scheduler.tick();
   EXPECT_EQ(flight.log().status().telemetry_lines, kLines);

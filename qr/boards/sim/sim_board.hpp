@@ -56,7 +56,7 @@ class SimBoard {
   // Behind the wall clock by more than this, serve mode gives up catching up and skips ahead.
   static constexpr uint64_t kMaxLagUs = 200000;
   static constexpr size_t kTransmitBuffer = 32;
-  static constexpr size_t kLogBytes = 128 * 1024;
+  static constexpr size_t kLogBytes = 256 * 1024;
 
   explicit SimBoard(sim::World& world);
 

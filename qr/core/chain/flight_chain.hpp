@@ -374,6 +374,33 @@ class FlightChain : public chain::DecimalReadouts<FlightChain<Num, SampleHz>> {
   // For the sensor log: filtered (not calibrated) sensors in counts. The last engine values.
   int16_t gyro_filtered(int axis) const { return Units::gyro_counts(filters_.rate(axis)); }
   int16_t accel_filtered(int axis) const { return Units::accel_counts(filters_.accel(axis)); }
+
+  // The mounting and the filters as they are now, for the log's packing to run on the logged raw
+  // samples: what it computes is what filter() computed from them, so the filtered counts it
+  // predicts are the log's, bit for bit, while the copy stays in step (qr/core/log_pack).
+  class FilterCopy {
+   public:
+    FilterCopy() = default;
+    FilterCopy(const chain::SensorFilters<Num, SampleHz>& f, const drivers::ChipToBody& m, bool as_drawn)
+        : filters_(f), mounting_(m), as_drawn_(as_drawn) {}
+    // One raw sample through; the filtered gyro then accelerometer counts.
+    void step(const SensorSample& raw, int16_t (&counts)[6]) {
+      filters_.update(as_drawn_ ? raw : chain::mounted(mounting_, raw));
+      output(counts);
+    }
+    void output(int16_t (&counts)[6]) const {
+      for (int i = 0; i < 3; ++i) {
+        counts[i] = Units::gyro_counts(filters_.rate(i));
+        counts[3 + i] = Units::accel_counts(filters_.accel(i));
+      }
+    }
+
+   private:
+    chain::SensorFilters<Num, SampleHz> filters_{1};
+    drivers::ChipToBody mounting_ = chain::kImuMountings[0];
+    bool as_drawn_ = true;
+  };
+  FilterCopy filter_copy() const { return {filters_, mounting_, mounted_as_drawn_}; }
   const EngineCommand& engines() const { return engines_; }
   int32_t cutoff_hz() const { return filters_.cutoff_hz(); }
 
