@@ -2,7 +2,8 @@
 // (log_pack/packed_log.hpp): start, stop, writing a line, and a download that unpacks the stored
 // lines and sends them as log parts while the link has room, so the wire and the console see the
 // same flat lines as ever. How often a line is written is the logger task's row (its rate is the
-// log_divider parameter); the telemetry record comes with every kTelemetryEvery-th line.
+// log_divider parameter); the telemetry record comes with the lines at most kTelemetryHz apart, so
+// a line of both logs at 1 kHz takes 7.5 bytes where each line at 100 Hz would take 12.
 #pragma once
 
 #include <stddef.h>
@@ -31,13 +32,18 @@ class FlightLog {
 
   void attach(LogArea area) { packed_.attach(area.data, area.size); }
 
-  wire::NackReason start(uint8_t logs) {
+  static constexpr uint32_t kTelemetryHz = 100;
+
+  // `lines_hz`: the rate the logger writes lines at (the control rate over log_divider).
+  wire::NackReason start(uint8_t logs, uint32_t lines_hz) {
     if (packed_.bytes() == 0) return wire::NackReason::not_supported;  // no log memory
     downloading_ = false;
     repairs_.clear();
     stream_.forget();
     repair_.forget();
-    packed_.clear({(logs & wire::kLogSensor) != 0, (logs & wire::kLogTelemetry) != 0});
+    const bool sensor = (logs & wire::kLogSensor) != 0;
+    const uint32_t every = sensor && lines_hz > kTelemetryHz ? lines_hz / kTelemetryHz : 1u;
+    packed_.clear({sensor, (logs & wire::kLogTelemetry) != 0, static_cast<uint16_t>(every)});
     logging_ = true;
     return wire::NackReason::none;
   }
@@ -93,7 +99,7 @@ class FlightLog {
     }
   }
 
-  wire::LogStatus status() const {
+  [[gnu::noinline]] wire::LogStatus status() const {
     uint8_t flags = 0;
     if (logging_ && packed_.contents().sensor) flags |= wire::kLogStatusSensorOn;
     if (logging_ && packed_.contents().telemetry) flags |= wire::kLogStatusTelemetryOn;
@@ -133,7 +139,7 @@ class FlightLog {
   bool reach(log_pack::LogCursor<Model>& cursor, wire::LogKind log, uint16_t line) {
     return cursor.reach(packed_, index_of(log, line), kUnpackLinesPerCall);
   }
-  static wire::FrameBytes part(const log_pack::LogCursor<Model>& cursor, wire::LogKind log, uint16_t line, uint8_t p) {
+  [[gnu::cold, gnu::noinline]] static wire::FrameBytes part(const log_pack::LogCursor<Model>& cursor, wire::LogKind log, uint16_t line, uint8_t p) {
     log_pack::LogLine l = cursor.line();
     if (log == wire::LogKind::sensor) {
       l.sensor.line = line;

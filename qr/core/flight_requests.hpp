@@ -81,7 +81,7 @@ struct FlightRequests {
     answer = kObservableStreams ? f.streams_.request(r, kControlHz, kControlHz / f.telemetry_divider())
                                 : NackReason::not_supported;
   }
-  void operator()(const wire::LogStart& l) { log(f.log_.start(l.logs)); }
+  void operator()(const wire::LogStart& l) { log(f.log_.start(l.logs, kControlHz / f.log_divider())); }
   void operator()(const wire::LogStop&) { log(f.log_.stop()); }
   void operator()(const wire::LogDownload& d) { log(f.log_.download(d)); }
   // No log_status after it: a bad line brings many, and the logs' sizes have not changed.

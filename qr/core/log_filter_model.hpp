@@ -30,7 +30,8 @@ class ChainFilterModel {
     if constexpr (CopiesItsFilters<Chain>) copy_ = chain.filter_copy();
     taken_ = true;
   }
-  void predict(const wire::SensorLogRecord& raw, int16_t (&counts)[6]) {
+  // Out of line: one copy of the filters' step for the packing and the unpacking.
+  [[gnu::noinline]] void predict(const wire::SensorLogRecord& raw, int16_t (&counts)[6]) {
     if (taken_) {
       copy_.output(counts);
       taken_ = false;

@@ -36,12 +36,15 @@ using wire::Mode;
 
 constexpr double kHoverHeight = 1.5;  // m
 constexpr double kPeriodS = 1.0 / qr::kControlHz;
+// A log area that fills in the flight and downloads in seconds: the keyframes' index and about
+// 1,300 packed lines (the board's own 256 KiB hold 30 s at 1 kHz, minutes to download).
+constexpr size_t kLogBytes = 24 * 1024;
 
 // One simulated QR and the console's end of its line, flown a control period at a time.
 class Sortie {
  public:
   Sortie(FrameJudge& judge, uint64_t seed, const sim::VehicleParams& vehicle = sim::default_vehicle())
-      : qr_(qrsim::make_qr(vehicle, sim::WorldConfig{.seed = seed})), pilot_(qr_->board) {
+      : qr_(qrsim::make_qr(vehicle, sim::WorldConfig{.seed = seed}, kLogBytes)), pilot_(qr_->board) {
     // Bidirectional DShot ESCs, so the QR has engine speeds to report (telemetry_rpm).
     qr_->board.use_dshot(static_cast<uint8_t>(qr_->firmware.parameters().get(wire::ParamId::motor_poles) / 2));
     judge.new_flight();

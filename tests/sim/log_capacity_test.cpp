@@ -85,7 +85,7 @@ TEST(LogCapacity, ThirtySecondsOfOneKilohertzLinesFitTheDevboardsArea) {
   EXPECT_LT(flight.truth_max_tilt_deg, 20) << "the flight went wrong: its figure would mean nothing";
 
   // Every sensor line comes out as the logger was given it; the telemetry lines come with every
-  // tenth, at its time.
+  // tenth (100 Hz), at its time.
   const qr::FlightLog<qr::FixedChain>& log = qr->firmware.log();
   size_t different = 0;
   for (uint16_t i = 0; i < flight.lines; ++i) {

@@ -16,7 +16,7 @@
 //   engines     plain 0..1000 commands to the plant, or (qrsim --esc dshot) DShot frames to four
 //               simulated ESCs (sim_esc.hpp) that drive the plant and answer with their eRPM, and
 //               take special commands (the lost-model beacon) while stopped;
-//   log_area    128 KiB of RAM, the size of the IN4073 board's log flash;
+//   log_area    256 KiB of RAM, the devboard's (a test may give less: a log that fills sooner);
 //   i2c         (use_sensor_drivers: qrsim --sensors drivers, its default) the MPU-6050 and the MS5611 as register-level chips
 //               (sim/mpu6050_model.hpp, ms5611_model.hpp) on one I2C bus at 400 kHz
 //               (sim_i2c_bus.hpp), read by the firmware's own drivers (qr/core/sensor_stage.hpp);
@@ -58,7 +58,7 @@ class SimBoard {
   static constexpr size_t kTransmitBuffer = 32;
   static constexpr size_t kLogBytes = 256 * 1024;
 
-  explicit SimBoard(sim::World& world);
+  explicit SimBoard(sim::World& world, size_t log_bytes = kLogBytes);
 
   // ---- qr::Board ----
   uint32_t wait_kick(uint32_t seen);
@@ -150,7 +150,7 @@ class SimBoard {
   qr::SensorSample sample_{};
   qr::EngineCommand engines_{};
   uint8_t leds_ = 0;
-  std::vector<uint8_t> log_ = std::vector<uint8_t>(kLogBytes);
+  std::vector<uint8_t> log_;
   std::deque<uint8_t> radio_;
   bool dshot_ = false;
   uint8_t pole_pairs_ = 7;

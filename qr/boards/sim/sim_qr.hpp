@@ -15,8 +15,8 @@ namespace qrsim {
 using Firmware = qr::Flight<qr::FixedChain>;
 
 struct SimQr {
-  SimQr(const sim::VehicleParams& vehicle, const sim::WorldConfig& config)
-      : world(vehicle, config), board(world), firmware(board.log_area()), scheduler(board, firmware) {}
+  SimQr(const sim::VehicleParams& vehicle, const sim::WorldConfig& config, size_t log_bytes = SimBoard::kLogBytes)
+      : world(vehicle, config), board(world, log_bytes), firmware(board.log_area()), scheduler(board, firmware) {}
 
   // One control period: the physics runs to the kick, then the firmware's tick.
   bool tick() { return scheduler.tick(); }
@@ -28,8 +28,9 @@ struct SimQr {
 };
 
 // The whole QR is a few hundred kB of buffers: keep it off the stack.
-inline std::unique_ptr<SimQr> make_qr(const sim::VehicleParams& vehicle, const sim::WorldConfig& config) {
-  return std::make_unique<SimQr>(vehicle, config);
+inline std::unique_ptr<SimQr> make_qr(const sim::VehicleParams& vehicle, const sim::WorldConfig& config,
+                                      size_t log_bytes = SimBoard::kLogBytes) {
+  return std::make_unique<SimQr>(vehicle, config, log_bytes);
 }
 
 }  // namespace qrsim

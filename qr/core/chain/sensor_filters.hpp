@@ -38,8 +38,9 @@ class SensorFilters {
   }
 
   // One sample. The first one settles the filters on itself, so start-up has no transient from
-  // zero (the accelerometer reads -1 g on z at rest).
-  void update(const SensorSample& s) {
+  // zero (the accelerometer reads -1 g on z at rest). Out of line: the log's packing steps a copy
+  // of the filters too (FlightChain::FilterCopy), and the QR keeps one body for both.
+  [[gnu::noinline]] void update(const SensorSample& s) {
     if (!started_) {
       for (int i = 0; i < 3; ++i) {
         gyro_[i].settle(Units::rate_of(s.gyro[i], per_count_[i]));

@@ -53,7 +53,8 @@ class BitReader {
     uint8_t got = 0;
     while (got < count) {
       const uint8_t offset = static_cast<uint8_t>(bit_ & 7u);
-      const uint8_t take = static_cast<uint8_t>(count - got < 8u - offset ? count - got : 8u - offset);
+      const uint8_t left = static_cast<uint8_t>(count - got);
+      const uint8_t take = static_cast<uint8_t>(left < 8u - offset ? left : 8u - offset);
       const uint32_t bits = (static_cast<uint32_t>(area_[bit_ >> 3]) >> offset) & ((1u << take) - 1u);
       value |= bits << got;
       got = static_cast<uint8_t>(got + take);

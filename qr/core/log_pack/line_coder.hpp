@@ -1,6 +1,6 @@
-// One log line packed and unpacked by the same code (code() with an Encode or a Decode), so the two
-// cannot disagree. A line is the sensor record and, on every kTelemetryEvery-th line, the telemetry
-// record (docs/protocol.md section 8: the telemetry log at a tenth of the sensor log's rate). Each
+// One log line packed and unpacked by the same code (code() with a LineIo either way), so the two
+// cannot disagree. A line is the sensor record and, on every Contents::telemetry_every-th line, the
+// telemetry record (docs/protocol.md section 8: the telemetry log at most at 100 Hz). Each
 // value is coded as its residual from a prediction, in an adaptive Rice code (rice_code.hpp):
 //   time          the last time plus the last period (0 while the logger keeps its rate)
 //   raw axes      the axis' linear predictor (linear_predictor.hpp)
@@ -23,7 +23,6 @@
 
 namespace qr::log_pack {
 
-inline constexpr uint16_t kTelemetryEvery = 10;
 inline constexpr uint16_t kKeyframeLines = 4 * LinearPredictor::kBlockLines;
 
 struct LogLine {
@@ -32,43 +31,51 @@ struct LogLine {
   bool has_telemetry = false;
 };
 
-// Which records a log keeps (LogStart::logs).
+// Which records a log keeps (LogStart::logs), and how often the telemetry record comes.
 struct Contents {
   bool sensor = true;
   bool telemetry = true;
-  // Line `index` carries a telemetry record: every line when it is the only record kept.
-  bool telemetry_on(uint32_t index) const { return telemetry && (!sensor || index % kTelemetryEvery == 0); }
+  uint16_t telemetry_every = 1;  // lines; 1 when the telemetry record is the only one kept
+  // Line `index` carries a telemetry record.
+  bool telemetry_on(uint32_t index) const { return telemetry && index % telemetry_every == 0; }
 };
 
-class Encode {
+// The bits of a line going in (packing) or out (unpacking): one class, so each coding function is
+// one body on the QR for both directions (its flash is short); a line codes some 20 values.
+class LineIo {
  public:
-  static constexpr bool kEncodes = true;
-  Encode(uint8_t* area, size_t bytes, size_t bit) : out_(area, bytes, bit) {}
-  void value(uint32_t& v, uint32_t prediction, RiceCode& code) {
-    ok_ = code.put(out_, static_cast<int32_t>(v - prediction)) && ok_;
+  static LineIo packing(uint8_t* area, size_t bytes, size_t bit) { return LineIo(area, bytes, bit, true); }
+  // Unpacking never writes: the area is only read.
+  static LineIo unpacking(const uint8_t* area, size_t bytes, size_t bit) {
+    return LineIo(const_cast<uint8_t*>(area), bytes, bit, false);
   }
-  void flag(bool& f) { ok_ = out_.put(f ? 1u : 0u, 1) && ok_; }
-  bool ok() const { return ok_; }
-  size_t bit() const { return out_.bit(); }
+
+  bool packs() const { return packs_; }
+  // `v` written as its residual from `prediction`, or read.
+  [[gnu::noinline]] void value(uint32_t& v, uint32_t prediction, RiceCode& code) {
+    if (packs_) {
+      ok_ = code.put(out_, static_cast<int32_t>(v - prediction)) && ok_;
+    } else {
+      v = prediction + static_cast<uint32_t>(code.get(in_));
+    }
+  }
+  void flag(bool& f) {
+    if (packs_) {
+      ok_ = out_.put(f ? 1u : 0u, 1) && ok_;
+    } else {
+      f = in_.get(1) == 1u;
+    }
+  }
+  bool ok() const { return packs_ ? ok_ : in_.ok(); }
+  size_t bit() const { return packs_ ? out_.bit() : in_.bit(); }
 
  private:
+  LineIo(uint8_t* area, size_t bytes, size_t bit, bool packs)
+      : out_(area, bytes, bit), in_(area, bytes, bit), packs_(packs) {}
   BitWriter out_;
-  bool ok_ = true;
-};
-
-class Decode {
- public:
-  static constexpr bool kEncodes = false;
-  Decode(const uint8_t* area, size_t bytes, size_t bit) : in_(area, bytes, bit) {}
-  void value(uint32_t& v, uint32_t prediction, RiceCode& code) {
-    v = prediction + static_cast<uint32_t>(code.get(in_));
-  }
-  void flag(bool& f) { f = in_.get(1) == 1u; }
-  bool ok() const { return in_.ok(); }
-  size_t bit() const { return in_.bit(); }
-
- private:
   BitReader in_;
+  bool packs_;
+  bool ok_ = true;
 };
 
 // A record's scalar fields as int32 and back, in the order of its fields() (arrays element by
@@ -77,12 +84,12 @@ namespace detail {
 struct CountFields {
   size_t n = 0;
   template <class T>
-  constexpr void operator()(T& v) {
-    if constexpr (__is_array(T)) {
-      for (auto& e : v) (*this)(e);
-    } else {
-      ++n;
-    }
+  constexpr void operator()(T&) {
+    ++n;
+  }
+  template <class T, size_t N>
+  constexpr void operator()(T (&array)[N]) {
+    for (T& e : array) (*this)(e);
   }
 };
 struct Flatten {
@@ -90,11 +97,11 @@ struct Flatten {
   size_t n = 0;
   template <class T>
   constexpr void operator()(T& v) {
-    if constexpr (__is_array(T)) {
-      for (auto& e : v) (*this)(e);
-    } else {
-      out[n++] = static_cast<int32_t>(v);
-    }
+    out[n++] = static_cast<int32_t>(v);
+  }
+  template <class T, size_t N>
+  constexpr void operator()(T (&array)[N]) {
+    for (T& e : array) (*this)(e);
   }
 };
 struct Unflatten {
@@ -102,11 +109,11 @@ struct Unflatten {
   size_t n = 0;
   template <class T>
   constexpr void operator()(T& v) {
-    if constexpr (__is_array(T)) {
-      for (auto& e : v) (*this)(e);
-    } else {
-      v = static_cast<T>(in[n++]);
-    }
+    v = static_cast<T>(in[n++]);
+  }
+  template <class T, size_t N>
+  constexpr void operator()(T (&array)[N]) {
+    for (T& e : array) (*this)(e);
   }
 };
 template <class Record>
@@ -135,7 +142,8 @@ class LineCoder {
   static constexpr size_t kTelemetryFields = detail::field_count<wire::TelemetryLogRecord>();
 
   // Where a decoder may start: the predictors' coefficients kept, everything else started afresh.
-  void start(const Keyframe<Model>& k) {
+  // Cold: once in 2048 lines.
+  [[gnu::cold, gnu::noinline]] void start(const Keyframe<Model>& k) {
     for (int i = 0; i < 6; ++i) {
       raw_[i].load(k.coefficients[i]);
       raw_[i].restart();
@@ -149,8 +157,18 @@ class LineCoder {
     for (RiceCode& c : filtered_code_) c = RiceCode{};
     for (RiceCode& c : telemetry_code_) c = RiceCode{};
   }
-  Keyframe<Model> keyframe() const {
-    Keyframe<Model> k;
+  // The coder as new (a log started): no coefficients, no lines before.
+  [[gnu::cold, gnu::noinline]] void reset() {
+    const int16_t none[LinearPredictor::kOrder] = {};
+    for (LinearPredictor& p : raw_) p.load(none);
+    model_ = Model{};
+    sensor_ = wire::SensorLogRecord{};
+    telemetry_ = wire::TelemetryLogRecord{};
+    period_us_ = 0;
+  }
+  // What a decoder needs to start here, written in place (a keyframe is too large for a stack
+  // frame on the QR).
+  [[gnu::cold, gnu::noinline]] void keep(Keyframe<Model>& k) const {
     for (int i = 0; i < 6; ++i) {
       for (int j = 0; j < LinearPredictor::kOrder; ++j) k.coefficients[i][j] = raw_[i].coefficients()[j];
     }
@@ -158,21 +176,18 @@ class LineCoder {
     k.sensor = sensor_;
     k.telemetry = telemetry_;
     k.period_us = period_us_;
-    return k;
   }
   Model& model() { return model_; }
 
-  // Line `index` of a log keeping `contents`: written from `line` (Encode) or read into it (Decode).
-  template <class Io>
-  void code(Io& io, LogLine& line, Contents contents, uint32_t index) {
+  // Line `index` of a log keeping `contents`: written from `line` or read into it.
+  void code(LineIo& io, LogLine& line, Contents contents, uint32_t index) {
     if (contents.sensor) code_sensor(io, line.sensor);
     line.has_telemetry = contents.telemetry_on(index);
     if (line.has_telemetry) code_telemetry(io, line.telemetry, contents.sensor ? &line.sensor : nullptr);
   }
 
  private:
-  template <class Io>
-  void code_sensor(Io& io, wire::SensorLogRecord& s) {
+  [[gnu::noinline]] void code_sensor(LineIo& io, wire::SensorLogRecord& s) {
     uint32_t time = s.time_us;
     io.value(time, sensor_.time_us + period_us_, time_code_);
     s.time_us = time;
@@ -191,13 +206,12 @@ class LineCoder {
     sensor_ = s;
   }
 
-  template <class Io>
-  void code_filtered(Io& io, wire::SensorLogRecord& s) {
+  [[gnu::noinline]] void code_filtered(LineIo& io, wire::SensorLogRecord& s) {
     int16_t predicted[6];
     model_.predict(s, predicted);
     const auto filtered = [&s](int i) -> int16_t& { return i < 3 ? s.gyro_filtered[i] : s.accel_filtered[i - 3]; };
     bool as_predicted = true;
-    if constexpr (Io::kEncodes) {
+    if (io.packs()) {
       for (int i = 0; i < 6; ++i) as_predicted = as_predicted && filtered(i) == predicted[i];
     }
     io.flag(as_predicted);
@@ -209,8 +223,7 @@ class LineCoder {
   }
 
   // `sensor`: the line's sensor record, whose time and battery the telemetry record repeats.
-  template <class Io>
-  void code_telemetry(Io& io, wire::TelemetryLogRecord& t, const wire::SensorLogRecord* sensor) {
+  [[gnu::noinline]] void code_telemetry(LineIo& io, wire::TelemetryLogRecord& t, const wire::SensorLogRecord* sensor) {
     int32_t now[kTelemetryFields], before[kTelemetryFields];
     detail::Flatten flat_now{now}, flat_before{before};
     wire::TelemetryLogRecord::fields(t, flat_now);

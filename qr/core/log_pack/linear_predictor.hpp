@@ -22,7 +22,7 @@ class LinearPredictor {
 
   // The prediction of the next sample: the fitted sum once kOrder samples are known, the last
   // sample before that (after a restart).
-  int32_t predict() const {
+  [[gnu::noinline]] int32_t predict() const {
     if (known_ < kOrder) return known_ == 0 ? 0 : history_[0];
     uint32_t sum = 1u << (kCoefficientBits - 1);
     for (int j = 0; j < kOrder; ++j) sum += static_cast<uint32_t>(coefficient_[j]) * static_cast<uint32_t>(history_[j]);
@@ -30,9 +30,12 @@ class LinearPredictor {
   }
 
   // The sample that came; at a block's end the coefficients are fitted again.
-  void push(int16_t x) {
+  [[gnu::noinline]] void push(int16_t x) {
+    // A history not yet known is zeros (restart()): it adds nothing to the sums.
     autocorrelation_[0] += int32_t{x} * x;
-    for (int l = 1; l <= kOrder && l <= known_; ++l) autocorrelation_[l] += int32_t{x} * history_[l - 1];
+    // Not unrolled: 16 64-bit sums unrolled took 1.1 kB of the QR's flash for a few cycles.
+#pragma GCC unroll 1
+    for (int l = 1; l <= kOrder; ++l) autocorrelation_[l] += int32_t{x} * history_[l - 1];
     for (int j = kOrder - 1; j > 0; --j) history_[j] = history_[j - 1];
     history_[0] = x;
     if (known_ < kOrder) ++known_;
@@ -43,6 +46,7 @@ class LinearPredictor {
   // coefficients, all a keyframe keeps of the predictor, stay.
   void restart() {
     known_ = 0;
+    for (int16_t& h : history_) h = 0;
     in_block_ = 0;
     for (int64_t& a : autocorrelation_) a = 0;
   }
@@ -53,7 +57,43 @@ class LinearPredictor {
   }
 
  private:
-  void fit();
+  // Once a block: cold, so the QR keeps it small rather than fast (a few thousand instructions
+  // in 512 lines).
+  // Levinson-Durbin in Q20 on the autocorrelation scaled to within 2^24 (the products stay within
+  // 2^62). A reflection coefficient at 1 or beyond, or a non-positive error, ends the fit at the
+  // order reached; an empty block keeps the coefficients.
+  [[gnu::cold, gnu::noinline]] void fit() {
+    constexpr int kQ = 20;
+    constexpr int64_t kOne = int64_t{1} << kQ;
+    int64_t r[kOrder + 1];
+    int64_t r0 = autocorrelation_[0] + (autocorrelation_[0] >> 10);  // a floor: noise the fit cannot model
+    int shift = 0;
+    while ((r0 >> shift) >= (int64_t{1} << 24)) ++shift;
+    for (int l = 0; l <= kOrder; ++l) r[l] = (l == 0 ? r0 : autocorrelation_[l]) >> shift;
+    for (int64_t& a : autocorrelation_) a = 0;
+    in_block_ = 0;
+    if (r[0] <= 0) return;
+
+    int64_t a[kOrder + 1] = {};
+    int64_t error = r[0];
+    for (int i = 1; i <= kOrder; ++i) {
+      int64_t acc = r[i] * kOne;
+      for (int j = 1; j < i; ++j) acc -= a[j] * r[i - j];
+      const int64_t k = acc / error;
+      if (k >= kOne || k <= -kOne) break;
+      int64_t next[kOrder + 1];
+      for (int j = 1; j < i; ++j) next[j] = a[j] - (k * a[i - j]) / kOne;
+      next[i] = k;
+      for (int j = 1; j <= i; ++j) a[j] = next[j];
+      error -= ((error * k) / kOne) * k / kOne;
+      if (error <= 0) break;
+    }
+    constexpr int kDrop = kQ - kCoefficientBits;
+    for (int j = 0; j < kOrder; ++j) {
+      const int64_t c = (a[j + 1] + (int64_t{1} << (kDrop - 1))) >> kDrop;
+      coefficient_[j] = static_cast<int16_t>(c > INT16_MAX ? INT16_MAX : c < INT16_MIN ? INT16_MIN : c);
+    }
+  }
 
   int16_t coefficient_[kOrder] = {};
   int16_t history_[kOrder] = {};
@@ -61,41 +101,5 @@ class LinearPredictor {
   uint8_t known_ = 0;
   uint16_t in_block_ = 0;
 };
-
-// Levinson-Durbin in Q20 on the autocorrelation scaled to within 2^24 (the products stay within
-// 2^62). A reflection coefficient at 1 or beyond, or a non-positive error, ends the fit at the
-// order reached; an empty block keeps the coefficients.
-inline void LinearPredictor::fit() {
-  constexpr int kQ = 20;
-  constexpr int64_t kOne = int64_t{1} << kQ;
-  int64_t r[kOrder + 1];
-  int64_t r0 = autocorrelation_[0] + (autocorrelation_[0] >> 10);  // a floor: noise the fit cannot model
-  int shift = 0;
-  while ((r0 >> shift) >= (int64_t{1} << 24)) ++shift;
-  for (int l = 0; l <= kOrder; ++l) r[l] = (l == 0 ? r0 : autocorrelation_[l]) >> shift;
-  for (int64_t& a : autocorrelation_) a = 0;
-  in_block_ = 0;
-  if (r[0] <= 0) return;
-
-  int64_t a[kOrder + 1] = {};
-  int64_t error = r[0];
-  for (int i = 1; i <= kOrder; ++i) {
-    int64_t acc = r[i] * kOne;
-    for (int j = 1; j < i; ++j) acc -= a[j] * r[i - j];
-    const int64_t k = acc / error;
-    if (k >= kOne || k <= -kOne) break;
-    int64_t next[kOrder + 1];
-    for (int j = 1; j < i; ++j) next[j] = a[j] - (k * a[i - j]) / kOne;
-    next[i] = k;
-    for (int j = 1; j <= i; ++j) a[j] = next[j];
-    error -= ((error * k) / kOne) * k / kOne;
-    if (error <= 0) break;
-  }
-  constexpr int kDrop = kQ - kCoefficientBits;
-  for (int j = 0; j < kOrder; ++j) {
-    const int64_t c = (a[j + 1] + (int64_t{1} << (kDrop - 1))) >> kDrop;
-    coefficient_[j] = static_cast<int16_t>(c > INT16_MAX ? INT16_MAX : c < INT16_MIN ? INT16_MIN : c);
-  }
-}
 
 }  // namespace qr::log_pack

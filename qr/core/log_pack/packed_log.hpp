@@ -20,38 +20,43 @@ inline constexpr size_t kMaxKeyframes = (kMaxLines + kKeyframeLines - 1) / kKeyf
 template <class Model>
 class PackedLog {
  public:
+  static constexpr uint32_t kNominalSensorBits = 64, kNominalTelemetryBits = 96;
   static constexpr size_t kIndexBytes = sizeof(Keyframe<Model>[kMaxKeyframes]) + sizeof(size_t[kMaxKeyframes]);
+
+  // Cold, out of line: the index's initialisation is a loop once at power-up, not code spread
+  // through the Flight's constructor.
+  [[gnu::cold, gnu::noinline]] PackedLog() {}
 
   void attach(uint8_t* area, size_t bytes) {
     area_ = area;
     bytes_ = area == nullptr || bytes <= kIndexBytes ? 0 : bytes - kIndexBytes;
     clear(contents_);
   }
-  void clear(Contents contents) {
+  [[gnu::cold, gnu::noinline]] void clear(Contents contents) {
     contents_ = contents;
     lines_ = telemetry_lines_ = 0;
     end_bit_ = 0;
     full_ = false;
-    coder_ = LineCoder<Model>{};
+    coder_.reset();
   }
 
   // Appends a line; `take(model)` brings the model in step with the chain at a keyframe. False,
   // and nothing kept, when the line does not fit: the log is full from then on (the coder's state
   // moved with the line it could not keep).
   template <class Take>
-  bool append(LogLine line, Take&& take) {
+  [[gnu::noinline]] bool append(LogLine line, Take&& take) {
     if (full_ || bytes_ == 0 || lines_ >= kMaxLines) {
       full_ = true;
       return false;
     }
     if (lines_ % kKeyframeLines == 0) {
       take(coder_.model());
-      Keyframe<Model> k = coder_.keyframe();
+      Keyframe<Model>& k = keyframes_[lines_ / kKeyframeLines];
+      coder_.keep(k);
       coder_.start(k);
-      keyframes_[lines_ / kKeyframeLines] = k;
       keyframe_bits_[lines_ / kKeyframeLines] = end_bit_;
     }
-    Encode out(area_, bytes_, end_bit_);
+    LineIo out = LineIo::packing(area_, bytes_, end_bit_);
     coder_.code(out, line, contents_, lines_);
     if (!out.ok()) {
       full_ = true;
@@ -68,13 +73,17 @@ class PackedLog {
   Contents contents() const { return contents_; }
   size_t bytes() const { return bytes_; }
   size_t bits_used() const { return end_bit_; }
-  // The lines the area would hold at the bits a line took so far (a nominal 64 before the first).
   bool full() const { return full_; }
-  uint16_t capacity_estimate() const {
+  // The lines the area would hold at the bits a line took so far; before the first, at what a
+  // hover's lines took (LogCapacity: 60 bits of sensor record at 1 kHz; telemetry at 100 Hz 90).
+  [[gnu::cold, gnu::noinline]] uint16_t capacity_estimate() const {
     if (bytes_ == 0) return 0;
     if (full_) return lines();
     const uint64_t bits = uint64_t{bytes_} * 8u;
-    const uint64_t estimate = lines_ == 0 ? bits / 64u : lines_ + (bits - end_bit_) * lines_ / end_bit_;
+    const uint64_t nominal = (contents_.sensor ? kNominalSensorBits : 0u) +
+                             (contents_.telemetry ? kNominalTelemetryBits / contents_.telemetry_every : 0u);
+    if (lines_ == 0) return static_cast<uint16_t>(nominal == 0 || bits / nominal > kMaxLines ? kMaxLines : bits / nominal);
+    const uint64_t estimate = lines_ + (bits - end_bit_) * lines_ / end_bit_;
     return static_cast<uint16_t>(estimate > kMaxLines ? kMaxLines : estimate);
   }
 
@@ -101,13 +110,16 @@ class PackedLog {
 template <class Model>
 class LogCursor {
  public:
+  [[gnu::cold, gnu::noinline]] LogCursor() {}
+
   static uint32_t index_of(Contents c, bool telemetry, uint16_t line) {
-    return telemetry && c.sensor ? uint32_t{line} * kTelemetryEvery : line;
+    return telemetry ? uint32_t{line} * c.telemetry_every : line;
   }
 
   // Moves towards line `index`, unpacking at most `budget` lines: true when line() is that line.
-  // A cursor past the line, or before the line's keyframe, starts again at that keyframe.
-  bool reach(const PackedLog<Model>& log, uint32_t index, uint16_t budget) {
+  // A cursor past the line, or before the line's keyframe, starts again at that keyframe. Cold: it
+  // runs in downloads, on the ground, and is kept small on the QR.
+  [[gnu::cold]] bool reach(const PackedLog<Model>& log, uint32_t index, uint16_t budget) {
     if (index >= log.lines()) return false;
     const uint32_t keyframe = index / kKeyframeLines * kKeyframeLines;
     if (!started_ || next_ > index + 1 || next_ < keyframe) {
@@ -119,7 +131,7 @@ class LogCursor {
         coder_.start(log.keyframe(next_));
         bit_ = log.keyframe_bit(next_);
       }
-      Decode in(log.area(), log.bytes(), bit_);
+      LineIo in = LineIo::unpacking(log.area(), log.bytes(), bit_);
       coder_.code(in, line_, log.contents(), next_);
       bit_ = in.bit();
       ++next_;

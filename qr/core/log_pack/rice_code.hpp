@@ -13,9 +13,10 @@ namespace qr::log_pack {
 
 inline constexpr uint32_t kEscape = 24;
 
+// Out of line: a line codes some 15 values, and the QR keeps one copy of each (flash is short).
 class RiceCode {
  public:
-  bool put(BitWriter& out, int32_t residual) {
+  [[gnu::noinline]] bool put(BitWriter& out, int32_t residual) {
     const uint32_t z = fold(residual);
     const uint8_t k = parameter();
     const uint32_t quotient = z >> k;
@@ -31,7 +32,7 @@ class RiceCode {
     return ok;
   }
 
-  int32_t get(BitReader& in) {
+  [[gnu::cold, gnu::noinline]] int32_t get(BitReader& in) {
     const uint8_t k = parameter();
     uint32_t quotient = 0;
     while (quotient < kEscape && in.get(1) == 1u) ++quotient;
