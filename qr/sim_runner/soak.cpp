@@ -20,6 +20,9 @@ namespace {
 
 constexpr double kHoverHeight = 1.5;
 constexpr uint16_t kLogDivider = 1000;    // a log line a second at 1 kHz: the log's longest reach
+// The log is stopped after this much flight: 1,800 lines to download over the damaged line (the
+// packed log would hold the hour, 3,600 lines, and double the download's simulated 950 s).
+constexpr double kLogFlightS = 1800;
 constexpr double kDownloadLimitS = 3600;  // over a line that loses 5 % of bytes a log takes long (section 9)
 constexpr double kPreflightLimitS = 30;
 // The simulated pack hovers about 12 minutes; the soak is of the software, not of the pack, so
@@ -237,6 +240,7 @@ class Soak {
   Outages outages_;
   Phase phase_ = Phase::preflight;
   double phase_start_ = 0, flight_start_ = -1, download_start_ = 0, flown_s_ = 0;
+  bool log_stopped_ = false;  // after kLogFlightS of flight
   uint32_t relaunches_ = 0;
   uint16_t log_lines_ = 0, log_capacity_ = 0;  // as the firmware's log status said when it stopped
   std::string failure_;
@@ -316,6 +320,10 @@ void Soak::fly_hour(double t, wire::Mode mode) {
   }
   pilot_.set_sticks(hover(t, t - phase_start_));
   const double flown = t - flight_start_;
+  if (flown >= kLogFlightS && !log_stopped_) {
+    pilot_.request(wire::LogStop{});
+    log_stopped_ = true;
+  }
   if (flown >= options_.seconds) {
     flown_s_ = flown;
     pilot_.request(wire::LogStop{});
