@@ -104,10 +104,15 @@ class BenchBoard {
   uint32_t now_us_ = 0;
 };
 
-template <class Chain, bool Radio = false>
+// The devboard's log area, for the mode that logs (one rig at a time uses it).
+uint8_t g_bench_log[256 * 1024];
+
+// `Logging`: the firmware has the devboard's log area and logs both logs at every tick
+// (log_divider 1) from arming on: what the packing costs a tick (qr/core/log_pack/).
+template <class Chain, bool Radio = false, bool Logging = false>
 struct Rig {
   BenchBoard<Radio> board;
-  qr::Flight<Chain> flight;
+  qr::Flight<Chain> flight{Logging ? qr::LogArea{g_bench_log, sizeof g_bench_log} : qr::LogArea{}};
   qr::Scheduler<BenchBoard<Radio>, qr::Flight<Chain>> scheduler{board, flight};
   uint8_t seq = 0;
   uint32_t tick = 0;
@@ -183,7 +188,15 @@ struct Rig {
       return request(Mode::full_control) && (fly(300), request(Mode::panic)) && flight.safety().landing();
     }
     if (mode == Mode::panic) return request(Mode::manual) && (fly(200), request(Mode::panic));
-    return request(mode);
+    if (!request(mode)) return false;
+    if constexpr (Logging) {
+      board.send(wire::ParamSet{++seq, static_cast<uint8_t>(wire::ParamId::log_divider), 1});
+      step();
+      board.send(wire::LogStart{++seq, wire::kLogSensor | wire::kLogTelemetry});
+      fly(10);
+      return flight.log().logging();
+    }
+    return true;
   }
   void fly(uint32_t ticks) {
     for (uint32_t i = 0; i < ticks; ++i) {
@@ -224,8 +237,8 @@ struct ModeFigures {
 
 // Runs one mode and prints its line (per task: runs, mean, max, budget, overruns; and the
 // scheduler's own cost per tick); the figures are zero if the mode could not be armed.
-template <class Chain, bool Radio>
-ModeFigures bench_mode(Rig<Chain, Radio>& rig, Mode mode, const char* suffix, bool landing) {
+template <class Chain, bool Radio, bool Logging>
+ModeFigures bench_mode(Rig<Chain, Radio, Logging>& rig, Mode mode, const char* suffix, bool landing) {
   rv32virt::puts("{\"mode\":\"");
   rv32virt::puts(wire::mode_key(mode));
   rv32virt::puts(suffix);
@@ -271,9 +284,9 @@ ModeFigures bench_mode(Rig<Chain, Radio>& rig, Mode mode, const char* suffix, bo
   return figures;
 }
 
-template <Mode M, class Chain, bool Landing = false, bool Radio = false>
+template <Mode M, class Chain, bool Landing = false, bool Radio = false, bool Logging = false>
 ModeFigures measure(const char* suffix) {
-  static Rig<Chain, Radio> rig;  // one fresh firmware per mode, outside the 8 KiB stack
+  static Rig<Chain, Radio, Logging> rig;  // one fresh firmware per mode, outside the 8 KiB stack
   return bench_mode(rig, M, suffix, Landing);
 }
 
@@ -390,6 +403,7 @@ int main() {
   const ModeFigures full = measure<Mode::full_control, qr::FixedChain>("");
   const ModeFigures full_float = measure<Mode::full_control, FloatChain>("-float");
   const ModeFigures full_radio = measure<Mode::full_control, qr::FixedChain, false, true>("-radio-dshot");
+  const ModeFigures full_logging = measure<Mode::full_control, qr::FixedChain, false, false, true>("-log-1khz");
   const DriverFigures drivers_cost = bench_drivers();
   const SchedulerFloor floor = bench_scheduler_floor();
   rv32virt::puts(
@@ -431,7 +445,7 @@ int main() {
   rv32virt::puts(",\"float_over_fixed\":");
   rv32virt::put_ratio(full_float.tick_mean, full.tick_mean == 0 ? 1 : full.tick_mean);
   rv32virt::puts("}\n");
-  return full.tick_mean == 0 || full_float.tick_mean == 0 || full_radio.tick_mean == 0 ||
+  return full.tick_mean == 0 || full_float.tick_mean == 0 || full_radio.tick_mean == 0 || full_logging.tick_mean == 0 ||
                  drivers_cost.dshot4_mean == 0 || sensors.imu_samples != kMeasuredTicks || sensors.faults != 0
              ? 1
              : 0;

@@ -388,7 +388,7 @@ class FlightChain : public chain::DecimalReadouts<FlightChain<Num, SampleHz>> {
       filters_.update(as_drawn_ ? raw : chain::mounted(mounting_, raw));
       output(counts);
     }
-    void output(int16_t (&counts)[6]) const {
+    [[gnu::noinline]] void output(int16_t (&counts)[6]) const {
       for (int i = 0; i < 3; ++i) {
         counts[i] = Units::gyro_counts(filters_.rate(i));
         counts[3 + i] = Units::accel_counts(filters_.accel(i));

@@ -141,6 +141,11 @@ class LineCoder {
  public:
   static constexpr size_t kTelemetryFields = detail::field_count<wire::TelemetryLogRecord>();
 
+  // Each raw axis its lane: their fits take turns (linear_predictor.hpp). Cold: a loop at start-up.
+  [[gnu::cold, gnu::noinline]] LineCoder() {
+    for (uint8_t i = 0; i < 6; ++i) raw_[i].set_lane(i);
+  }
+
   // Where a decoder may start: the predictors' coefficients kept, everything else started afresh.
   // Cold: once in 2048 lines.
   [[gnu::cold, gnu::noinline]] void start(const Keyframe<Model>& k) {

@@ -52,12 +52,8 @@ class RiceCode {
   }
   // k: the bits of the mean of z (the mean kept times 16); a mean of m gives k with 2^k <= m + 1.
   uint8_t parameter() const {
-    uint32_t m = (mean16_ >> 4) + 1u;
-    uint8_t k = 0;
-    while (m > 1u) {
-      m >>= 1;
-      ++k;
-    }
+    const uint32_t m = (mean16_ >> 4) + 1u;
+    const auto k = static_cast<uint8_t>(31 - __builtin_clz(m));
     return k > 24u ? 24u : k;
   }
   // A mean over about 16 values; z is capped so that an escaped one cannot overflow it.
