@@ -139,7 +139,8 @@ class FlightLog {
   bool reach(log_pack::LogCursor<Model>& cursor, wire::LogKind log, uint16_t line) {
     return cursor.reach(packed_, index_of(log, line), kUnpackLinesPerCall);
   }
-  [[gnu::cold, gnu::noinline]] static wire::FrameBytes part(const log_pack::LogCursor<Model>& cursor, wire::LogKind log, uint16_t line, uint8_t p) {
+  [[gnu::cold, gnu::noinline]] static wire::FrameBytes part(const log_pack::LogCursor<Model>& cursor, wire::LogKind log,
+                                                            uint16_t line, uint8_t p) {
     log_pack::LogLine l = cursor.line();
     if (log == wire::LogKind::sensor) {
       l.sensor.line = line;

@@ -14,7 +14,9 @@
 namespace qr {
 
 template <class Chain>
-concept CopiesItsFilters = requires(const Chain& c) { c.filter_copy(); };
+concept CopiesItsFilters = requires(const Chain& c) {
+  c.filter_copy();
+};
 
 struct NoFilterCopy {
   void step(const SensorSample&, int16_t (&counts)[6]) { output(counts); }

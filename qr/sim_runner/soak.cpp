@@ -19,7 +19,7 @@ namespace qrsim {
 namespace {
 
 constexpr double kHoverHeight = 1.5;
-constexpr uint16_t kLogDivider = 1000;    // a log line a second at 1 kHz: the log's longest reach
+constexpr uint16_t kLogDivider = 1000;  // a log line a second at 1 kHz: the log's longest reach
 // The log is stopped after this much flight: 1,800 lines to download over the damaged line (the
 // packed log would hold the hour, 3,600 lines, and double the download's simulated 950 s).
 constexpr double kLogFlightS = 1800;

@@ -10,7 +10,8 @@ import argparse
 import json
 import sys
 
-MODES = ["safe", "panic", "panic-landing", "manual", "calibration", "yaw", "full", "full-float", "full-radio-dshot"]
+MODES = ["safe", "panic", "panic-landing", "manual", "calibration", "yaw", "full", "full-float", "full-radio-dshot",
+         "full-log-1khz"]
 
 
 def main():

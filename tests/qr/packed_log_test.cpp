@@ -77,7 +77,8 @@ size_t pack(Log& log, const Lines& lines) {
   size_t kept = 0;
   for (size_t i = 0; i < lines.lines.size(); ++i) {
     const size_t at = i;
-    if (!log.append(lines.lines[i], [&](AverageModel& m) { m = at == 0 ? AverageModel{} : lines.models[at - 1]; })) break;
+    if (!log.append(lines.lines[i], [&](AverageModel& m) { m = at == 0 ? AverageModel{} : lines.models[at - 1]; }))
+      break;
     ++kept;
   }
   return kept;

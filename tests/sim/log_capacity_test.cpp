@@ -61,13 +61,15 @@ LoggedFlight fly_until_the_log_is_full(qrsim::SimQr& qr) {
       const double since = t - armed_at;
       const int second = static_cast<int>(since);
       const int16_t step = since > 4 && second % 2 == 0 ? 60 : 0;
-      pilot.set_sticks({lift_for(plant, 1.5), second % 4 == 0 ? step : int16_t{0}, second % 4 == 2 ? step : int16_t{0}, 0});
+      pilot.set_sticks(
+          {lift_for(plant, 1.5), second % 4 == 0 ? step : int16_t{0}, second % 4 == 2 ? step : int16_t{0}, 0});
     }
     pilot.step();
     if (!qr.tick()) break;
     const qr::FlightLog<qr::FixedChain>& log = qr.firmware.log();
     const wire::LogStatus status = log.status();
-    if (log.logging() && status.sensor_lines > out.written.size()) out.written.push_back(qr::sensor_log_line(qr.firmware));
+    if (log.logging() && status.sensor_lines > out.written.size())
+      out.written.push_back(qr::sensor_log_line(qr.firmware));
     out.lines = status.sensor_lines;
     out.telemetry_lines = status.telemetry_lines;
     out.full = log.full();
@@ -105,11 +107,12 @@ TEST(LogCapacity, ThirtySecondsOfOneKilohertzLinesFitTheDevboardsArea) {
 
   const size_t area = qr->board.log_area().size;
   const double seconds = flight.lines / 1000.0;
-  std::printf("{\"log\": {\"bytes\": %zu, \"seconds_at_1khz\": %.1f, \"lines\": %u, \"telemetry_lines\": %u, "
-              "\"bytes_per_line\": %.2f, \"index_bytes\": %zu, \"flight\": \"hover at 1.5 m with 3 deg steps, "
-              "default vehicle, seed 1\"}}\n",
-              area, seconds, flight.lines, flight.telemetry_lines, static_cast<double>(log.packed_bits_used()) / 8.0 / flight.lines,
-              area - log.packed_bytes());
+  std::printf(
+      "{\"log\": {\"bytes\": %zu, \"seconds_at_1khz\": %.1f, \"lines\": %u, \"telemetry_lines\": %u, "
+      "\"bytes_per_line\": %.2f, \"index_bytes\": %zu, \"flight\": \"hover at 1.5 m with 3 deg steps, "
+      "default vehicle, seed 1\"}}\n",
+      area, seconds, flight.lines, flight.telemetry_lines,
+      static_cast<double>(log.packed_bits_used()) / 8.0 / flight.lines, area - log.packed_bytes());
   EXPECT_GE(seconds, 30.0);
 }
 

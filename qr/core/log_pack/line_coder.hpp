@@ -249,7 +249,7 @@ class LineCoder {
     telemetry_ = t;
   }
 
-  static constexpr size_t kTimeField = 0;  // time_us leads the telemetry record
+  static constexpr size_t kTimeField = 0;                        // time_us leads the telemetry record
   static constexpr size_t kBatteryField = kTelemetryFields - 3;  // before cpu_load, deadline_misses
 
   LinearPredictor raw_[6];

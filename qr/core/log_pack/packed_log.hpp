@@ -82,7 +82,8 @@ class PackedLog {
     const uint64_t bits = uint64_t{bytes_} * 8u;
     const uint64_t nominal = (contents_.sensor ? kNominalSensorBits : 0u) +
                              (contents_.telemetry ? kNominalTelemetryBits / contents_.telemetry_every : 0u);
-    if (lines_ == 0) return static_cast<uint16_t>(nominal == 0 || bits / nominal > kMaxLines ? kMaxLines : bits / nominal);
+    if (lines_ == 0)
+      return static_cast<uint16_t>(nominal == 0 || bits / nominal > kMaxLines ? kMaxLines : bits / nominal);
     const uint64_t estimate = lines_ + (bits - end_bit_) * lines_ / end_bit_;
     return static_cast<uint16_t>(estimate > kMaxLines ? kMaxLines : estimate);
   }

@@ -23,8 +23,7 @@ class RiceCode {
     bool ok;
     if (quotient < kEscape) {
       // the quotient's ones and their zero in one write (at most 25 bits), then k plain bits
-      ok = out.put((1u << quotient) - 1u, static_cast<uint8_t>(quotient + 1u)) &&
-           out.put(z & ((1u << k) - 1u), k);
+      ok = out.put((1u << quotient) - 1u, static_cast<uint8_t>(quotient + 1u)) && out.put(z & ((1u << k) - 1u), k);
     } else {
       ok = out.put((1u << kEscape) - 1u, static_cast<uint8_t>(kEscape)) && out.put(z, 32);
     }
