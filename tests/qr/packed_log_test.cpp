@@ -182,6 +182,30 @@ TEST(PackedLog, AFarLineIsReachedABudgetAtATime) {
   EXPECT_EQ(calls, 1) << "from the keyframe at 2048: 3 lines";
 }
 
+TEST(PackedLog, ACursorSentAnywhereInAnyOrderReadsTheLinesWritten) {
+  // As the parts asked for again move the repair cursor: random lines, each reached a random
+  // budget at a time, a seek sometimes abandoned for another line before it arrives.
+  std::vector<uint8_t> area(300 * 1024);
+  Log log;
+  log.attach(area.data(), area.size());
+  log.clear({true, true, 10});
+  const Lines lines = make_lines(7000, 11, true);
+  ASSERT_EQ(pack(log, lines), lines.lines.size());
+  std::mt19937 random(3);
+  LogCursor<AverageModel> cursor;
+  size_t wrong = 0;
+  for (int n = 0; n < 3000; ++n) {
+    const uint32_t index = random() % log.lines();
+    const auto budget = static_cast<uint16_t>(1 + random() % 40);
+    if (random() % 5 == 0) cursor.reach(log, random() % log.lines(), budget);  // abandoned midway
+    while (!cursor.reach(log, index, budget)) {
+    }
+    wrong += !same_sensor(cursor.line().sensor, lines.lines[index].sensor);
+    if (index % 10 == 0) wrong += !same_telemetry(cursor.line().telemetry, lines.lines[index].telemetry);
+  }
+  EXPECT_EQ(wrong, 0u);
+}
+
 TEST(LinearPredictor, LearnsAVibrationWithinABlock) {
   // Two tones of a vibration, as the rotors put them on the accelerometer: after one block the
   // prediction error is a twentieth of what the difference of two samples is. (Not zero: the fit
