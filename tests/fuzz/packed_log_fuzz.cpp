@@ -42,7 +42,7 @@ bool same(const LogLine& a, const LogLine& b, bool telemetry) {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  if (size < 2) return 0;
+  if (size < 3) return 0;  // two bytes of contents, then at least one of area
   const Contents contents{(data[0] & 1) != 0 || (data[0] & 2) == 0, (data[0] & 2) != 0,
                           static_cast<uint16_t>(1 + data[1] % 12)};
   static std::vector<uint8_t> area(Log::kIndexBytes + 64 * 1024);
