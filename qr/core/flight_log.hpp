@@ -2,8 +2,8 @@
 // (log_pack/packed_log.hpp): start, stop, writing a line, and a download that unpacks the stored
 // lines and sends them as log parts while the link has room, so the wire and the console see the
 // same flat lines as ever. How often a line is written is the logger task's row (its rate is the
-// log_divider parameter); the telemetry record comes with the lines at most kTelemetryHz apart, so
-// a line of both logs at 1 kHz takes 7.5 bytes where each line at 100 Hz would take 12.
+// log_divider parameter); the telemetry record comes with the lines at most kTelemetryHz times a
+// second (it is most of a packed line's bits, and 100 Hz is what a plot of a flight needs).
 #pragma once
 
 #include <stddef.h>
