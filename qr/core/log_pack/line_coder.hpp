@@ -125,7 +125,7 @@ constexpr size_t field_count() {
 }
 }  // namespace detail
 
-// Model: trivially copyable, with predict(const wire::SensorLogRecord& raw, int16_t (&out)[6])
+// Model: copyable, with predict(const wire::SensorLogRecord& raw, int16_t (&out)[6])
 // giving the filtered gyro then accelerometer counts the chain had for those raw samples.
 template <class Model>
 struct Keyframe {

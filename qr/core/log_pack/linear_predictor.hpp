@@ -1,11 +1,13 @@
 // A backward-adaptive linear predictor of one sensor axis for the log's packing: the next sample
 // from the last kOrder, with coefficients fitted (Levinson-Durbin on the autocorrelation) to the
-// block of kBlockLines samples before. Fitted on what was already coded, the coefficients need not
-// be stored: the decoder fits the same ones from the same samples, in the same integers.
+// block of kBlockLines samples before (its first 416 to 496: the rest are the fit's, push()).
+// Fitted on what was already coded, the coefficients need not be stored: the decoder fits the same
+// ones from the same samples, in the same integers.
 //
 // Why this and not a difference: the motors' vibration (harmonics of each rotor's speed) dominates
 // the accelerometer and the gyro in flight. A hover's six raw axes took 68 bits a line as first or
-// second differences and 47 with order 16 fitted on the block before (512 samples; order 8: 53).
+// second differences and 47 with order 16 fitted on the block before (a measurement in floating
+// point on 512-sample blocks; order 8: 53).
 // Integers only, wrapping where a damaged area could make them overflow: the encoder and the
 // decoder compute the same wrapped values, so a bad prediction costs bits, never a wrong sample.
 #pragma once
