@@ -75,7 +75,7 @@ TEST(SimBoard, TheLogAreaIsTheBoardsRam) {
   const qr::LogArea area = board.log_area();
   ASSERT_NE(area.data, nullptr);
   EXPECT_EQ(area.size, 256u * 1024u);  // the devboard's
-  area.data[area.size - 1] = 0xA5;  // all of it writable (ASan checks)
+  area.data[area.size - 1] = 0xA5;     // all of it writable (ASan checks)
 }
 
 }  // namespace

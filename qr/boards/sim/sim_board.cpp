@@ -17,7 +17,9 @@ qr::SensorSample to_sensor_sample(const sim::SensorReading& reading) {
   return s;
 }
 
-SimBoard::SimBoard(sim::World& world, size_t log_bytes) : world_(world), log_(log_bytes) { sample_ = to_sensor_sample(world_.sample()); }
+SimBoard::SimBoard(sim::World& world, size_t log_bytes) : world_(world), log_(log_bytes) {
+  sample_ = to_sensor_sample(world_.sample());
+}
 
 // Simulated time, in real time too: a tick takes none of it, so the firmware never misses a
 // deadline here (its cost on the target is the devboard's to measure). The host's lateness is

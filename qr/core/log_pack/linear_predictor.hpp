@@ -41,10 +41,10 @@ class LinearPredictor {
   [[gnu::noinline]] void push(int16_t x) {
     if (in_block_ < fit_from_) {
       // A history not yet known is zeros (restart()): it adds nothing to the sums.
-      autocorrelation_[0] += int32_t{x} * x;
+      autocorrelation_[0] += static_cast<int32_t>(x) * x;
       // Not unrolled: 16 64-bit sums unrolled took 1.1 kB of the QR's flash for a few cycles.
 #pragma GCC unroll 1
-      for (int l = 1; l <= kOrder; ++l) autocorrelation_[l] += int32_t{x} * history_[l - 1];
+      for (int l = 1; l <= kOrder; ++l) autocorrelation_[l] += static_cast<int32_t>(x) * history_[l - 1];
     }
     for (int j = kOrder - 1; j > 0; --j) history_[j] = history_[j - 1];
     history_[0] = x;
