@@ -269,6 +269,12 @@ void Soak::fly() {
     const double t = static_cast<double>(now_us) * 1e-6;
     const wire::Mode mode = qr_->firmware.mode();
     modes_.judge(t, now_us, mode, line_);
+    if (modes_.unexplained > 0) {
+      // The soak has failed: flying on, its pilot may never get back to full control, and the
+      // run then ends only at CTest's timeout, without its figures.
+      failure_ = "a mode change nobody asked for (above): the soak ends there";
+      break;
+    }
     outages_.step(t, pilot_);
     fly_pilot(t, now_us, mode);
     if (phase_ == Phase::done) break;
