@@ -172,11 +172,7 @@ void Console::act(Action action, uint32_t now_ms) {
   }
   switch (action) {
     case Action::height_hold: return requests_.toggle_height_hold(now_ms_);
-    case Action::log_start:
-      link_.request(wire::LogStart{0, wire::kLogSensor | wire::kLogTelemetry}, now_ms_);
-      if (telemetry_.log_status)
-        note(Severity::info, "QR log: " + log_room_text(*telemetry_.log_status, log_divider(), control_hz()));
-      break;
+    case Action::log_start: return start_logs();
     case Action::log_stop: link_.request(wire::LogStop{}, now_ms_); break;
     case Action::log_download:
       downloader_.start(telemetry_.log_status, now_ms_);
@@ -193,6 +189,23 @@ void Console::act(Action action, uint32_t now_ms) {
     }
     default: break;
   }
+}
+
+// A start empties the QR's log: one that holds lines is started only by a second s within
+// kLogRestartConfirmMs (a log now lasts minutes, and one s too many lost it).
+void Console::start_logs() {
+  const std::string drops = telemetry_.log_status
+                                ? log_restart_warning(*telemetry_.log_status, log_divider(), control_hz())
+                                : "";
+  const bool confirmed = log_restart_asked_ms_ && now_ms_ - *log_restart_asked_ms_ <= kLogRestartConfirmMs;
+  if (!drops.empty() && !confirmed) {
+    log_restart_asked_ms_ = now_ms_;
+    return note(Severity::warning, drops);
+  }
+  log_restart_asked_ms_.reset();
+  link_.request(wire::LogStart{0, wire::kLogSensor | wire::kLogTelemetry}, now_ms_);
+  if (telemetry_.log_status)
+    note(Severity::info, "QR log: " + log_room_text(*telemetry_.log_status, log_divider(), control_hz()));
 }
 
 // The bench is for a QR in safe, on a live link: there is nothing to test otherwise, and a key

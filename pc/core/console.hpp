@@ -180,6 +180,7 @@ class Console {
   void on_log_status(const wire::LogStatus& status);
   void on_link_state(LinkState state);
   void open_motor_test();
+  void start_logs();
 
   ConsoleLog& log_;
   Recordings recordings_;
@@ -194,6 +195,7 @@ class Console {
   PilotControls controls_;
   ParameterSync parameters_;
   LogDownloader downloader_;
+  std::optional<uint32_t> log_restart_asked_ms_;  // when s warned that a start drops the QR's lines
   PilotInput input_;
   SimulatorControls simulator_;
   ExitHandshake exit_;

@@ -46,4 +46,15 @@ std::string log_filling_warning(const wire::LogStatus& before, const wire::LogSt
   return text;
 }
 
+std::string log_restart_warning(const wire::LogStatus& status, uint32_t divider, uint32_t control_hz) {
+  if (lines_kept(status) == 0) return "";
+  char text[200];
+  std::snprintf(text, sizeof text,
+                "the QR's log holds %u lines (%.0f s): s again within %u s starts a new log without them "
+                "(t stops, g downloads)",
+                static_cast<unsigned>(lines_kept(status)), log_seconds(status.sensor_lines, divider, control_hz),
+                static_cast<unsigned>(kLogRestartConfirmMs / 1000));
+  return text;
+}
+
 }  // namespace qrterm

@@ -9,6 +9,7 @@
 #include <common/link_timing.hpp>
 #include <common/task_names.hpp>
 #include <pc/core/key.hpp>
+#include <pc/core/log_room.hpp>
 #include <pc/core/task_figures.hpp>
 #include <pc/core/telemetry_csv.hpp>
 
@@ -637,6 +638,30 @@ TEST(Console, LogStartAndStopAreAcknowledged) {
   b.run(50);
   EXPECT_FALSE(b.qr.logging);
   EXPECT_TRUE(b.logged("QR logs stopped"));
+}
+
+TEST(Console, AStartThatWouldDropTheQrsLinesAsksForASecondPress) {
+  Bench b;
+  b.connect();
+  b.qr.sensor_log[0] = wire::SensorLogRecord{};
+  b.qr.telemetry_log[0] = wire::TelemetryLogRecord{};
+  b.run(200);  // a log_status with a line in each log
+  const auto starts = [&b] {
+    return std::count_if(b.qr.requests.begin(), b.qr.requests.end(),
+                         [](const wire::Frame& f) { return f.type == wire::MessageType::log_start; });
+  };
+  b.key('s');
+  b.run(50);
+  EXPECT_EQ(starts(), 0) << "one s does not empty a log that holds lines";
+  EXPECT_TRUE(b.logged("the QR's log holds 1 lines"));
+  b.run(qrterm::kLogRestartConfirmMs + 100);
+  b.key('s');
+  b.run(50);
+  EXPECT_EQ(starts(), 0) << "a second s after the time asks again";
+  b.key('s');
+  b.run(50);
+  EXPECT_EQ(starts(), 1) << "s twice within the time starts";
+  EXPECT_TRUE(b.qr.logging);
 }
 
 wire::SensorLogRecord sensor_line(uint16_t line) {
