@@ -17,14 +17,6 @@
 
 namespace {
 
-// The pilot's thumb on the lift stick, holding a height on the truth.
-uint16_t lift_for(const sim::Quadrotor& plant, double target) {
-  const sim::PlantState& s = plant.state();
-  const double accel = std::clamp(2.0 * (target - -s.position.z) + 2.5 * -(-s.velocity.z), -3.0, 3.0);
-  const double ratio = std::max(0.0, (sim::kGravity + accel) / sim::kGravity);
-  return static_cast<uint16_t>(std::clamp(std::lround(plant.hover_command() * std::sqrt(ratio)), 0L, 1000L));
-}
-
 struct LoggedFlight {
   std::vector<wire::SensorLogRecord> written;  // what the logger was given, line by line
   uint16_t lines = 0, telemetry_lines = 0;
@@ -61,8 +53,8 @@ LoggedFlight fly_until_the_log_is_full(qrsim::SimQr& qr) {
       const double since = t - armed_at;
       const int second = static_cast<int>(since);
       const int16_t step = since > 4 && second % 2 == 0 ? 60 : 0;
-      pilot.set_sticks(
-          {lift_for(plant, 1.5), second % 4 == 0 ? step : int16_t{0}, second % 4 == 2 ? step : int16_t{0}, 0});
+      pilot.set_sticks({qrsim::lift_for_height(plant, 1.5, 1.0), second % 4 == 0 ? step : int16_t{0},
+                        second % 4 == 2 ? step : int16_t{0}, 0});
     }
     pilot.step();
     if (!qr.tick()) break;
